@@ -1,0 +1,34 @@
+#include "app/data_paths.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace eco {
+
+std::filesystem::path dataDirectory() {
+  if (const char* fromEnvironment = std::getenv("ECOFOREST_DATA_DIR"); fromEnvironment && *fromEnvironment)
+    return fromEnvironment;
+  return ECOFOREST_DATA_DIR;
+}
+
+std::filesystem::path resolveSpecies(const std::string& nameOrPath) {
+  std::filesystem::path given(nameOrPath);
+  if (nameOrPath.find('/') != std::string::npos || given.extension() == ".toml") return given;
+  std::filesystem::path folder = dataDirectory() / "species";
+  std::filesystem::path file = folder / (nameOrPath + ".toml");
+  if (std::filesystem::exists(file)) return file;
+  std::vector<std::string> known;
+  std::error_code ignored;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ignored))
+    if (entry.path().extension() == ".toml") known.push_back(entry.path().stem().string());
+  std::sort(known.begin(), known.end());
+  std::string list;
+  for (const std::string& name : known) list += (list.empty() ? "" : ", ") + name;
+  throw InputError({nameOrPath, 0, ""}, "unknown species (looked in " + folder.string() +
+                                            "; available: " + (list.empty() ? "none" : list) + ")");
+}
+
+}  // namespace eco

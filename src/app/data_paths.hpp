@@ -1,0 +1,16 @@
+// Finding ecoforest's data files (species, scenarios) from a bare name.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace eco {
+
+// The scenarios folder: $ECOFOREST_DATA_DIR if set, else the source tree's scenarios/.
+std::filesystem::path dataDirectory();
+
+// "beech" -> <data>/species/beech.toml; a path (with a '/' or ending in .toml) is used as
+// given. Unknown names are an InputError listing the species that exist.
+std::filesystem::path resolveSpecies(const std::string& nameOrPath);
+
+}  // namespace eco

@@ -1,0 +1,35 @@
+// The ecoforest command line. Errors are caught here, in one place: bad input exits with 2
+// and "ecoforest: error: FILE:LINE: message", internal failures with 1.
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/tree_command.hpp"
+#include "core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ecoforest grows forests: procedural EcoMod trees, ecosystems, renders and exports"};
+  app.set_version_flag("--version", std::string("ecoforest ") + ECOFOREST_VERSION);
+  app.require_subcommand(1);
+  eco::addTreeCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForVersion& version) {
+    return app.exit(version);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "ecoforest: error: " << error.what() << "\n";
+    if (error.get_exit_code() != 0) std::cerr << "Run with --help for usage.\n";
+    return 2;
+  } catch (const eco::InputError& error) {
+    std::cerr << "ecoforest: error: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "ecoforest: internal error: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,109 @@
+#include "model/species.hpp"
+
+#include "core/toml_reader.hpp"
+
+namespace eco {
+namespace {
+
+LeafDistribution parseDistribution(TomlTable& table, std::string_view key) {
+  std::string name = table.string(key);
+  for (LeafDistribution d : {LeafDistribution::Spiral, LeafDistribution::Stacked,
+                             LeafDistribution::Staggered, LeafDistribution::Bunched,
+                             LeafDistribution::Coniferous})
+    if (name == toString(d)) return d;
+  table.fail(key, "unknown leaf distribution '" + name +
+                      "' (expected spiral, stacked, staggered, bunched or coniferous)");
+}
+
+glm::vec3 parseColor(TomlTable& table, std::string_view key, glm::vec3 fallback) {
+  auto c = table.numbers(key, 3, std::vector<double>{fallback.r, fallback.g, fallback.b}, {0.0, 1.0});
+  return glm::vec3(c[0], c[1], c[2]);
+}
+
+// The ranges are the paper's (section II.A for scalars, II.B for the auxiliary graphs).
+LocalGraphs parseGraphs(TomlTable& local) {
+  LocalGraphs g;
+  g.ksG = local.polyline("ks_g", {0.5, 1.0});
+  g.ksW = local.polyline("ks_w", {0.0, 2.0});
+  g.alphaG = local.polyline("alpha_g_deg", {0.0, 180.0});
+  g.alphaW = local.polyline("alpha_w", {0.0, 2.0});
+  g.alphaMG = local.polyline("alpha_m_g_deg", {-180.0, 180.0});
+  g.alphaMW = local.polyline("alpha_m_w", {0.0, 2.0});
+  g.maxLenG = local.polyline("max_length_g", {0.0, 10.0});
+  g.maxLenW = local.polyline("max_length_w", {0.0, 2.0});
+  g.klG = local.polyline("kl_g", {0.0, 10.0});
+  g.klW = local.polyline("kl_w", {0.0, 2.0});
+  g.minLenG = local.polyline("min_length_g", {0.0, 10.0});
+  g.minLenW = local.polyline("min_length_w", {0.0, 2.0});
+  local.finish();
+  return g;
+}
+
+}  // namespace
+
+const char* toString(LeafDistribution distribution) {
+  switch (distribution) {
+    case LeafDistribution::Spiral: return "spiral";
+    case LeafDistribution::Stacked: return "stacked";
+    case LeafDistribution::Staggered: return "staggered";
+    case LeafDistribution::Bunched: return "bunched";
+    case LeafDistribution::Coniferous: return "coniferous";
+  }
+  return "?";
+}
+
+Species loadSpecies(const std::filesystem::path& file) {
+  TomlDocument document = TomlDocument::load(file);
+  TomlTable root = document.root();
+  Species species;
+  species.file = file;
+  species.name = root.string("name");
+  species.latinName = root.string("latin_name", "");
+
+  std::optional<TomlTable> strand = root.table("strand");
+  if (!strand) root.fail("strand", "missing required table [strand]");
+  StrandParams& p = species.strand;
+  // The paper's slider stops at 5000, yet its own pine has S = 6000: the slider bound is
+  // not a validity limit. 100000 keeps a typo from exhausting memory.
+  p.strands = static_cast<int>(strand->integer("strands", {}, {1, 100000}));
+  p.trunkLength_m = strand->number("trunk_length_m", {}, {0.0, 10.0});
+  p.kd = strand->number("kd", {}, {0.0, 0.05});
+  p.phyllotaxis_deg = strand->number("phyllotaxis_deg", {}, {0.0, 360.0});
+  p.kc = strand->number("kc", {}, {0.0, 1.0});
+  p.leafSize_m = strand->number("leaf_size_m", {}, {0.0, 0.3});
+  p.leafDensity = strand->number("leaf_density", {}, {0.0, 30.0});
+  p.leafDistribution = parseDistribution(*strand, "leaf_distribution");
+  p.windDirected = strand->number("wind_directed_wg", 0.0, {0.0, 10.0});
+  p.windUndirected = strand->number("wind_undirected_ws", 0.0, {0.0, 10.0});
+  auto w = strand->numbers("wind_direction", 3, std::vector<double>{0.0, 1.0, 0.0});
+  p.windDirection = glm::dvec3(w[0], w[1], w[2]);
+  p.flexibility = strand->number("flexibility_kf", 1.0, {0.0, 1.0});
+  p.lod = static_cast<int>(strand->integer("lod", 0, {0, 2}));
+  std::optional<TomlTable> local = strand->table("local");
+  if (!local) strand->fail("local", "missing required table [strand.local]");
+  p.graphs = parseGraphs(*local);
+  strand->finish();
+
+  if (std::optional<TomlTable> variation = root.table("variation")) {
+    Variation& v = species.variation;
+    v.branchAngle = variation->number("branch_angle", v.branchAngle, {0.0, 0.5});
+    v.phyllotaxis_deg = variation->number("phyllotaxis_deg", v.phyllotaxis_deg, {0.0, 90.0});
+    v.length = variation->number("length", v.length, {0.0, 0.5});
+    variation->finish();
+  }
+  if (std::optional<TomlTable> look = root.table("appearance")) {
+    Appearance& a = species.appearance;
+    a.barkColor = parseColor(*look, "bark_color", a.barkColor);
+    a.leafColor = parseColor(*look, "leaf_color", a.leafColor);
+    std::string shape = look->string("leaf_shape", "broadleaf");
+    if (shape == "broadleaf") a.leafShape = LeafShape::Broadleaf;
+    else if (shape == "needle_tuft") a.leafShape = LeafShape::NeedleTuft;
+    else look->fail("leaf_shape", "unknown leaf shape '" + shape + "' (expected broadleaf or needle_tuft)");
+    a.barkRoughness = look->number("bark_roughness", a.barkRoughness, {0.0, 1.0});
+    look->finish();
+  }
+  root.finish();
+  return species;
+}
+
+}  // namespace eco

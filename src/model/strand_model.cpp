@@ -1,0 +1,208 @@
+#include "model/strand_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "model/leaves.hpp"
+#include "model/local_params.hpp"
+#include "model/rotation.hpp"
+
+namespace eco {
+namespace {
+
+// One call of Algorithm 1's branchsegment(), before frames are known.
+struct Node {
+  std::int32_t parent = -1;
+  int g = 0, w = 0;
+  int strands = 1;           // S_0
+  int majorStrands = 0;      // S_1 of the split at this node's tip (0 for a terminal)
+  double startDist = 0.0;    // path length from the ground to this node's base, mature tree
+  double fullLength = 0.0;   // l_0 at maturity, metres
+  double branchAngle = 0.0;  // +alpha_1 (major) or -alpha_2 (minor), degrees, from the parent
+  bool major = false;
+  // Used for this node's own split:
+  double alphaM_deg = 0.0;        // alpha_m^{g,w}
+  double phyllotaxis_deg = 0.0;   // alpha_p with individual jitter
+  float phaseX = 0.0f, phaseZ = 0.0f;  // R_x, R_z
+};
+
+struct PendingCall {
+  std::int32_t parent;
+  int g, w, strands;
+  double relativeLength;  // L_0
+  double activeLength;    // l_0 before individual variation
+  double branchAngle;
+  bool major;
+};
+
+// Pass 1: the topology and mature lengths of Algorithm 1, in depth-first pre-order (each
+// node before the minor, then the major sub-branch, as the recursion visits them).
+std::vector<Node> splitStrands(const Species& species, std::uint64_t seed) {
+  const StrandParams& p = species.strand;
+  const Variation& v = species.variation;
+  std::vector<Node> nodes;
+  nodes.reserve(2 * static_cast<std::size_t>(p.strands));
+  std::vector<PendingCall> stack;
+  stack.push_back({-1, 0, 0, p.strands, 1.0, p.trunkLength_m, 0.0, false});
+  while (!stack.empty()) {
+    PendingCall call = stack.back();
+    stack.pop_back();
+    const auto index = static_cast<std::int32_t>(nodes.size());
+    Rng rng(streamKey(seed, static_cast<std::uint64_t>(index), purpose("strand-node")));
+
+    Node node;
+    node.parent = call.parent;
+    node.g = call.g;
+    node.w = call.w;
+    node.strands = call.strands;
+    node.major = call.major;
+    node.branchAngle = call.branchAngle;
+    node.fullLength = call.activeLength * (1.0 + v.length * rng.uniform(-1.0, 1.0));
+    if (call.parent >= 0) {
+      const Node& parent = nodes[call.parent];
+      node.startDist = parent.startDist + parent.fullLength;
+    }
+    if (node.strands > 1) {
+      LocalParams local = evaluateLocal(p.graphs, node.g, node.w);
+      const double s0 = node.strands;
+      // S1 = ceil(1 + k_s (S0 - 2)); the epsilon keeps 4.0000000001 from rounding up to 5,
+      // and the clamp keeps both sub-branches non-empty.
+      int s1 = static_cast<int>(std::ceil(1.0 + local.ks * (s0 - 2.0) - 1e-9));
+      s1 = std::clamp(s1, 1, node.strands - 1);
+      int s2 = node.strands - s1;
+      double r1 = std::max(std::min(std::sqrt(s1 / s0), local.maxLength), local.minLength);
+      double r2 = std::max(std::min(std::sqrt(s2 / s0), local.maxLength), local.minLength);
+      double L1 = r1 * call.relativeLength;
+      double L2 = r2 * call.relativeLength;
+      double alpha = local.alpha_deg * (1.0 + v.branchAngle * rng.uniform(-1.0, 1.0));
+      double alpha1 = species.strand.kc * std::sqrt(s2 / s0) * alpha;
+      double alpha2 = alpha - alpha1;
+      node.majorStrands = s1;
+      node.alphaM_deg = local.alphaM_deg;
+      node.phyllotaxis_deg = p.phyllotaxis_deg + v.phyllotaxis_deg * rng.uniform(-1.0, 1.0);
+      node.phaseX = static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi));
+      node.phaseZ = static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi));
+      // The major and minor sub-branches turn to opposite sides so that the angle between
+      // them is alpha_1 + alpha_2 = alpha^{g,w}. Pushed major first: the minor pops first.
+      stack.push_back({index, node.g, node.w + 1, s1, L1, local.kl * L1, +alpha1, true});
+      stack.push_back({index, node.g + 1, node.w + 1, s2, L2, local.kl * L2, -alpha2, false});
+    }
+    nodes.push_back(node);
+  }
+  return nodes;
+}
+
+glm::mat3 tiltToward(glm::vec3 targetLocal, double degrees) {
+  // Rotation about y x target, which turns the branch axis y toward the target direction.
+  glm::vec3 axis = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), targetLocal);
+  float len = glm::length(axis);
+  if (len < 1e-6f || degrees == 0.0) return glm::mat3(1.0f);
+  return rotationAbout(axis / len, degrees);
+}
+
+}  // namespace
+
+glm::dvec3 windTowardFromBearing(double fromDeg) {
+  double toward = radians(fromDeg + 180.0);
+  return {std::sin(toward), 0.0, -std::cos(toward)};  // east = +x, north = -z
+}
+
+TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& options) {
+  const StrandParams& p = species.strand;
+  ECO_ASSERT(p.strands >= 1, "strands=" << p.strands);
+  const std::vector<Node> nodes = splitStrands(species, options.seed);
+
+  // Growth: a front travels outward along every path from the ground at constant speed,
+  // reaching the farthest tip at age 1. A segment is as long as the front has gone past its
+  // base; its children emerge at zero length when it is complete.
+  double longestPath = 0.0;
+  for (const Node& n : nodes) longestPath = std::max(longestPath, n.startDist + n.fullLength);
+  const double age = std::clamp(options.age, 0.0, 1.0);
+  const double growth = kSeedlingFraction + (1.0 - kSeedlingFraction) * age;
+  const double front = growth * longestPath;
+  const bool mature = age >= 1.0;
+
+  const double wg = options.windDirected.value_or(p.windDirected);
+  const double ws = options.windUndirected.value_or(p.windUndirected);
+  const glm::dvec3 windDirection = options.windDirection.value_or(p.windDirection);
+  const glm::vec3 wind = glm::length(windDirection) > 0.0 ? glm::vec3(glm::normalize(windDirection))
+                                                          : glm::vec3(0.0f);
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const double sway = ws * (1.0 - p.flexibility);  // degrees per metre of base branch
+  const double t = options.windTime;
+
+  TreeSkeleton skeleton;
+  skeleton.segments.reserve(nodes.size());
+  std::vector<std::int32_t> segmentOf(nodes.size(), -1);
+  std::vector<glm::mat3> gravimorphicFrame(nodes.size());  // (M_m^{-1})^{-1}: no directed wind
+
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const Node& node = nodes[i];
+    if (!mature && node.parent >= 0 && node.startDist >= front) continue;
+    BranchSegment seg;
+    seg.length_m = static_cast<float>(mature ? node.fullLength
+                                             : std::clamp(front - node.startDist, 0.0, node.fullLength));
+    seg.gravelius = static_cast<std::int16_t>(node.g);
+    seg.weibull = static_cast<std::int16_t>(node.w);
+    seg.strands = node.strands;
+    seg.continuesParent = node.major;
+    seg.windPhaseX = node.phaseX;
+    seg.windPhaseZ = node.phaseZ;
+    // Thickness from Mandelbrot: d = k_d sqrt(S_0); the whole tree thickens as it grows.
+    const double girth = 0.5 * p.kd * growth;
+    seg.startRadius_m = static_cast<float>(girth * std::sqrt(node.strands));
+    seg.endRadius_m = static_cast<float>(node.majorStrands > 0 ? girth * std::sqrt(node.majorStrands)
+                                                               : 0.5 * seg.startRadius_m);
+    if (node.parent < 0) {
+      gravimorphicFrame[i] = glm::mat3(1.0f);
+    } else {
+      const Node& parentNode = nodes[node.parent];
+      const BranchSegment& parent = skeleton.segments[segmentOf[node.parent]];
+      seg.parent = segmentOf[node.parent];
+      seg.start = parent.end();
+      // Undirected wind: alpha_x(t) = sin(t + R_x) w_s (1 - k_f) l_0, likewise alpha_z.
+      double alphaX = std::sin(t + parentNode.phaseX) * sway * parent.length_m;
+      double alphaZ = std::sin(t + parentNode.phaseZ) * sway * parent.length_m;
+      // Gravimorphism turns the base branch about y x y_m, y_m being the world's up seen
+      // from the branch frame as it would be without directed wind.
+      glm::vec3 upLocal = glm::transpose(gravimorphicFrame[node.parent]) * up;
+      glm::mat3 local = tiltToward(upLocal, parentNode.alphaM_deg) *
+                        rotationY(parentNode.phyllotaxis_deg) * rotationX(alphaX) *
+                        rotationZ(node.branchAngle + alphaZ);
+      gravimorphicFrame[i] = gravimorphicFrame[node.parent] * local;
+      // Directed wind: alpha_w = (S_0 / S) w_g turns the branch toward the wind direction w0,
+      // the wind seen from the branch frame.
+      glm::mat3 beforeWind = parent.frame * local;
+      double alphaW = static_cast<double>(parentNode.strands) / p.strands * wg;
+      seg.frame = beforeWind * tiltToward(glm::transpose(beforeWind) * wind, alphaW);
+    }
+    segmentOf[i] = static_cast<std::int32_t>(skeleton.segments.size());
+    skeleton.segments.push_back(seg);
+  }
+
+  if (options.leaves && p.leafDensity > 0.0 && p.leafSize_m > 0.0) {
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (nodes[i].strands != 1 || segmentOf[i] < 0) continue;
+      const BranchSegment& twig = skeleton.segments[segmentOf[i]];
+      // Leaves unfold as their twig lengthens.
+      double unfolded = nodes[i].fullLength > 0.0 ? twig.length_m / nodes[i].fullLength : 1.0;
+      Rng rng(streamKey(options.seed, i, purpose("leaves")));
+      LeafLayout layout;
+      layout.distribution = p.leafDistribution;
+      layout.count = rng.stochasticRound(p.leafDensity);
+      layout.size_m = static_cast<float>(p.leafSize_m * unfolded);
+      if (layout.size_m < 1e-4f) continue;
+      placeLeaves(twig, segmentOf[i], layout, rng, skeleton.leaves);
+    }
+  }
+  return skeleton;
+}
+
+}  // namespace eco

@@ -1,0 +1,40 @@
+// Procedural textures and the materials that use them. Nothing is downloaded: bark, leaf,
+// needle and leaf-cluster images are generated from the species' colours with tileable
+// value noise.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <glm/vec4.hpp>
+
+#include "core/image.hpp"
+#include "model/mesh.hpp"
+#include "model/species.hpp"
+
+namespace eco {
+
+inline constexpr int kTextureSize = 256;
+
+Image makeBarkTexture(const Appearance& look);
+Image makeLeafTexture(const Appearance& look);    // broadleaf or needle tuft; v = 0 at the petiole
+Image makeNeedleTexture(const Appearance& look);  // one needle along the card
+Image makeLeafClusterTexture(const Appearance& look, bool needles);
+
+// Tileable fractal value noise in [0, 1]; x and y in texture units (periodic with period 1).
+float tileableNoise(float x, float y, int baseFrequency, int octaves, std::uint64_t seed);
+
+struct Material {
+  MaterialKind kind = MaterialKind::Bark;
+  std::string name;
+  glm::vec4 baseColor{1.0f};  // multiplies the texture; the whole colour when there is none
+  std::optional<Image> texture;
+  bool alphaMask = false;  // cut out where texture alpha < 0.5
+  bool doubleSided = false;
+  bool repeat = false;     // texture wraps (bark) or clamps (cards)
+  float roughness = 0.9f;
+};
+
+Material makeMaterial(MaterialKind kind, const Species& species);
+
+}  // namespace eco

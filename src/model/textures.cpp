@@ -29,10 +29,12 @@ float valueNoise(float x, float y, int period, std::uint64_t seed) {
 }
 
 // Half-width of a broadleaf blade at v (0 petiole .. 1 tip), after Tankard's mirrored
-// half-leaf outline: a short petiole, a rounded base and a pointed tip.
+// half-leaf outline: a short petiole, a rounded base and a pointed tip. The tip stops
+// short of the edge so mipmaps keep a transparent margin.
 float bladeHalfWidth(float v) {
   if (v < 0.06f) return 0.025f;
-  float t = (v - 0.06f) / 0.94f;
+  float t = (v - 0.06f) / 0.90f;
+  if (t >= 1.0f) return 0.0f;
   return 0.47f * std::pow(std::sin(std::numbers::pi_v<float> * std::pow(t, 0.75f)), 0.85f);
 }
 

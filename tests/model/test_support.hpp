@@ -1,0 +1,21 @@
+// Shared helpers for the model tests.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "model/species.hpp"
+
+namespace eco::test {
+
+// A species from scenarios/species/NAME.toml.
+Species loadNamed(const std::string& name);
+// The same species with no individual variation, so angles and lengths are the paper's.
+Species withoutVariation(Species species);
+// An empty folder under the temporary directory, unique to this process.
+std::filesystem::path freshDirectory(const std::string& name);
+std::string readFile(const std::filesystem::path& file);
+// Writes `text` to NAME.toml in a fresh folder and returns its path.
+std::filesystem::path writeTemporary(const std::string& name, const std::string& text);
+
+}  // namespace eco::test

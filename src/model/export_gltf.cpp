@@ -41,7 +41,7 @@ class GltfBuilder {
   }
 
   template <typename T>
-  int addAccessor(const std::vector<T>& values, int componentType, int type, int target, bool withBounds) {
+  int addAccessor(const Buffer<T>& values, int componentType, int type, int target, bool withBounds) {
     tinygltf::Accessor accessor;
     accessor.bufferView = addView(values.data(), values.size() * sizeof(T), target);
     accessor.componentType = componentType;

@@ -152,9 +152,17 @@ void stemProxy(const TreeSkeleton& skeleton, float top_m, MeshPart& bark) {
 }  // namespace
 
 TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod) {
-  ECO_ASSERT(lod >= 0 && lod < kLodCount, "lod=" << lod);
-  if (lod == 0) return meshTree(skeleton, lod0Options(species));
   TreeMesh mesh;
+  buildLodInto(skeleton, species, lod, mesh);
+  return mesh;
+}
+
+void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod, TreeMesh& mesh) {
+  ECO_ASSERT(lod >= 0 && lod < kLodCount, "lod=" << lod);
+  if (lod == 0) {
+    meshTreeInto(skeleton, lod0Options(species), mesh);
+    return;
+  }
   if (lod == 1) {
     MeshOptions options = lod0Options(species);
     options.maxSides = 5;
@@ -164,15 +172,15 @@ TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod)
     MeshPart clusters{MaterialKind::LeafCluster, {}, {}, {}, {}};
     clusterLeaves(skeleton, species, clusters);
     if (!clusters.indices.empty()) mesh.parts.push_back(std::move(clusters));
-    return mesh;
+    return;
   }
+  mesh.parts.clear();
   MeshPart crown{MaterialKind::Crown, {}, {}, {}, {}};
   MeshPart bark{MaterialKind::Bark, {}, {}, {}, {}};
   float crownCenter_m = crownHull(skeleton, crown);
   stemProxy(skeleton, crownCenter_m, bark);
   for (MeshPart* part : {&bark, &crown})
     if (!part->indices.empty()) mesh.parts.push_back(std::move(*part));
-  return mesh;
 }
 
 }  // namespace eco

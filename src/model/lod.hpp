@@ -19,5 +19,7 @@ inline constexpr int kLod1ClusterStrands = 16;  // leaves under one such branch 
 inline constexpr float kClusterCoverage = 0.5f;
 
 TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod);
+// The same into a mesh the caller owns (LOD0 reuses its capacity).
+void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod, TreeMesh& out);
 
 }  // namespace eco

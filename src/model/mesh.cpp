@@ -13,21 +13,34 @@ const char* toString(MaterialKind kind) {
   return "?";
 }
 
-std::uint32_t MeshPart::addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv) {
-  positions.push_back(position);
-  normals.push_back(normal);
-  uvs.push_back(uv);
-  return static_cast<std::uint32_t>(positions.size() - 1);
-}
-
-void MeshPart::addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  indices.insert(indices.end(), {a, b, c});
+void MeshPart::reserve(std::size_t vertices, std::size_t triangles) {
+  positions.reserve(positions.size() + vertices);
+  normals.reserve(normals.size() + vertices);
+  uvs.reserve(uvs.size() + vertices);
+  indices.reserve(indices.size() + 3 * triangles);
 }
 
 std::size_t TreeMesh::triangleCount() const {
   std::size_t count = 0;
   for (const MeshPart& part : parts) count += part.triangleCount();
   return count;
+}
+
+MeshPart& TreeMesh::reusePart(MaterialKind material) {
+  for (MeshPart& part : parts)
+    if (part.material == material) {
+      part.positions.clear();
+      part.normals.clear();
+      part.uvs.clear();
+      part.indices.clear();
+      return part;
+    }
+  parts.push_back(MeshPart{material, {}, {}, {}, {}});
+  return parts.back();
+}
+
+void TreeMesh::dropEmptyParts() {
+  std::erase_if(parts, [](const MeshPart& part) { return part.indices.empty(); });
 }
 
 const MeshPart* TreeMesh::find(MaterialKind material) const {

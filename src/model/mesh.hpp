@@ -9,6 +9,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/buffer.hpp"
+
 namespace eco {
 
 enum class MaterialKind { Bark, Leaf, Needle, LeafCluster, Crown };
@@ -16,14 +18,25 @@ const char* toString(MaterialKind kind);
 
 struct MeshPart {
   MaterialKind material = MaterialKind::Bark;
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;
-  std::vector<glm::vec2> uvs;
-  std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
+  Buffer<glm::vec3> positions;
+  Buffer<glm::vec3> normals;
+  Buffer<glm::vec2> uvs;
+  Buffer<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
 
   std::size_t triangleCount() const { return indices.size() / 3; }
-  std::uint32_t addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv);
-  void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  void reserve(std::size_t vertices, std::size_t triangles);
+  // Inline: meshing a pine calls these about a million times.
+  std::uint32_t addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv) {
+    positions.push_back(position);
+    normals.push_back(normal);
+    uvs.push_back(uv);
+    return static_cast<std::uint32_t>(positions.size() - 1);
+  }
+  void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    indices.push_back(a);
+    indices.push_back(b);
+    indices.push_back(c);
+  }
 };
 
 struct TreeMesh {
@@ -31,6 +44,11 @@ struct TreeMesh {
 
   std::size_t triangleCount() const;
   const MeshPart* find(MaterialKind material) const;
+  // For the ...Into builders: the part of that material, emptied but with its capacity
+  // kept (created if missing).
+  MeshPart& reusePart(MaterialKind material);
+  // Drops the parts that stayed empty.
+  void dropEmptyParts();
 };
 
 }  // namespace eco

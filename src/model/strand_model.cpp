@@ -115,6 +115,12 @@ glm::dvec3 windTowardFromBearing(double fromDeg) {
 }
 
 TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& options) {
+  TreeSkeleton skeleton;
+  buildStrandTreeInto(species, options, skeleton);
+  return skeleton;
+}
+
+void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options, TreeSkeleton& skeleton) {
   const StrandParams& p = species.strand;
   ECO_ASSERT(p.strands >= 1, "strands=" << p.strands);
   const std::vector<Node> nodes = splitStrands(species, options.seed);
@@ -138,7 +144,8 @@ TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& opt
   const double sway = ws * (1.0 - p.flexibility);  // degrees per metre of base branch
   const double t = options.windTime;
 
-  TreeSkeleton skeleton;
+  skeleton.segments.clear();
+  skeleton.leaves.clear();
   skeleton.segments.reserve(nodes.size());
   std::vector<std::int32_t> segmentOf(nodes.size(), -1);
   std::vector<glm::mat3> gravimorphicFrame(nodes.size());  // (M_m^{-1})^{-1}: no directed wind
@@ -188,21 +195,23 @@ TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& opt
   }
 
   if (options.leaves && p.leafDensity > 0.0 && p.leafSize_m > 0.0) {
+    skeleton.leaves.reserve(static_cast<std::size_t>(p.strands * std::ceil(p.leafDensity)));
+    // A fractional density gives floor or ceil leaves per twig: at most two patterns.
+    const int fewest = static_cast<int>(std::floor(p.leafDensity));
+    const LeafPattern patterns[2] = {makeLeafPattern(p.leafDistribution, fewest),
+                                     makeLeafPattern(p.leafDistribution, fewest + 1)};
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       if (nodes[i].strands != 1 || segmentOf[i] < 0) continue;
       const BranchSegment& twig = skeleton.segments[segmentOf[i]];
       // Leaves unfold as their twig lengthens.
       double unfolded = nodes[i].fullLength > 0.0 ? twig.length_m / nodes[i].fullLength : 1.0;
       Rng rng(streamKey(options.seed, i, purpose("leaves")));
-      LeafLayout layout;
-      layout.distribution = p.leafDistribution;
-      layout.count = rng.stochasticRound(p.leafDensity);
-      layout.size_m = static_cast<float>(p.leafSize_m * unfolded);
-      if (layout.size_m < 1e-4f) continue;
-      placeLeaves(twig, segmentOf[i], layout, rng, skeleton.leaves);
+      const LeafPattern& pattern = patterns[rng.stochasticRound(p.leafDensity) - fewest];
+      auto size = static_cast<float>(p.leafSize_m * unfolded);
+      if (size < 1e-4f) continue;
+      placeLeaves(twig, segmentOf[i], pattern, size, rng, skeleton.leaves);
     }
   }
-  return skeleton;
 }
 
 }  // namespace eco

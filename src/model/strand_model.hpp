@@ -29,6 +29,9 @@ struct TreeBuildOptions {
 inline constexpr double kSeedlingFraction = 0.04;
 
 TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& options);
+// The same into a skeleton the caller owns: its arrays keep their capacity, so building
+// many trees one after another allocates (and page-faults) nothing new.
+void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options, TreeSkeleton& out);
 
 // The horizontal direction toward which a wind blows that comes from compass bearing
 // `fromDeg` (0 north, 90 east), in the tree frame (x east, y up, z south).

@@ -101,34 +101,95 @@ void meshBranches(const TreeSkeleton& skeleton, const MeshOptions& options, Mesh
   }
 }
 
+namespace {
+
+// Writes cards straight into pre-sized arrays: a pine has 180000 leaves, and per-element
+// push_back dominated the mesh time.
+class CardWriter {
+ public:
+  CardWriter(MeshPart& part, std::size_t cards) : part_(part), vertex_(part.positions.size()) {
+    std::size_t vertices = vertex_ + 4 * cards;
+    part.positions.resize(vertices);
+    part.normals.resize(vertices);
+    part.uvs.resize(vertices);
+    index_ = part.indices.size();
+    part.indices.resize(index_ + 6 * cards);
+  }
+
+  void add(glm::vec3 base, glm::vec3 along, glm::vec3 across, float length, float width) {
+    glm::vec3 normal = glm::normalize(glm::cross(across, along));
+    glm::vec3 half = across * (0.5f * width);
+    glm::vec3 tip = base + along * length;
+    glm::vec3* p = &part_.positions[vertex_];
+    p[0] = base - half;
+    p[1] = base + half;
+    p[2] = tip + half;
+    p[3] = tip - half;
+    glm::vec3* n = &part_.normals[vertex_];
+    n[0] = n[1] = n[2] = n[3] = normal;
+    glm::vec2* t = &part_.uvs[vertex_];
+    t[0] = {0.0f, 0.0f};
+    t[1] = {1.0f, 0.0f};
+    t[2] = {1.0f, 1.0f};
+    t[3] = {0.0f, 1.0f};
+    auto v = static_cast<std::uint32_t>(vertex_);
+    std::uint32_t* i = &part_.indices[index_];
+    i[0] = v, i[1] = v + 1, i[2] = v + 2, i[3] = v, i[4] = v + 2, i[5] = v + 3;
+    vertex_ += 4;
+    index_ += 6;
+  }
+
+ private:
+  MeshPart& part_;
+  std::size_t vertex_;
+  std::size_t index_;
+};
+
+}  // namespace
+
 void meshLeaves(const TreeSkeleton& skeleton, LeafShape shape, MeshPart& cards, MeshPart& needles) {
   const float aspect = leafCardAspect(shape);
+  std::size_t needleCount = 0;
+  for (const Leaf& leaf : skeleton.leaves) needleCount += leaf.kind == LeafKind::Needle ? 1 : 0;
+  CardWriter cardWriter(cards, skeleton.leaves.size() - needleCount);
+  CardWriter needleWriter(needles, 2 * needleCount);
   for (const Leaf& leaf : skeleton.leaves) {
-    // across = direction x normal makes the card's front face the leaf's normal.
-    glm::vec3 across = glm::normalize(glm::cross(leaf.direction, leaf.normal));
+    // across = direction x normal makes the card's front face the leaf's normal; both are
+    // unit and perpendicular, so across is a unit vector too.
+    glm::vec3 across = glm::cross(leaf.direction, leaf.normal);
     if (leaf.kind == LeafKind::Needle) {
       float width = leaf.size_m * kNeedleAspect;
-      addCard(needles, leaf.position, leaf.direction, across, leaf.size_m, width);
-      addCard(needles, leaf.position, leaf.direction, leaf.normal, leaf.size_m, width);
+      needleWriter.add(leaf.position, leaf.direction, across, leaf.size_m, width);
+      needleWriter.add(leaf.position, leaf.direction, leaf.normal, leaf.size_m, width);
     } else {
-      addCard(cards, leaf.position, leaf.direction, across, leaf.size_m, leaf.size_m * aspect);
+      cardWriter.add(leaf.position, leaf.direction, across, leaf.size_m, leaf.size_m * aspect);
     }
   }
 }
 
 TreeMesh meshTree(const TreeSkeleton& skeleton, const MeshOptions& options) {
   TreeMesh mesh;
-  MeshPart bark{MaterialKind::Bark, {}, {}, {}, {}};
-  MeshPart cards{MaterialKind::Leaf, {}, {}, {}, {}};
-  MeshPart needles{MaterialKind::Needle, {}, {}, {}, {}};
-  // Rough upper bounds keep the arrays from reallocating on the hot path.
-  bark.positions.reserve(skeleton.segments.size() * (options.maxSides + 2));
-  cards.positions.reserve(skeleton.leaves.size() * 4);
+  meshTreeInto(skeleton, options, mesh);
+  return mesh;
+}
+
+void meshTreeInto(const TreeSkeleton& skeleton, const MeshOptions& options, TreeMesh& mesh) {
+  // Parts of other materials (from an earlier LOD) are dropped; ours keep their capacity.
+  std::erase_if(mesh.parts, [](const MeshPart& part) {
+    return part.material != MaterialKind::Bark && part.material != MaterialKind::Leaf &&
+           part.material != MaterialKind::Needle;
+  });
+  mesh.parts.reserve(mesh.parts.size() + 3);  // the references below must stay valid
+  MeshPart& bark = mesh.reusePart(MaterialKind::Bark);
+  MeshPart& cards = mesh.reusePart(MaterialKind::Leaf);
+  MeshPart& needles = mesh.reusePart(MaterialKind::Needle);
+  // An upper bound keeps the bark arrays from reallocating on the hot path: every segment
+  // adds at most one ring, every chain a cap and a tip. Leaf arrays are sized exactly.
+  const std::size_t sides = static_cast<std::size_t>(options.maxSides);
+  bark.reserve(skeleton.segments.size() * (sides + 1) * 2 + 2, skeleton.segments.size() * sides * 4);
   meshBranches(skeleton, options, bark);
   if (options.leaves) meshLeaves(skeleton, options.leafShape, cards, needles);
-  for (MeshPart* part : {&bark, &cards, &needles})
-    if (!part->indices.empty()) mesh.parts.push_back(std::move(*part));
-  return mesh;
+  mesh.dropEmptyParts();
 }
 
 }  // namespace eco

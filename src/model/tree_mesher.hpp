@@ -37,5 +37,7 @@ void meshBranches(const TreeSkeleton& skeleton, const MeshOptions& options, Mesh
 void meshLeaves(const TreeSkeleton& skeleton, LeafShape shape, MeshPart& cards, MeshPart& needles);
 
 TreeMesh meshTree(const TreeSkeleton& skeleton, const MeshOptions& options);
+// The same into a mesh the caller owns, reusing the capacity of its parts.
+void meshTreeInto(const TreeSkeleton& skeleton, const MeshOptions& options, TreeMesh& out);
 
 }  // namespace eco

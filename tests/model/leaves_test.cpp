@@ -21,7 +21,7 @@ BranchSegment horizontalTwig() {
 std::vector<Leaf> place(LeafDistribution distribution, int count) {
   std::vector<Leaf> leaves;
   Rng rng(streamKey(1, purpose("leaves-test")));
-  placeLeaves(horizontalTwig(), 3, {distribution, count, 0.2f, 137.508}, rng, leaves);
+  placeLeaves(horizontalTwig(), 3, makeLeafPattern(distribution, count), 0.2f, rng, leaves);
   return leaves;
 }
 

@@ -3,6 +3,11 @@
 // away from the viewer), so z is mirrored; its image origin is bottom-left, so v is flipped.
 #include <fmt/format.h>
 
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
 #include "core/atomic_file.hpp"
 #include "model/tree_export.hpp"
 
@@ -10,25 +15,27 @@ namespace eco {
 
 void writePov(const TreeMesh& mesh, const std::vector<Material>& materials, const std::filesystem::path& file) {
   AtomicFileSet files;
-  AtomicFile& pov = files.add(file);
+  AtomicFile& scene = files.add(file);
+  // Frame the whole tree in a 40-degree view from the south-east, a little above its middle.
   Bounds b = boundsOf(mesh);
   glm::vec3 center = 0.5f * (b.min + b.max);
-  float height = b.max.y - b.min.y;
-  float width = std::max(b.max.x - b.min.x, b.max.z - b.min.z);
-  float distance = 1.3f * std::max(height, width) + 1.0f;
+  float radius = 0.5f * glm::length(b.max - b.min);
+  float distance = 1.15f * radius / std::tan(glm::radians(20.0f)) + 0.5f;
+  glm::vec3 eye = center + distance * glm::normalize(glm::vec3(0.45f, 0.12f, 1.0f));
+  glm::vec3 sun = center + 4.0f * distance * glm::normalize(glm::vec3(0.6f, 1.0f, 0.5f));
+  glm::vec3 fill = center + 4.0f * distance * glm::normalize(glm::vec3(-0.8f, 0.6f, -0.3f));
+  auto pov = [](glm::vec3 v) { return fmt::format("<{:.3f}, {:.3f}, {:.3f}>", v.x, v.y, -v.z); };
 
-  pov.write(fmt::format(
-      "// ecoforest tree; render with: povray +I{0} +W800 +H800 +A\n"
+  scene.write(fmt::format(
+      "// ecoforest tree; render with: povray +I{} +W800 +H800 +A\n"
       "#version 3.7;\n"
       "global_settings {{ assumed_gamma 1.0 }}\n"
-      "camera {{ location <{1:.3f}, {2:.3f}, {3:.3f}> look_at <{4:.3f}, {5:.3f}, {6:.3f}> angle 50 }}\n"
-      "light_source {{ <{7:.1f}, {8:.1f}, {9:.1f}> color rgb <1.0, 0.97, 0.9> }}\n"
-      "light_source {{ <{10:.1f}, {8:.1f}, {11:.1f}> color rgb 0.35 shadowless }}\n"
+      "camera {{ location {} look_at {} angle 40 }}\n"
+      "light_source {{ {} color rgb <1.0, 0.97, 0.9> }}\n"
+      "light_source {{ {} color rgb 0.35 shadowless }}\n"
       "sky_sphere {{ pigment {{ gradient y color_map {{ [0 color rgb <0.75, 0.85, 1.0>] [1 color rgb <0.3, 0.5, 0.9>] }} }} }}\n"
       "plane {{ y, 0 pigment {{ color rgb <0.35, 0.42, 0.25> }} }}\n",
-      file.filename().string(), center.x + 0.3f * distance, center.y + 0.15f * height, -(center.z - distance),
-      center.x, center.y, -center.z, center.x + 2.0f * distance, center.y + 4.0f * distance,
-      -(center.z - 3.0f * distance), center.x - 3.0f * distance, -(center.z + distance)));
+      file.filename().string(), pov(eye), pov(center), pov(sun), pov(fill)));
 
   std::string text;
   for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
@@ -57,7 +64,7 @@ void writePov(const TreeMesh& mesh, const std::vector<Material>& materials, cons
                           material.baseColor.r, material.baseColor.g, material.baseColor.b);
     }
     text += "}\n";
-    pov.write(text);
+    scene.write(text);
   }
   files.commit();
 }

@@ -140,7 +140,7 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
   const glm::dvec3 windDirection = options.windDirection.value_or(p.windDirection);
   const glm::vec3 wind = glm::length(windDirection) > 0.0 ? glm::vec3(glm::normalize(windDirection))
                                                           : glm::vec3(0.0f);
-  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const glm::vec3 gravity(0.0f, -1.0f, 0.0f);
   const double sway = ws * (1.0 - p.flexibility);  // degrees per metre of base branch
   const double t = options.windTime;
 
@@ -177,10 +177,12 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
       // Undirected wind: alpha_x(t) = sin(t + R_x) w_s (1 - k_f) l_0, likewise alpha_z.
       double alphaX = std::sin(t + parentNode.phaseX) * sway * parent.length_m;
       double alphaZ = std::sin(t + parentNode.phaseZ) * sway * parent.length_m;
-      // Gravimorphism turns the base branch about y x y_m, y_m being the world's up seen
-      // from the branch frame as it would be without directed wind.
-      glm::vec3 upLocal = glm::transpose(gravimorphicFrame[node.parent]) * up;
-      glm::mat3 local = tiltToward(upLocal, parentNode.alphaM_deg) *
+      // Gravimorphism turns the base branch about y x y_m by alpha_m, y_m being the
+      // gravimorphism vector -- gravity, the world's down -- seen from the branch frame as
+      // it would be without directed wind: alpha_m > 0 bends toward the downward vertical
+      // (sagging), alpha_m < 0 against gravity (docs/model.md says why).
+      glm::vec3 gravityLocal = glm::transpose(gravimorphicFrame[node.parent]) * gravity;
+      glm::mat3 local = tiltToward(gravityLocal, parentNode.alphaM_deg) *
                         rotationY(parentNode.phyllotaxis_deg) * rotationX(alphaX) *
                         rotationZ(node.branchAngle + alphaZ);
       gravimorphicFrame[i] = gravimorphicFrame[node.parent] * local;

@@ -13,18 +13,19 @@ namespace {
 
 float smooth(float t) { return t * t * (3.0f - 2.0f * t); }
 
-float latticeValue(int x, int y, int period, std::uint64_t seed) {
-  x = ((x % period) + period) % period;
-  y = ((y % period) + period) % period;
+float latticeValue(int x, int y, int periodX, int periodY, std::uint64_t seed) {
+  x = ((x % periodX) + periodX) % periodX;
+  y = ((y % periodY) + periodY) % periodY;
   return static_cast<float>(mix64(streamKey(seed, static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y))) >> 40) /
          static_cast<float>(1 << 24);
 }
 
-float valueNoise(float x, float y, int period, std::uint64_t seed) {
+float valueNoise(float x, float y, int periodX, int periodY, std::uint64_t seed) {
   int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
   float fx = smooth(x - static_cast<float>(x0)), fy = smooth(y - static_cast<float>(y0));
-  float a = latticeValue(x0, y0, period, seed), b = latticeValue(x0 + 1, y0, period, seed);
-  float c = latticeValue(x0, y0 + 1, period, seed), d = latticeValue(x0 + 1, y0 + 1, period, seed);
+  float a = latticeValue(x0, y0, periodX, periodY, seed), b = latticeValue(x0 + 1, y0, periodX, periodY, seed);
+  float c = latticeValue(x0, y0 + 1, periodX, periodY, seed);
+  float d = latticeValue(x0 + 1, y0 + 1, periodX, periodY, seed);
   return (a + (b - a) * fx) + ((c + (d - c) * fx) - (a + (b - a) * fx)) * fy;
 }
 
@@ -57,27 +58,35 @@ glm::vec4 leafColorAt(const Appearance& look, float u, float v) {
 }  // namespace
 
 float tileableNoise(float x, float y, int baseFrequency, int octaves, std::uint64_t seed) {
+  return tileableNoise(x, y, baseFrequency, baseFrequency, octaves, seed);
+}
+
+float tileableNoise(float x, float y, int frequencyX, int frequencyY, int octaves, std::uint64_t seed) {
   float sum = 0.0f, amplitude = 0.5f, total = 0.0f;
-  int frequency = baseFrequency;
   for (int o = 0; o < octaves; ++o) {
-    sum += amplitude * valueNoise(x * frequency, y * frequency, frequency, seed + o);
+    sum += amplitude * valueNoise(x * frequencyX, y * frequencyY, frequencyX, frequencyY, seed + o);
     total += amplitude;
     amplitude *= 0.5f;
-    frequency *= 2;
+    frequencyX *= 2;
+    frequencyY *= 2;
   }
   return sum / total;
 }
 
 Image makeBarkTexture(const Appearance& look) {
   Image image(kTextureSize, kTextureSize);
+  const auto roughness = static_cast<float>(look.barkRoughness);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       float u = (x + 0.5f) / image.width, v = (y + 0.5f) / image.height;
-      // Furrows run along the stem (v): noise stretched in v, folded into ridges.
-      float ridge = 1.0f - std::abs(2.0f * tileableNoise(u, v * 0.25f, 6, 4, 11) - 1.0f);
-      float furrow = std::pow(1.0f - ridge, 3.0f) * static_cast<float>(look.barkRoughness);
+      // Fissures follow an iso-line of noise stretched along the stem (v), so they run
+      // lengthwise and enclose plates; rough bark has wide, dark fissures.
+      float plates = tileableNoise(u, v, 6, 2, 4, 11);
+      float toFissure = std::abs(2.0f * plates - 1.0f);
+      float fissure = roughness * (1.0f - std::clamp(toFissure / (0.04f + 0.14f * roughness), 0.0f, 1.0f));
       float grain = tileableNoise(u, v, 16, 3, 12);
-      glm::vec3 c = look.barkColor * (0.8f + 0.35f * grain) * (1.0f - 0.8f * furrow);
+      float plateShade = 0.85f + 0.3f * tileableNoise(u, v, 3, 2, 13);
+      glm::vec3 c = look.barkColor * plateShade * (0.85f + 0.3f * grain) * (1.0f - 0.75f * fissure);
       image.set(x, y, glm::vec4(c, 1.0f));
     }
   return image;

@@ -23,6 +23,8 @@ Image makeLeafClusterTexture(const Appearance& look, bool needles);
 
 // Tileable fractal value noise in [0, 1]; x and y in texture units (periodic with period 1).
 float tileableNoise(float x, float y, int baseFrequency, int octaves, std::uint64_t seed);
+// The same with its own frequency along each axis (stretched features, still tileable).
+float tileableNoise(float x, float y, int frequencyX, int frequencyY, int octaves, std::uint64_t seed);
 
 struct Material {
   MaterialKind kind = MaterialKind::Bark;

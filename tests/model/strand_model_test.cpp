@@ -129,7 +129,7 @@ TEST(StrandModel, BranchingAnglesSumToAlpha) {
   EXPECT_EQ(checked, 999);
 }
 
-TEST(StrandModel, GravimorphismBendsTowardOrAwayFromTheVertical) {
+TEST(StrandModel, GravimorphismBendsAlongOrAgainstGravity) {
   Species base = test::withoutVariation(test::loadNamed("beech"));
   auto withAlphaM = [&](double degrees) {
     Species s = base;
@@ -137,8 +137,28 @@ TEST(StrandModel, GravimorphismBendsTowardOrAwayFromTheVertical) {
     return meanUpness(buildStrandTree(s, {.windDirected = 0.0, .leaves = false}));
   };
   double none = withAlphaM(0.0);
-  EXPECT_GT(withAlphaM(+5.0), none + 0.05);  // toward the vertical
-  EXPECT_LT(withAlphaM(-5.0), none - 0.05);  // away from it
+  // alpha_m > 0 bends toward the downward vertical (the gravimorphism vector is gravity),
+  // alpha_m < 0 away from it, up against gravity.
+  EXPECT_LT(withAlphaM(+5.0), none - 0.05);
+  EXPECT_GT(withAlphaM(-5.0), none + 0.05);
+  // Per segment the bend is exactly alpha_m about y x y_m. Four strands split evenly
+  // (k_s = 1/2) at 90 degrees with a straight leader (k_c = 0) give a horizontal minor
+  // branch of two strands; its major child continues it, turned 30 degrees down.
+  Species one = base;
+  one.strand.strands = 4;
+  one.strand.kc = 0.0;
+  one.strand.graphs.ksG = Polyline::constant(0.5);
+  one.strand.graphs.alphaG = Polyline::constant(90.0);
+  one.strand.graphs.alphaMG = Polyline::constant(30.0);
+  TreeSkeleton tree = buildStrandTree(one, {.windDirected = 0.0, .leaves = false});
+  auto children = childrenOf(tree);
+  const BranchSegment& horizontal = tree.segments[children[0].minor];
+  ASSERT_NEAR(horizontal.axis().y, 0.0f, 1e-5f);
+  const BranchSegment& continuation = tree.segments[children[children[0].minor].major];
+  EXPECT_NEAR(angleBetween_deg(horizontal.axis(), continuation.axis()), 30.0, 1e-3);
+  EXPECT_NEAR(continuation.axis().y, -std::sin(30.0 * std::numbers::pi / 180.0), 1e-5);
+  // The vertical leader cannot bend: gravity is parallel to it.
+  EXPECT_NEAR(tree.segments[children[0].major].axis().y, 1.0f, 1e-5f);
 }
 
 TEST(StrandModel, DirectedWindTiltsTheCrownDownwind) {

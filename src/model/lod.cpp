@@ -1,6 +1,7 @@
 #include "model/lod.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <unordered_map>
@@ -8,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.hpp"
+#include "model/textures.hpp"
 #include "model/tree_mesher.hpp"
 
 namespace eco {
@@ -29,9 +31,6 @@ void clusterLeaves(const TreeSkeleton& skeleton, const Species& species, MeshPar
     float area_m2 = 0.0f;
     int count = 0;
   };
-  const float aspect = species.strand.leafDistribution == LeafDistribution::Coniferous
-                           ? kNeedleAspect
-                           : leafCardAspect(species.appearance.leafShape);
   std::unordered_map<std::int32_t, Cluster> byBranch;
   std::vector<std::int32_t> order;
   for (const Leaf& leaf : skeleton.leaves) {
@@ -44,7 +43,7 @@ void clusterLeaves(const TreeSkeleton& skeleton, const Species& species, MeshPar
     c.centroid += leaf.position + leaf.direction * (0.5f * leaf.size_m);
     c.normal += leaf.normal;
     c.direction += leaf.direction;
-    c.area_m2 += leaf.size_m * leaf.size_m * aspect;
+    c.area_m2 += visibleLeafArea(species, leaf.size_m);
     ++c.count;
   }
   for (std::int32_t branch : order) {  // first-seen order keeps the output deterministic
@@ -56,8 +55,9 @@ void clusterLeaves(const TreeSkeleton& skeleton, const Species& species, MeshPar
     if (glm::length(along) < 1e-4f) along = glm::vec3(0, 0, 1);
     along = glm::normalize(along);
     glm::vec3 across = glm::cross(along, normal);
-    // Two cards share the leaf area; each shows it at the texture's coverage.
-    float side = std::sqrt(c.area_m2 / (2.0f * kClusterCoverage));
+    // Two cards share the visible leaf area; each shows its texture's coverage of it.
+    float coverage = clustersOfNeedles(species) ? kNeedleClusterCoverage : kLeafClusterCoverage;
+    float side = std::sqrt(c.area_m2 / (2.0f * coverage));
     addCard(clusters, center - along * (0.5f * side), along, across, side, side);
     addCard(clusters, center - along * (0.5f * side), along, normal, side, side);
   }
@@ -106,27 +106,48 @@ float crownHull(const TreeSkeleton& skeleton, MeshPart& crown) {
   for (float& r : reach)
     if (r == 0.0f) r = meanReach;
 
-  // Vertex rings between latitude cells: vertex (i, j) takes the largest reach among the
-  // cells that touch it.
+  // Vertex (i, j) sits between latitude cells: it takes the largest reach among the cells
+  // that touch it (so the leaves stay inside), averaged half-and-half with its ring
+  // neighbours' to soften single spikes.
   auto cellReach = [&](int i, int j) { return reach[std::clamp(i, 0, kLat - 1) * kLon + ((j % kLon) + kLon) % kLon]; };
-  std::vector<std::uint32_t> ring;
+  auto vertexReach = [&](int i, int j) {
+    return std::max({cellReach(i - 1, j - 1), cellReach(i - 1, j), cellReach(i, j - 1), cellReach(i, j)});
+  };
+  // Welded vertex id: the seam column j = kLon is j = 0, and each pole is one point.
+  auto weldedId = [](int i, int j) { return i == 0 ? 0 : i == kLat ? 1 + (kLat - 1) * kLon : 1 + (i - 1) * kLon + j % kLon; };
+  std::vector<glm::vec3> hull(2 + (kLat - 1) * kLon);
   for (int i = 0; i <= kLat; ++i) {
     float polar = std::numbers::pi_v<float> * static_cast<float>(i) / kLat;
-    for (int j = 0; j <= kLon; ++j) {
+    for (int j = 0; j < kLon; ++j) {
       float azimuth = 2.0f * std::numbers::pi_v<float> * static_cast<float>(j) / kLon - std::numbers::pi_v<float>;
       glm::vec3 d(std::sin(polar) * std::cos(azimuth), std::cos(polar), std::sin(polar) * std::sin(azimuth));
-      float r = std::max({cellReach(i - 1, j - 1), cellReach(i - 1, j), cellReach(i, j - 1), cellReach(i, j)});
-      glm::vec3 p = center + d * r;
-      ring.push_back(crown.addVertex(p, d, {static_cast<float>(j) / kLon, static_cast<float>(i) / kLat}));
+      float r = 0.5f * vertexReach(i, j) + 0.25f * (vertexReach(i, j - 1) + vertexReach(i, j + 1));
+      hull[weldedId(i, j)] = center + d * r;
     }
   }
+  // Quads between rings; the first and last rows are fans at the poles.
+  std::vector<std::array<int, 3>> triangles;
   for (int i = 0; i < kLat; ++i)
     for (int j = 0; j < kLon; ++j) {
-      std::uint32_t a = ring[i * (kLon + 1) + j], b = ring[i * (kLon + 1) + j + 1];
-      std::uint32_t c = ring[(i + 1) * (kLon + 1) + j + 1], d = ring[(i + 1) * (kLon + 1) + j];
-      if (i > 0) crown.addTriangle(a, b, d);            // the top row is a fan at the pole
-      if (i < kLat - 1) crown.addTriangle(b, c, d);     // the bottom row is a fan at the pole
+      int a = weldedId(i, j), b = weldedId(i, j + 1), c = weldedId(i + 1, j + 1), d = weldedId(i + 1, j);
+      if (i > 0) triangles.push_back({a, b, d});
+      if (i < kLat - 1) triangles.push_back({b, c, d});
     }
+  // Smooth normals: area-weighted face normals summed at each welded vertex.
+  std::vector<glm::vec3> normals(hull.size(), glm::vec3(0.0f));
+  for (const auto& t : triangles) {
+    glm::vec3 n = glm::cross(hull[t[1]] - hull[t[0]], hull[t[2]] - hull[t[0]]);
+    for (int v : t) normals[v] += n;
+  }
+  std::vector<std::uint32_t> vertex(hull.size());
+  for (std::size_t v = 0; v < hull.size(); ++v) {
+    glm::vec3 n = glm::length(normals[v]) > 0.0f ? glm::normalize(normals[v]) : glm::normalize(hull[v] - center);
+    glm::vec3 d = glm::normalize(hull[v] - center);
+    // Spherical UVs; the crown material is untextured, so the seam does not matter.
+    glm::vec2 uv(0.5f + std::atan2(d.z, d.x) / (2.0f * std::numbers::pi_v<float>), std::acos(std::clamp(d.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>);
+    vertex[v] = crown.addVertex(hull[v], n, uv);
+  }
+  for (const auto& t : triangles) crown.addTriangle(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
   return center.y;
 }
 
@@ -150,6 +171,19 @@ void stemProxy(const TreeSkeleton& skeleton, float top_m, MeshPart& bark) {
 }
 
 }  // namespace
+
+bool clustersOfNeedles(const Species& species) {
+  return species.strand.leafDistribution == LeafDistribution::Coniferous ||
+         species.appearance.leafShape == LeafShape::NeedleTuft;
+}
+
+float visibleLeafArea(const Species& species, float size_m) {
+  if (species.strand.leafDistribution == LeafDistribution::Coniferous)
+    return 2.0f * size_m * size_m * kNeedleAspect * kNeedleCoverage;  // two crossed cards
+  bool tuft = species.appearance.leafShape == LeafShape::NeedleTuft;
+  return size_m * size_m * leafCardAspect(species.appearance.leafShape) *
+         (tuft ? kNeedleTuftCoverage : kBroadleafCoverage);
+}
 
 TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod) {
   TreeMesh mesh;

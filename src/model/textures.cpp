@@ -127,18 +127,23 @@ Image makeNeedleTexture(const Appearance& look) {
 }
 
 Image makeLeafClusterTexture(const Appearance& look, bool needles) {
-  // Small leaves stamped at fixed pseudo-random places until about kClusterCoverage of
-  // the card is covered (the LOD1 cluster size assumes that coverage).
+  // Small leaves stamped at fixed pseudo-random places; kLeafClusterCoverage and
+  // kNeedleClusterCoverage record how much of the card they cover.
   struct Stamp {
     float cx, cy, angle, size;
   };
   std::vector<Stamp> stamps;
   Rng rng(streamKey(purpose("leaf-cluster-texture")));
-  const int count = needles ? 60 : 14;
-  for (int i = 0; i < count; ++i)
-    stamps.push_back({static_cast<float>(rng.uniform(0.2, 0.8)), static_cast<float>(rng.uniform(0.2, 0.8)),
-                      static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)),
-                      static_cast<float>(needles ? rng.uniform(0.3, 0.45) : rng.uniform(0.25, 0.38))});
+  // Spread over the whole card (keeping the stamps inside it) so that clusters read as
+  // foliage rather than as a blob in the middle of a square.
+  const int count = needles ? 70 : 24;
+  for (int i = 0; i < count; ++i) {
+    float size = static_cast<float>(needles ? rng.uniform(0.25, 0.4) : rng.uniform(0.2, 0.3));
+    float margin = 0.5f * size;
+    stamps.push_back({static_cast<float>(rng.uniform(margin, 1.0 - margin)),
+                      static_cast<float>(rng.uniform(margin, 1.0 - margin)),
+                      static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)), size});
+  }
   Image image(kTextureSize, kTextureSize);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -151,7 +156,7 @@ Image makeLeafClusterTexture(const Appearance& look, bool needles) {
         float u = (-dx * std::sin(s.angle) + dy * std::cos(s.angle)) / s.size + 0.5f;
         bool inside = needles ? insideNeedle(u, v, 0.03f)
                               : (v >= 0.0f && v <= 1.0f && std::abs(u - 0.5f) < bladeHalfWidth(v));
-        if (inside) c = leafColorAt(look, u, v) * glm::vec4(glm::vec3(0.8f + 0.2f * s.size / 0.45f), 1.0f);
+        if (inside) c = leafColorAt(look, u, v) * glm::vec4(glm::vec3(0.75f + s.size), 1.0f);
       }
       image.set(x, y, c);
     }
@@ -180,7 +185,7 @@ Material makeMaterial(MaterialKind kind, const Species& species) {
       break;
     case MaterialKind::LeafCluster:
       m.texture = makeLeafClusterTexture(look, species.strand.leafDistribution == LeafDistribution::Coniferous ||
-                                                   look.leafShape == LeafShape::NeedleTuft);
+                                                   look.leafShape == LeafShape::NeedleTuft);  // as clustersOfNeedles()
       m.alphaMask = m.doubleSided = true;
       m.roughness = 0.7f;
       break;

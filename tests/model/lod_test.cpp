@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "model/strand_model.hpp"
+#include "model/textures.hpp"
 #include "model/tree_export.hpp"
 #include "model/tree_mesher.hpp"
 #include "test_support.hpp"
@@ -24,24 +25,35 @@ TEST(Lod, EachLevelIsCheaper) {
   }
 }
 
-TEST(Lod, Lod1KeepsTheLeafArea) {
-  Species beech = test::loadNamed("beech");
-  TreeSkeleton tree = buildStrandTree(beech, {});
-  double leafArea = 0.0;
-  for (const Leaf& leaf : tree.leaves) leafArea += leaf.size_m * leaf.size_m * leafCardAspect(LeafShape::Broadleaf);
-  TreeMesh lod1 = buildLod(tree, beech, 1);
-  const MeshPart* clusters = lod1.find(MaterialKind::LeafCluster);
-  ASSERT_NE(clusters, nullptr);
-  EXPECT_EQ(lod1.find(MaterialKind::Leaf), nullptr);
-  double cardArea = 0.0;
-  for (std::size_t t = 0; t < clusters->indices.size(); t += 3) {
-    glm::vec3 a = clusters->positions[clusters->indices[t]], b = clusters->positions[clusters->indices[t + 1]];
-    glm::vec3 c = clusters->positions[clusters->indices[t + 2]];
-    cardArea += 0.5 * glm::length(glm::cross(b - a, c - a));
+TEST(Lod, Lod1KeepsTheVisibleLeafArea) {
+  for (const char* name : {"beech", "pine"}) {
+    Species species = test::loadNamed(name);
+    TreeSkeleton tree = buildStrandTree(species, {});
+    double visible = 0.0;
+    for (const Leaf& leaf : tree.leaves) visible += visibleLeafArea(species, leaf.size_m);
+    TreeMesh lod1 = buildLod(tree, species, 1);
+    const MeshPart* clusters = lod1.find(MaterialKind::LeafCluster);
+    ASSERT_NE(clusters, nullptr);
+    EXPECT_EQ(lod1.find(MaterialKind::Leaf), nullptr);
+    double cardArea = 0.0;
+    for (std::size_t t = 0; t < clusters->indices.size(); t += 3) {
+      glm::vec3 a = clusters->positions[clusters->indices[t]], b = clusters->positions[clusters->indices[t + 1]];
+      glm::vec3 c = clusters->positions[clusters->indices[t + 2]];
+      cardArea += 0.5 * glm::length(glm::cross(b - a, c - a));
+    }
+    double coverage = clustersOfNeedles(species) ? kNeedleClusterCoverage : kLeafClusterCoverage;
+    EXPECT_NEAR(cardArea * coverage, visible, 0.02 * visible) << name;
+    EXPECT_LT(clusters->triangleCount(), tree.leaves.size() / 2) << name;
   }
-  // Each card shows leaves over kClusterCoverage of its area.
-  EXPECT_NEAR(cardArea * kClusterCoverage, leafArea, 0.02 * leafArea);
-  EXPECT_LT(clusters->triangleCount(), 2 * tree.leaves.size() / 5);
+}
+
+TEST(Lod, VisibleLeafAreaFollowsTheTexture) {
+  Species beech = test::loadNamed("beech");
+  EXPECT_NEAR(visibleLeafArea(beech, 0.2f), 0.04 * 0.6 * kBroadleafCoverage, 1e-6);
+  Species pine = test::loadNamed("pine");
+  EXPECT_NEAR(visibleLeafArea(pine, 0.2f), 0.04 * 0.9 * kNeedleTuftCoverage, 1e-6);
+  pine.strand.leafDistribution = LeafDistribution::Coniferous;
+  EXPECT_NEAR(visibleLeafArea(pine, 0.2f), 2 * 0.04 * kNeedleAspect * kNeedleCoverage, 1e-6);
 }
 
 TEST(Lod, Lod2KeepsTheSilhouette) {

@@ -40,26 +40,26 @@ TEST(Textures, LeafIsCutOutAroundTheBlade) {
   EXPECT_GT(mean.g, mean.b);
 }
 
-TEST(Textures, NeedleAndClusterTexturesHaveCoverage) {
-  Appearance look = test::loadNamed("pine").appearance;
-  for (const Image& image : {makeNeedleTexture(look), makeLeafTexture(look), makeLeafClusterTexture(look, true),
-                             makeLeafClusterTexture(test::loadNamed("beech").appearance, false)}) {
-    int opaque = 0;
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x) opaque += image.get(x, y).a > 0.5f ? 1 : 0;
-    double coverage = static_cast<double>(opaque) / (image.width * image.height);
-    EXPECT_GT(coverage, 0.03);
-    EXPECT_LT(coverage, 0.9);
-  }
+namespace {
+
+double coverageOf(const Image& image) {
+  int opaque = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) opaque += image.get(x, y).a >= 0.5f ? 1 : 0;
+  return static_cast<double>(opaque) / (image.width * image.height);
 }
 
-TEST(Textures, ClusterTextureCoverageMatchesTheLodAssumption) {
-  Image cluster = makeLeafClusterTexture(test::loadNamed("beech").appearance, false);
-  int opaque = 0;
-  for (int y = 0; y < cluster.height; ++y)
-    for (int x = 0; x < cluster.width; ++x) opaque += cluster.get(x, y).a > 0.5f ? 1 : 0;
-  // lod.hpp's kClusterCoverage = 0.5 sizes the cluster cards; keep the texture near it.
-  EXPECT_NEAR(static_cast<double>(opaque) / (cluster.width * cluster.height), 0.5, 0.2);
+}  // namespace
+
+TEST(Textures, CoverageConstantsMatchTheImages) {
+  // LOD1 keeps the visible leaf area with these constants; they must describe the images.
+  Appearance broad = test::loadNamed("beech").appearance;
+  Appearance tuft = test::loadNamed("pine").appearance;
+  EXPECT_NEAR(coverageOf(makeLeafTexture(broad)), kBroadleafCoverage, 0.01);
+  EXPECT_NEAR(coverageOf(makeLeafTexture(tuft)), kNeedleTuftCoverage, 0.01);
+  EXPECT_NEAR(coverageOf(makeNeedleTexture(tuft)), kNeedleCoverage, 0.01);
+  EXPECT_NEAR(coverageOf(makeLeafClusterTexture(broad, false)), kLeafClusterCoverage, 0.01);
+  EXPECT_NEAR(coverageOf(makeLeafClusterTexture(tuft, true)), kNeedleClusterCoverage, 0.01);
 }
 
 TEST(Textures, MaterialsPerKind) {

@@ -22,7 +22,8 @@ void skeleton(benchmark::State& state, const char* name) {
     segments = tree.segments.size();
     benchmark::DoNotOptimize(tree);
   }
-  state.counters["segments/s"] = benchmark::Counter(static_cast<double>(segments), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["segments/s"] = benchmark::Counter(static_cast<double>(segments),
+                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void lod0Mesh(benchmark::State& state, const char* name) {
@@ -34,7 +35,8 @@ void lod0Mesh(benchmark::State& state, const char* name) {
     triangles = mesh.triangleCount();
     benchmark::DoNotOptimize(mesh);
   }
-  state.counters["triangles/s"] = benchmark::Counter(static_cast<double>(triangles), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["triangles/s"] = benchmark::Counter(static_cast<double>(triangles),
+                                                     benchmark::Counter::kIsIterationInvariantRate);
   state.counters["triangles"] = static_cast<double>(triangles);
 }
 
@@ -66,7 +68,8 @@ void skeletonAndLod0Reused(benchmark::State& state, const char* name) {
 void lodMesh(benchmark::State& state, const char* name) {
   const eco::Species& s = species(name);
   eco::TreeSkeleton tree = eco::buildStrandTree(s, {});
-  for (auto _ : state) benchmark::DoNotOptimize(eco::buildLod(tree, s, static_cast<int>(state.range(0))));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(eco::buildLod(tree, s, static_cast<int>(state.range(0))));
 }
 
 }  // namespace

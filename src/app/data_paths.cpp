@@ -9,7 +9,8 @@
 namespace eco {
 
 std::filesystem::path dataDirectory() {
-  if (const char* fromEnvironment = std::getenv("ECOFOREST_DATA_DIR"); fromEnvironment && *fromEnvironment)
+  if (const char* fromEnvironment = std::getenv("ECOFOREST_DATA_DIR");
+      fromEnvironment && *fromEnvironment)
     return fromEnvironment;
   return ECOFOREST_DATA_DIR;
 }

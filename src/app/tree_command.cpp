@@ -26,6 +26,7 @@ struct TreeArguments {
   std::optional<double> windDirected;
   std::optional<double> windUndirected;
   std::optional<double> windFrom_deg;
+  int sides = kDefaultMaxSides;
 };
 
 void runTree(const TreeArguments& args) {
@@ -42,7 +43,7 @@ void runTree(const TreeArguments& args) {
 
   auto start = Clock::now();
   TreeSkeleton skeleton = buildStrandTree(species, options);
-  TreeMesh mesh = buildLod(skeleton, species, lod);
+  TreeMesh mesh = buildLod(skeleton, species, lod, args.sides);
   double buildMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 
   if (!args.out.empty()) exportTree(mesh, species, args.out);
@@ -52,7 +53,8 @@ void runTree(const TreeArguments& args) {
     nlohmann::ordered_json triangles;
     for (int level = 0; level < kLodCount; ++level)
       triangles["lod" + std::to_string(level)] =
-          level == lod ? mesh.triangleCount() : buildLod(skeleton, species, level).triangleCount();
+          level == lod ? mesh.triangleCount()
+                       : buildLod(skeleton, species, level, args.sides).triangleCount();
     nlohmann::ordered_json json{{"species", species.name},
                                 {"seed", args.seed},
                                 {"age", args.age},
@@ -69,9 +71,10 @@ void runTree(const TreeArguments& args) {
                                 {"build_ms", buildMs}};
     std::cout << json.dump(2) << "\n";
   } else if (args.out.empty()) {
-    std::cout << species.name << " (seed " << args.seed << ", age " << args.age << "): " << m.segments
-              << " segments, " << skeleton.leaves.size() << " leaves, " << m.height_m << " m tall, "
-              << mesh.triangleCount() << " triangles at LOD" << lod << "\n";
+    std::cout << species.name << " (seed " << args.seed << ", age " << args.age
+              << "): " << m.segments << " segments, " << skeleton.leaves.size() << " leaves, "
+              << m.height_m << " m tall, " << mesh.triangleCount() << " triangles at LOD" << lod
+              << "\n";
   }
 }
 
@@ -79,22 +82,31 @@ void runTree(const TreeArguments& args) {
 
 void addTreeCommand(CLI::App& app) {
   auto args = std::make_shared<TreeArguments>();
-  CLI::App* tree = app.add_subcommand("tree", "Build one tree of a species, print its measures, export it");
-  tree->add_option("species", args->species, "Species name (beech, pine, maple, shrub) or path to a species .toml")
+  CLI::App* tree =
+      app.add_subcommand("tree", "Build one tree of a species, print its measures, export it");
+  tree->add_option("species", args->species,
+                   "Species name (beech, pine, maple, shrub) or path to a species .toml")
       ->required();
   tree->add_option("--seed", args->seed, "Individual: the same seed always gives the same tree")
       ->capture_default_str();
   tree->add_option("--age", args->age, "Age from 0 (seedling) to 1 (mature)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  tree->add_option("--time", args->time, "Wind time t of the sway oscillation, radians")->capture_default_str();
-  tree->add_option("--lod", args->lod, "Level of detail: 0 full, 1 reduced, 2 crown proxy (default: species l_LOD)")
+  tree->add_option("--time", args->time, "Wind time t of the sway oscillation, radians")
+      ->capture_default_str();
+  tree->add_option("--lod", args->lod,
+                   "Level of detail: 0 full, 1 reduced, 2 crown proxy (default: species l_LOD)")
       ->check(CLI::Range(0, kLodCount - 1));
   tree->add_option("--out", args->out, "Write the mesh: .obj (+.mtl), .gltf, .glb, .pov or .wrl");
+  tree->add_option("--sides", args->sides,
+                   "Ring sides of the stem's tube (thinner branches get fewer, at least 3)")
+      ->check(CLI::Range(3, 64))
+      ->capture_default_str();
   tree->add_flag("--stats", args->stats, "Print measures and timings as one JSON object");
   tree->add_option("--wind-directed", args->windDirected, "Override w_g, directed wind (0-10)")
       ->check(CLI::Range(0.0, 10.0));
-  tree->add_option("--wind-undirected", args->windUndirected, "Override w_s, undirected wind (0-10)")
+  tree->add_option("--wind-undirected", args->windUndirected,
+                   "Override w_s, undirected wind (0-10)")
       ->check(CLI::Range(0.0, 10.0));
   tree->add_option("--wind-from", args->windFrom_deg,
                    "Horizontal directed wind from this compass bearing, degrees (0 north, 90 east)")

@@ -1,7 +1,7 @@
 #include "core/atomic_file.hpp"
 
-#include <atomic>
 #include <unistd.h>
+#include <atomic>
 
 #include "core/error.hpp"
 
@@ -54,7 +54,8 @@ void AtomicFile::commit() {
   if (!ok) throw InputError({target_.string(), 0, ""}, "writing failed (disk full?)");
   std::error_code error;
   std::filesystem::rename(temporary_, target_, error);
-  if (error) throw InputError({target_.string(), 0, ""}, "cannot rename into place: " + error.message());
+  if (error)
+    throw InputError({target_.string(), 0, ""}, "cannot rename into place: " + error.message());
   done_ = true;
 }
 

@@ -3,11 +3,11 @@
 // removes its temporary, so a failed or interrupted export leaves nothing half-written.
 #pragma once
 
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <span>
 #include <string_view>
-#include <deque>
 
 namespace eco {
 

@@ -16,7 +16,8 @@ class DefaultInitAllocator : public Base {
  public:
   template <typename U>
   struct rebind {
-    using other = DefaultInitAllocator<U, typename std::allocator_traits<Base>::template rebind_alloc<U>>;
+    using other =
+        DefaultInitAllocator<U, typename std::allocator_traits<Base>::template rebind_alloc<U>>;
   };
   using Base::Base;
 
@@ -27,7 +28,8 @@ class DefaultInitAllocator : public Base {
   }
   template <typename U, typename... Args>
   void construct(U* place, Args&&... args) {
-    std::allocator_traits<Base>::construct(static_cast<Base&>(*this), place, std::forward<Args>(args)...);
+    std::allocator_traits<Base>::construct(static_cast<Base&>(*this), place,
+                                           std::forward<Args>(args)...);
   }
 };
 

@@ -40,11 +40,11 @@ class InternalError : public std::logic_error {
 }  // namespace eco
 
 // ECO_ASSERT(condition, streamed detail): ECO_ASSERT(s1 < s0, "s0=" << s0 << " s1=" << s1);
-#define ECO_ASSERT(condition, detail)                                                    \
-  do {                                                                                   \
-    if (!(condition)) {                                                                  \
-      std::ostringstream ecoAssertDetail_;                                               \
-      ecoAssertDetail_ << detail;                                                        \
+#define ECO_ASSERT(condition, detail)                                                           \
+  do {                                                                                          \
+    if (!(condition)) {                                                                         \
+      std::ostringstream ecoAssertDetail_;                                                      \
+      ecoAssertDetail_ << detail;                                                               \
       ::eco::assertionFailed(#condition, __func__, __FILE__, __LINE__, ecoAssertDetail_.str()); \
-    }                                                                                    \
+    }                                                                                           \
   } while (false)

@@ -43,7 +43,8 @@ std::vector<std::uint8_t> encodePng(const Image& image) {
   };
   int ok = stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.rgba.data(),
                                   image.width * 4);
-  ECO_ASSERT(ok != 0, "PNG encoding failed for a " << image.width << "x" << image.height << " image");
+  ECO_ASSERT(ok != 0,
+             "PNG encoding failed for a " << image.width << "x" << image.height << " image");
   return bytes;
 }
 

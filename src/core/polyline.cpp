@@ -9,9 +9,9 @@ namespace eco {
 Polyline::Polyline(std::vector<ControlPoint> points) : points_(std::move(points)) {
   ECO_ASSERT(!points_.empty(), "a polyline needs at least one control point");
   for (std::size_t i = 1; i < points_.size(); ++i)
-    ECO_ASSERT(points_[i].x >= points_[i - 1].x,
-               "abscissae must not decrease: x[" << i - 1 << "]=" << points_[i - 1].x << " x[" << i
-                                                 << "]=" << points_[i].x);
+    ECO_ASSERT(points_[i].x >= points_[i - 1].x, "abscissae must not decrease: x["
+                                                     << i - 1 << "]=" << points_[i - 1].x << " x["
+                                                     << i << "]=" << points_[i].x);
 }
 
 double Polyline::operator()(double x) const {

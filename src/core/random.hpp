@@ -26,10 +26,13 @@ constexpr std::uint64_t purpose(std::string_view name) {
 }
 
 // Combine any number of ids into one stream key.
-constexpr std::uint64_t streamKey(std::uint64_t first) { return mix64(first); }
+constexpr std::uint64_t streamKey(std::uint64_t first) {
+  return mix64(first);
+}
 template <typename... Rest>
 constexpr std::uint64_t streamKey(std::uint64_t first, std::uint64_t second, Rest... rest) {
-  return streamKey(mix64(first) ^ (second + 0x632be59bd9b4e019ULL), static_cast<std::uint64_t>(rest)...);
+  return streamKey(mix64(first) ^ (second + 0x632be59bd9b4e019ULL),
+                   static_cast<std::uint64_t>(rest)...);
 }
 
 class Rng {

@@ -6,7 +6,9 @@
 namespace eco {
 namespace {
 
-int lineOf(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
+int lineOf(const toml::node& node) {
+  return static_cast<int>(node.source().begin.line);
+}
 
 std::string formatNumber(double value) {
   std::ostringstream text;
@@ -54,9 +56,9 @@ double TomlTable::number(std::string_view key, std::optional<double> fallback, R
     return *fallback;
   }
   const toml::node& node = require(key);
-  std::optional<double> value = node.is_integer() ? std::optional<double>(
-                                                        static_cast<double>(*node.value<std::int64_t>()))
-                                                  : node.value_exact<double>();
+  std::optional<double> value =
+      node.is_integer() ? std::optional<double>(static_cast<double>(*node.value<std::int64_t>()))
+                        : node.value_exact<double>();
   if (!value) fail(key, "expected a number");
   checkRange(key, *value, range);
   return *value;
@@ -107,7 +109,8 @@ std::vector<double> TomlTable::numbers(std::string_view key, std::size_t count,
     fail(key, "expected an array of " + std::to_string(count) + " numbers");
   std::vector<double> values;
   for (const toml::node& element : *array) {
-    if (!element.is_number()) fail(key, "expected an array of " + std::to_string(count) + " numbers");
+    if (!element.is_number())
+      fail(key, "expected an array of " + std::to_string(count) + " numbers");
     double value = element.is_integer() ? static_cast<double>(*element.value<std::int64_t>())
                                         : *element.value<double>();
     checkRange(key, value, range);

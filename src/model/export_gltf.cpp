@@ -41,7 +41,8 @@ class GltfBuilder {
   }
 
   template <typename T>
-  int addAccessor(const Buffer<T>& values, int componentType, int type, int target, bool withBounds) {
+  int addAccessor(const Buffer<T>& values, int componentType, int type, int target,
+                  bool withBounds) {
     tinygltf::Accessor accessor;
     accessor.bufferView = addView(values.data(), values.size() * sizeof(T), target);
     accessor.componentType = componentType;
@@ -65,7 +66,8 @@ class GltfBuilder {
   int addMaterial(const Material& m) {
     tinygltf::Material material;
     material.name = m.name;
-    material.pbrMetallicRoughness.baseColorFactor = {m.baseColor.r, m.baseColor.g, m.baseColor.b, m.baseColor.a};
+    material.pbrMetallicRoughness.baseColorFactor = {m.baseColor.r, m.baseColor.g, m.baseColor.b,
+                                                     m.baseColor.a};
     material.pbrMetallicRoughness.metallicFactor = 0.0;
     material.pbrMetallicRoughness.roughnessFactor = m.roughness;
     material.doubleSided = m.doubleSided;
@@ -73,7 +75,9 @@ class GltfBuilder {
       material.alphaMode = "MASK";
       material.alphaCutoff = 0.5;
     }
-    if (m.texture) material.pbrMetallicRoughness.baseColorTexture.index = addTexture(*m.texture, m.repeat, m.name);
+    if (m.texture)
+      material.pbrMetallicRoughness.baseColorTexture.index =
+          addTexture(*m.texture, m.repeat, m.name);
     model_.materials.push_back(material);
     return static_cast<int>(model_.materials.size() - 1);
   }
@@ -82,14 +86,18 @@ class GltfBuilder {
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.material = material;
-    primitive.attributes["POSITION"] = addAccessor(part.positions, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                   TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    primitive.attributes["NORMAL"] = addAccessor(part.normals, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                 TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
-    primitive.attributes["TEXCOORD_0"] = addAccessor(part.uvs, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                     TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, false);
-    primitive.indices = addAccessor(part.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                                    TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, false);
+    primitive.attributes["POSITION"] =
+        addAccessor(part.positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
+                    TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    primitive.attributes["NORMAL"] =
+        addAccessor(part.normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
+                    TINYGLTF_TARGET_ARRAY_BUFFER, false);
+    primitive.attributes["TEXCOORD_0"] =
+        addAccessor(part.uvs, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2,
+                    TINYGLTF_TARGET_ARRAY_BUFFER, false);
+    primitive.indices =
+        addAccessor(part.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                    TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, false);
     mesh_.primitives.push_back(primitive);
   }
 
@@ -134,7 +142,8 @@ class GltfBuilder {
 
 }  // namespace
 
-void writeGltf(const TreeMesh& mesh, const std::vector<Material>& materials, const std::filesystem::path& file) {
+void writeGltf(const TreeMesh& mesh, const std::vector<Material>& materials,
+               const std::filesystem::path& file) {
   GltfBuilder builder;
   for (std::size_t p = 0; p < mesh.parts.size(); ++p)
     builder.addPrimitive(mesh.parts[p], builder.addMaterial(materials[p]));

@@ -7,7 +7,8 @@
 
 namespace eco {
 
-void writeObj(const TreeMesh& mesh, const std::vector<Material>& materials, const std::filesystem::path& file) {
+void writeObj(const TreeMesh& mesh, const std::vector<Material>& materials,
+              const std::filesystem::path& file) {
   AtomicFileSet files;
   std::filesystem::path mtlPath = file;
   mtlPath.replace_extension(".mtl");
@@ -22,11 +23,14 @@ void writeObj(const TreeMesh& mesh, const std::vector<Material>& materials, cons
     const Material& material = materials[p];
     text.clear();
     text += fmt::format("o {}\nusemtl {}\n", material.name, material.name);
-    for (glm::vec3 v : part.positions) text += fmt::format("v {:.5f} {:.5f} {:.5f}\n", v.x, v.y, v.z);
-    for (glm::vec3 n : part.normals) text += fmt::format("vn {:.4f} {:.4f} {:.4f}\n", n.x, n.y, n.z);
+    for (glm::vec3 v : part.positions)
+      text += fmt::format("v {:.5f} {:.5f} {:.5f}\n", v.x, v.y, v.z);
+    for (glm::vec3 n : part.normals)
+      text += fmt::format("vn {:.4f} {:.4f} {:.4f}\n", n.x, n.y, n.z);
     for (glm::vec2 t : part.uvs) text += fmt::format("vt {:.4f} {:.4f}\n", t.x, 1.0f - t.y);
     for (std::size_t i = 0; i < part.indices.size(); i += 3) {
-      std::size_t a = part.indices[i] + base, b = part.indices[i + 1] + base, c = part.indices[i + 2] + base;
+      std::size_t a = part.indices[i] + base, b = part.indices[i + 1] + base,
+                  c = part.indices[i + 2] + base;
       text += fmt::format("f {0}/{0}/{0} {1}/{1}/{1} {2}/{2}/{2}\n", a, b, c);
     }
     obj.write(text);

@@ -63,13 +63,14 @@ LeafPattern makeLeafPattern(LeafDistribution distribution, int count, double phy
   return pattern;
 }
 
-void placeLeaves(const BranchSegment& twig, std::int32_t twigIndex, const LeafPattern& pattern, float size_m,
-                 Rng& rng, std::vector<Leaf>& out) {
+void placeLeaves(const BranchSegment& twig, std::int32_t twigIndex, const LeafPattern& pattern,
+                 float size_m, Rng& rng, std::vector<Leaf>& out) {
   const glm::vec3 axis = twig.frame[1];
   const glm::vec3 side = twig.frame[0];
   const glm::vec3 front = twig.frame[2];
   const glm::vec3 up(0.0f, 1.0f, 0.0f);
-  const LeafKind kind = pattern.distribution == LeafDistribution::Coniferous ? LeafKind::Needle : LeafKind::Card;
+  const LeafKind kind =
+      pattern.distribution == LeafDistribution::Coniferous ? LeafKind::Needle : LeafKind::Card;
   for (const LeafPattern::Slot& slot : pattern.slots) {
     // Turn the slot's azimuth and elevation by the jitter: cos(a + d) = cos a cos d - sin a sin d.
     float cd, sd, ce, se;

@@ -15,9 +15,11 @@
 namespace eco {
 namespace {
 
-MeshOptions lod0Options(const Species& species) {
+MeshOptions lod0Options(const Species& species, int maxSides) {
   MeshOptions options;
   options.leafShape = species.appearance.leafShape;
+  options.maxSides = maxSides;
+  options.minSides = std::min(options.minSides, maxSides);
   return options;
 }
 
@@ -49,7 +51,8 @@ void clusterLeaves(const TreeSkeleton& skeleton, const Species& species, MeshPar
   for (std::int32_t branch : order) {  // first-seen order keeps the output deterministic
     const Cluster& c = byBranch[branch];
     glm::vec3 center = c.centroid / static_cast<float>(c.count);
-    glm::vec3 normal = glm::length(c.normal) > 1e-4f ? glm::normalize(c.normal) : glm::vec3(0, 1, 0);
+    glm::vec3 normal =
+        glm::length(c.normal) > 1e-4f ? glm::normalize(c.normal) : glm::vec3(0, 1, 0);
     glm::vec3 along = c.direction - glm::dot(c.direction, normal) * normal;
     if (glm::length(along) < 1e-4f) along = glm::cross(normal, glm::vec3(1, 0, 0));
     if (glm::length(along) < 1e-4f) along = glm::vec3(0, 0, 1);
@@ -85,7 +88,7 @@ float crownHull(const TreeSkeleton& skeleton, MeshPart& crown) {
     float polar = std::acos(std::clamp(d.y, -1.0f, 1.0f));  // 0 at the top
     float azimuth = std::atan2(d.z, d.x) + std::numbers::pi_v<float>;
     int i = std::clamp(static_cast<int>(polar / std::numbers::pi_v<float> * kLat), 0, kLat - 1);
-    int j = static_cast<int>(azimuth / (2.0f * std::numbers::pi_v<float>) * kLon) % kLon;
+    int j = static_cast<int>(azimuth / (2.0f * std::numbers::pi_v<float>)*kLon) % kLon;
     return std::pair{i, j};
   };
   std::vector<float> reach(kLat * kLon, 0.0f);
@@ -109,18 +112,25 @@ float crownHull(const TreeSkeleton& skeleton, MeshPart& crown) {
   // Vertex (i, j) sits between latitude cells: it takes the largest reach among the cells
   // that touch it (so the leaves stay inside), averaged half-and-half with its ring
   // neighbours' to soften single spikes.
-  auto cellReach = [&](int i, int j) { return reach[std::clamp(i, 0, kLat - 1) * kLon + ((j % kLon) + kLon) % kLon]; };
+  auto cellReach = [&](int i, int j) {
+    return reach[std::clamp(i, 0, kLat - 1) * kLon + ((j % kLon) + kLon) % kLon];
+  };
   auto vertexReach = [&](int i, int j) {
-    return std::max({cellReach(i - 1, j - 1), cellReach(i - 1, j), cellReach(i, j - 1), cellReach(i, j)});
+    return std::max(
+        {cellReach(i - 1, j - 1), cellReach(i - 1, j), cellReach(i, j - 1), cellReach(i, j)});
   };
   // Welded vertex id: the seam column j = kLon is j = 0, and each pole is one point.
-  auto weldedId = [](int i, int j) { return i == 0 ? 0 : i == kLat ? 1 + (kLat - 1) * kLon : 1 + (i - 1) * kLon + j % kLon; };
+  auto weldedId = [](int i, int j) {
+    return i == 0 ? 0 : i == kLat ? 1 + (kLat - 1) * kLon : 1 + (i - 1) * kLon + j % kLon;
+  };
   std::vector<glm::vec3> hull(2 + (kLat - 1) * kLon);
   for (int i = 0; i <= kLat; ++i) {
     float polar = std::numbers::pi_v<float> * static_cast<float>(i) / kLat;
     for (int j = 0; j < kLon; ++j) {
-      float azimuth = 2.0f * std::numbers::pi_v<float> * static_cast<float>(j) / kLon - std::numbers::pi_v<float>;
-      glm::vec3 d(std::sin(polar) * std::cos(azimuth), std::cos(polar), std::sin(polar) * std::sin(azimuth));
+      float azimuth = 2.0f * std::numbers::pi_v<float> * static_cast<float>(j) / kLon -
+                      std::numbers::pi_v<float>;
+      glm::vec3 d(std::sin(polar) * std::cos(azimuth), std::cos(polar),
+                  std::sin(polar) * std::sin(azimuth));
       float r = 0.5f * vertexReach(i, j) + 0.25f * (vertexReach(i, j - 1) + vertexReach(i, j + 1));
       hull[weldedId(i, j)] = center + d * r;
     }
@@ -129,7 +139,8 @@ float crownHull(const TreeSkeleton& skeleton, MeshPart& crown) {
   std::vector<std::array<int, 3>> triangles;
   for (int i = 0; i < kLat; ++i)
     for (int j = 0; j < kLon; ++j) {
-      int a = weldedId(i, j), b = weldedId(i, j + 1), c = weldedId(i + 1, j + 1), d = weldedId(i + 1, j);
+      int a = weldedId(i, j), b = weldedId(i, j + 1), c = weldedId(i + 1, j + 1),
+          d = weldedId(i + 1, j);
       if (i > 0) triangles.push_back({a, b, d});
       if (i < kLat - 1) triangles.push_back({b, c, d});
     }
@@ -141,10 +152,12 @@ float crownHull(const TreeSkeleton& skeleton, MeshPart& crown) {
   }
   std::vector<std::uint32_t> vertex(hull.size());
   for (std::size_t v = 0; v < hull.size(); ++v) {
-    glm::vec3 n = glm::length(normals[v]) > 0.0f ? glm::normalize(normals[v]) : glm::normalize(hull[v] - center);
+    glm::vec3 n = glm::length(normals[v]) > 0.0f ? glm::normalize(normals[v])
+                                                 : glm::normalize(hull[v] - center);
     glm::vec3 d = glm::normalize(hull[v] - center);
     // Spherical UVs; the crown material is untextured, so the seam does not matter.
-    glm::vec2 uv(0.5f + std::atan2(d.z, d.x) / (2.0f * std::numbers::pi_v<float>), std::acos(std::clamp(d.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>);
+    glm::vec2 uv(0.5f + std::atan2(d.z, d.x) / (2.0f * std::numbers::pi_v<float>),
+                 std::acos(std::clamp(d.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>);
     vertex[v] = crown.addVertex(hull[v], n, uv);
   }
   for (const auto& t : triangles) crown.addTriangle(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
@@ -161,7 +174,8 @@ void stemProxy(const TreeSkeleton& skeleton, float top_m, MeshPart& bark) {
     glm::vec3 out(std::cos(a), 0.0f, -std::sin(a));
     float u = static_cast<float>(j) / kSides;
     bark.addVertex(out * radius, out, {u, 0.0f});
-    bark.addVertex(out * (0.7f * radius) + glm::vec3(0, top_m, 0), out, {u, top_m / (2.0f * std::numbers::pi_v<float> * radius)});
+    bark.addVertex(out * (0.7f * radius) + glm::vec3(0, top_m, 0), out,
+                   {u, top_m / (2.0f * std::numbers::pi_v<float> * radius)});
   }
   for (std::uint32_t j = 0; j < kSides; ++j) {
     std::uint32_t a = 2 * j, b = 2 * j + 2, c = 2 * j + 3, d = 2 * j + 1;
@@ -185,21 +199,22 @@ float visibleLeafArea(const Species& species, float size_m) {
          (tuft ? kNeedleTuftCoverage : kBroadleafCoverage);
 }
 
-TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod) {
+TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod, int maxSides) {
   TreeMesh mesh;
-  buildLodInto(skeleton, species, lod, mesh);
+  buildLodInto(skeleton, species, lod, mesh, maxSides);
   return mesh;
 }
 
-void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod, TreeMesh& mesh) {
+void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod, TreeMesh& mesh,
+                  int maxSides) {
   ECO_ASSERT(lod >= 0 && lod < kLodCount, "lod=" << lod);
+  ECO_ASSERT(maxSides >= 3, "maxSides=" << maxSides);
   if (lod == 0) {
-    meshTreeInto(skeleton, lod0Options(species), mesh);
+    meshTreeInto(skeleton, lod0Options(species, maxSides), mesh);
     return;
   }
   if (lod == 1) {
-    MeshOptions options = lod0Options(species);
-    options.maxSides = 5;
+    MeshOptions options = lod0Options(species, std::min(5, maxSides));
     options.minStrands = kLod1MinStrands;
     options.leaves = false;
     mesh = meshTree(skeleton, options);

@@ -22,8 +22,13 @@ bool clustersOfNeedles(const Species& species);
 // Visible (opaque) area of one LOD0 leaf of the species, m^2.
 float visibleLeafArea(const Species& species, float size_m);
 
-TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod);
+// maxSides: ring sides of the stem at LOD0 (LOD1 uses at most 5, never more than this).
+inline constexpr int kDefaultMaxSides = 8;
+
+TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod,
+                  int maxSides = kDefaultMaxSides);
 // The same into a mesh the caller owns (LOD0 reuses its capacity).
-void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod, TreeMesh& out);
+void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod, TreeMesh& out,
+                  int maxSides = kDefaultMaxSides);
 
 }  // namespace eco

@@ -4,11 +4,16 @@ namespace eco {
 
 const char* toString(MaterialKind kind) {
   switch (kind) {
-    case MaterialKind::Bark: return "bark";
-    case MaterialKind::Leaf: return "leaf";
-    case MaterialKind::Needle: return "needle";
-    case MaterialKind::LeafCluster: return "leaf_cluster";
-    case MaterialKind::Crown: return "crown";
+    case MaterialKind::Bark:
+      return "bark";
+    case MaterialKind::Leaf:
+      return "leaf";
+    case MaterialKind::Needle:
+      return "needle";
+    case MaterialKind::LeafCluster:
+      return "leaf_cluster";
+    case MaterialKind::Crown:
+      return "crown";
   }
   return "?";
 }

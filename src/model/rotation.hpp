@@ -10,7 +10,9 @@
 
 namespace eco {
 
-inline double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+inline double radians(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
 
 inline glm::mat3 rotationX(double degrees) {
   float c = static_cast<float>(std::cos(radians(degrees)));
@@ -36,9 +38,11 @@ inline glm::mat3 rotationAbout(glm::vec3 axis, double degrees) {
   float s = static_cast<float>(std::sin(radians(degrees)));
   float t = 1.0f - c;
   float x = axis.x, y = axis.y, z = axis.z;
-  return glm::mat3(t * x * x + c, t * x * y + s * z, t * x * z - s * y,
-                   t * x * y - s * z, t * y * y + c, t * y * z + s * x,
+  // clang-format off (one column per line)
+  return glm::mat3(t * x * x + c,     t * x * y + s * z, t * x * z - s * y,
+                   t * x * y - s * z, t * y * y + c,     t * y * z + s * x,
                    t * x * z + s * y, t * y * z - s * x, t * z * z + c);
+  // clang-format on
 }
 
 }  // namespace eco

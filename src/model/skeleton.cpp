@@ -10,7 +10,8 @@ SkeletonMeasures measure(const TreeSkeleton& skeleton) {
   m.segments = skeleton.segments.size();
   auto extend = [&m](glm::vec3 p) {
     m.height_m = std::max(m.height_m, static_cast<double>(p.y));
-    m.crownRadius_m = std::max(m.crownRadius_m, std::hypot(static_cast<double>(p.x), static_cast<double>(p.z)));
+    m.crownRadius_m =
+        std::max(m.crownRadius_m, std::hypot(static_cast<double>(p.x), static_cast<double>(p.z)));
   };
   for (const BranchSegment& s : skeleton.segments) {
     if (s.isTerminal()) ++m.terminalSegments;

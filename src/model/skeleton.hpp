@@ -12,12 +12,12 @@
 namespace eco {
 
 struct BranchSegment {
-  glm::vec3 start{0.0f};     // world position of the segment's base
-  glm::mat3 frame{1.0f};     // worldFromBranch rotation; column 1 (y) is the branch axis
+  glm::vec3 start{0.0f};  // world position of the segment's base
+  glm::mat3 frame{1.0f};  // worldFromBranch rotation; column 1 (y) is the branch axis
   float length_m = 0.0f;
   float startRadius_m = 0.0f;
-  float endRadius_m = 0.0f;  // equals the start radius of the major child, so tubes join
-  std::int32_t parent = -1;  // index into segments; -1 for the base trunk
+  float endRadius_m = 0.0f;      // equals the start radius of the major child, so tubes join
+  std::int32_t parent = -1;      // index into segments; -1 for the base trunk
   bool continuesParent = false;  // the major sub-branch: same Gravelius order as the parent
   std::int16_t gravelius = 0;
   std::int16_t weibull = 0;
@@ -33,7 +33,7 @@ struct BranchSegment {
 enum class LeafKind : std::uint8_t { Card, Needle };
 
 struct Leaf {
-  glm::vec3 position{0.0f};  // where the petiole attaches
+  glm::vec3 position{0.0f};               // where the petiole attaches
   glm::vec3 direction{0.0f, 1.0f, 0.0f};  // unit, from the base toward the tip of the blade
   glm::vec3 normal{0.0f, 0.0f, 1.0f};     // unit, the side that faces the light
   float size_m = 0.0f;                    // blade length

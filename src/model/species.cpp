@@ -7,16 +7,17 @@ namespace {
 
 LeafDistribution parseDistribution(TomlTable& table, std::string_view key) {
   std::string name = table.string(key);
-  for (LeafDistribution d : {LeafDistribution::Spiral, LeafDistribution::Stacked,
-                             LeafDistribution::Staggered, LeafDistribution::Bunched,
-                             LeafDistribution::Coniferous})
+  for (LeafDistribution d :
+       {LeafDistribution::Spiral, LeafDistribution::Stacked, LeafDistribution::Staggered,
+        LeafDistribution::Bunched, LeafDistribution::Coniferous})
     if (name == toString(d)) return d;
   table.fail(key, "unknown leaf distribution '" + name +
                       "' (expected spiral, stacked, staggered, bunched or coniferous)");
 }
 
 glm::vec3 parseColor(TomlTable& table, std::string_view key, glm::vec3 fallback) {
-  auto c = table.numbers(key, 3, std::vector<double>{fallback.r, fallback.g, fallback.b}, {0.0, 1.0});
+  auto c =
+      table.numbers(key, 3, std::vector<double>{fallback.r, fallback.g, fallback.b}, {0.0, 1.0});
   return glm::vec3(c[0], c[1], c[2]);
 }
 
@@ -43,11 +44,16 @@ LocalGraphs parseGraphs(TomlTable& local) {
 
 const char* toString(LeafDistribution distribution) {
   switch (distribution) {
-    case LeafDistribution::Spiral: return "spiral";
-    case LeafDistribution::Stacked: return "stacked";
-    case LeafDistribution::Staggered: return "staggered";
-    case LeafDistribution::Bunched: return "bunched";
-    case LeafDistribution::Coniferous: return "coniferous";
+    case LeafDistribution::Spiral:
+      return "spiral";
+    case LeafDistribution::Stacked:
+      return "stacked";
+    case LeafDistribution::Staggered:
+      return "staggered";
+    case LeafDistribution::Bunched:
+      return "bunched";
+    case LeafDistribution::Coniferous:
+      return "coniferous";
   }
   return "?";
 }
@@ -96,9 +102,13 @@ Species loadSpecies(const std::filesystem::path& file) {
     a.barkColor = parseColor(*look, "bark_color", a.barkColor);
     a.leafColor = parseColor(*look, "leaf_color", a.leafColor);
     std::string shape = look->string("leaf_shape", "broadleaf");
-    if (shape == "broadleaf") a.leafShape = LeafShape::Broadleaf;
-    else if (shape == "needle_tuft") a.leafShape = LeafShape::NeedleTuft;
-    else look->fail("leaf_shape", "unknown leaf shape '" + shape + "' (expected broadleaf or needle_tuft)");
+    if (shape == "broadleaf")
+      a.leafShape = LeafShape::Broadleaf;
+    else if (shape == "needle_tuft")
+      a.leafShape = LeafShape::NeedleTuft;
+    else
+      look->fail("leaf_shape",
+                 "unknown leaf shape '" + shape + "' (expected broadleaf or needle_tuft)");
     a.barkRoughness = look->number("bark_roughness", a.barkRoughness, {0.0, 1.0});
     look->finish();
   }

@@ -31,13 +31,13 @@ struct LocalGraphs {
 
 // EcoMod's global parameters with the paper's symbols.
 struct StrandParams {
-  int strands = 1000;                 // S, total strands (= terminal segments)
-  double trunkLength_m = 5.0;         // l_0^{0,0} (the paper's L_0), length of the base trunk
-  double kd = 0.01;                   // thickness coefficient: diameter d = k_d sqrt(S_0), m
-  double phyllotaxis_deg = 85.0;      // alpha_p
-  double kc = 0.3;                    // gravicentrism k_c
-  double leafSize_m = 0.2;            // l_l
-  double leafDensity = 5.0;           // rho_l, leaves per terminal segment
+  int strands = 1000;             // S, total strands (= terminal segments)
+  double trunkLength_m = 5.0;     // l_0^{0,0} (the paper's L_0), length of the base trunk
+  double kd = 0.01;               // thickness coefficient: diameter d = k_d sqrt(S_0), m
+  double phyllotaxis_deg = 85.0;  // alpha_p
+  double kc = 0.3;                // gravicentrism k_c
+  double leafSize_m = 0.2;        // l_l
+  double leafDensity = 5.0;       // rho_l, leaves per terminal segment
   LeafDistribution leafDistribution = LeafDistribution::Spiral;  // l_type
   double windDirected = 0.0;          // w_g, degrees of tilt per unit strand fraction
   double windUndirected = 0.0;        // w_s, degrees of sway per metre of base branch
@@ -55,7 +55,7 @@ struct Variation {
 };
 
 struct Appearance {
-  glm::vec3 barkColor{0.45f, 0.43f, 0.40f};   // sRGB in [0, 1]
+  glm::vec3 barkColor{0.45f, 0.43f, 0.40f};  // sRGB in [0, 1]
   glm::vec3 leafColor{0.20f, 0.42f, 0.12f};
   LeafShape leafShape = LeafShape::Broadleaf;
   double barkRoughness = 0.5;  // 0 smooth (beech) .. 1 deeply furrowed (old pine)

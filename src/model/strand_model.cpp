@@ -28,8 +28,8 @@ struct Node {
   double branchAngle = 0.0;  // +alpha_1 (major) or -alpha_2 (minor), degrees, from the parent
   bool major = false;
   // Used for this node's own split:
-  double alphaM_deg = 0.0;        // alpha_m^{g,w}
-  double phyllotaxis_deg = 0.0;   // alpha_p with individual jitter
+  double alphaM_deg = 0.0;             // alpha_m^{g,w}
+  double phyllotaxis_deg = 0.0;        // alpha_p with individual jitter
   float phaseX = 0.0f, phaseZ = 0.0f;  // R_x, R_z
 };
 
@@ -120,7 +120,8 @@ TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& opt
   return skeleton;
 }
 
-void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options, TreeSkeleton& skeleton) {
+void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options,
+                         TreeSkeleton& skeleton) {
   const StrandParams& p = species.strand;
   ECO_ASSERT(p.strands >= 1, "strands=" << p.strands);
   const std::vector<Node> nodes = splitStrands(species, options.seed);
@@ -138,8 +139,8 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
   const double wg = options.windDirected.value_or(p.windDirected);
   const double ws = options.windUndirected.value_or(p.windUndirected);
   const glm::dvec3 windDirection = options.windDirection.value_or(p.windDirection);
-  const glm::vec3 wind = glm::length(windDirection) > 0.0 ? glm::vec3(glm::normalize(windDirection))
-                                                          : glm::vec3(0.0f);
+  const glm::vec3 wind =
+      glm::length(windDirection) > 0.0 ? glm::vec3(glm::normalize(windDirection)) : glm::vec3(0.0f);
   const glm::vec3 gravity(0.0f, -1.0f, 0.0f);
   const double sway = ws * (1.0 - p.flexibility);  // degrees per metre of base branch
   const double t = options.windTime;
@@ -154,8 +155,8 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
     const Node& node = nodes[i];
     if (!mature && node.parent >= 0 && node.startDist >= front) continue;
     BranchSegment seg;
-    seg.length_m = static_cast<float>(mature ? node.fullLength
-                                             : std::clamp(front - node.startDist, 0.0, node.fullLength));
+    seg.length_m = static_cast<float>(
+        mature ? node.fullLength : std::clamp(front - node.startDist, 0.0, node.fullLength));
     seg.gravelius = static_cast<std::int16_t>(node.g);
     seg.weibull = static_cast<std::int16_t>(node.w);
     seg.strands = node.strands;
@@ -165,8 +166,8 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
     // Thickness from Mandelbrot: d = k_d sqrt(S_0); the whole tree thickens as it grows.
     const double girth = 0.5 * p.kd * growth;
     seg.startRadius_m = static_cast<float>(girth * std::sqrt(node.strands));
-    seg.endRadius_m = static_cast<float>(node.majorStrands > 0 ? girth * std::sqrt(node.majorStrands)
-                                                               : 0.5 * seg.startRadius_m);
+    seg.endRadius_m = static_cast<float>(
+        node.majorStrands > 0 ? girth * std::sqrt(node.majorStrands) : 0.5 * seg.startRadius_m);
     if (node.parent < 0) {
       gravimorphicFrame[i] = glm::mat3(1.0f);
     } else {

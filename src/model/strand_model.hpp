@@ -19,9 +19,9 @@ struct TreeBuildOptions {
   double age = 1.0;        // 0 = seedling, 1 = mature (growth rule in docs/model.md)
   double windTime = 0.0;   // t in alpha_x(t), alpha_z(t), radians of the sway oscillation
   // Wind overrides; unset means the species file's values.
-  std::optional<double> windDirected;          // w_g
-  std::optional<double> windUndirected;        // w_s
-  std::optional<glm::dvec3> windDirection;     // w, toward which the wind blows (tree frame)
+  std::optional<double> windDirected;       // w_g
+  std::optional<double> windUndirected;     // w_s
+  std::optional<glm::dvec3> windDirection;  // w, toward which the wind blows (tree frame)
   bool leaves = true;
 };
 
@@ -31,7 +31,8 @@ inline constexpr double kSeedlingFraction = 0.04;
 TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& options);
 // The same into a skeleton the caller owns: its arrays keep their capacity, so building
 // many trees one after another allocates (and page-faults) nothing new.
-void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options, TreeSkeleton& out);
+void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options,
+                         TreeSkeleton& out);
 
 // The horizontal direction toward which a wind blows that comes from compass bearing
 // `fromDeg` (0 north, 90 east), in the tree frame (x east, y up, z south).

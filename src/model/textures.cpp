@@ -11,19 +11,24 @@
 namespace eco {
 namespace {
 
-float smooth(float t) { return t * t * (3.0f - 2.0f * t); }
+float smooth(float t) {
+  return t * t * (3.0f - 2.0f * t);
+}
 
 float latticeValue(int x, int y, int periodX, int periodY, std::uint64_t seed) {
   x = ((x % periodX) + periodX) % periodX;
   y = ((y % periodY) + periodY) % periodY;
-  return static_cast<float>(mix64(streamKey(seed, static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y))) >> 40) /
+  return static_cast<float>(
+             mix64(streamKey(seed, static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y))) >>
+             40) /
          static_cast<float>(1 << 24);
 }
 
 float valueNoise(float x, float y, int periodX, int periodY, std::uint64_t seed) {
   int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
   float fx = smooth(x - static_cast<float>(x0)), fy = smooth(y - static_cast<float>(y0));
-  float a = latticeValue(x0, y0, periodX, periodY, seed), b = latticeValue(x0 + 1, y0, periodX, periodY, seed);
+  float a = latticeValue(x0, y0, periodX, periodY, seed),
+        b = latticeValue(x0 + 1, y0, periodX, periodY, seed);
   float c = latticeValue(x0, y0 + 1, periodX, periodY, seed);
   float d = latticeValue(x0 + 1, y0 + 1, periodX, periodY, seed);
   return (a + (b - a) * fx) + ((c + (d - c) * fx) - (a + (b - a) * fx)) * fy;
@@ -61,7 +66,8 @@ float tileableNoise(float x, float y, int baseFrequency, int octaves, std::uint6
   return tileableNoise(x, y, baseFrequency, baseFrequency, octaves, seed);
 }
 
-float tileableNoise(float x, float y, int frequencyX, int frequencyY, int octaves, std::uint64_t seed) {
+float tileableNoise(float x, float y, int frequencyX, int frequencyY, int octaves,
+                    std::uint64_t seed) {
   float sum = 0.0f, amplitude = 0.5f, total = 0.0f;
   for (int o = 0; o < octaves; ++o) {
     sum += amplitude * valueNoise(x * frequencyX, y * frequencyY, frequencyX, frequencyY, seed + o);
@@ -83,7 +89,8 @@ Image makeBarkTexture(const Appearance& look) {
       // lengthwise and enclose plates; rough bark has wide, dark fissures.
       float plates = tileableNoise(u, v, 6, 2, 4, 11);
       float toFissure = std::abs(2.0f * plates - 1.0f);
-      float fissure = roughness * (1.0f - std::clamp(toFissure / (0.04f + 0.14f * roughness), 0.0f, 1.0f));
+      float fissure =
+          roughness * (1.0f - std::clamp(toFissure / (0.04f + 0.14f * roughness), 0.0f, 1.0f));
       float grain = tileableNoise(u, v, 16, 3, 12);
       float plateShade = 0.85f + 0.3f * tileableNoise(u, v, 3, 2, 13);
       glm::vec3 c = look.barkColor * plateShade * (0.85f + 0.3f * grain) * (1.0f - 0.75f * fissure);
@@ -184,8 +191,9 @@ Material makeMaterial(MaterialKind kind, const Species& species) {
       m.roughness = 0.7f;
       break;
     case MaterialKind::LeafCluster:
-      m.texture = makeLeafClusterTexture(look, species.strand.leafDistribution == LeafDistribution::Coniferous ||
-                                                   look.leafShape == LeafShape::NeedleTuft);  // as clustersOfNeedles()
+      m.texture = makeLeafClusterTexture(
+          look, species.strand.leafDistribution == LeafDistribution::Coniferous ||
+                    look.leafShape == LeafShape::NeedleTuft);  // as clustersOfNeedles()
       m.alphaMask = m.doubleSided = true;
       m.roughness = 0.7f;
       break;

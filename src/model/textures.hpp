@@ -33,7 +33,8 @@ Image makeLeafClusterTexture(const Appearance& look, bool needles);
 // Tileable fractal value noise in [0, 1]; x and y in texture units (periodic with period 1).
 float tileableNoise(float x, float y, int baseFrequency, int octaves, std::uint64_t seed);
 // The same with its own frequency along each axis (stretched features, still tileable).
-float tileableNoise(float x, float y, int frequencyX, int frequencyY, int octaves, std::uint64_t seed);
+float tileableNoise(float x, float y, int frequencyX, int frequencyY, int octaves,
+                    std::uint64_t seed);
 
 struct Material {
   MaterialKind kind = MaterialKind::Bark;
@@ -42,7 +43,7 @@ struct Material {
   std::optional<Image> texture;
   bool alphaMask = false;  // cut out where texture alpha < 0.5
   bool doubleSided = false;
-  bool repeat = false;     // texture wraps (bark) or clamps (cards)
+  bool repeat = false;  // texture wraps (bark) or clamps (cards)
   float roughness = 0.9f;
 };
 

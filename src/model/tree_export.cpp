@@ -23,7 +23,8 @@ std::filesystem::path textureFileFor(const std::filesystem::path& file, const Ma
 }
 
 Bounds boundsOf(const TreeMesh& mesh) {
-  Bounds b{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(std::numeric_limits<float>::lowest())};
+  Bounds b{glm::vec3(std::numeric_limits<float>::max()),
+           glm::vec3(std::numeric_limits<float>::lowest())};
   for (const MeshPart& part : mesh.parts)
     for (glm::vec3 p : part.positions) {
       b.min = glm::min(b.min, p);
@@ -37,15 +38,20 @@ void exportTree(const TreeMesh& mesh, const Species& species, const std::filesys
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  using Writer = void (*)(const TreeMesh&, const std::vector<Material>&, const std::filesystem::path&);
+  using Writer =
+      void (*)(const TreeMesh&, const std::vector<Material>&, const std::filesystem::path&);
   Writer writer = nullptr;
-  if (extension == ".obj") writer = writeObj;
-  else if (extension == ".gltf" || extension == ".glb") writer = writeGltf;
-  else if (extension == ".pov") writer = writePov;
-  else if (extension == ".wrl") writer = writeVrml;
+  if (extension == ".obj")
+    writer = writeObj;
+  else if (extension == ".gltf" || extension == ".glb")
+    writer = writeGltf;
+  else if (extension == ".pov")
+    writer = writePov;
+  else if (extension == ".wrl")
+    writer = writeVrml;
   else
-    throw InputError({file.string(), 0, ""},
-                     "unknown output format '" + extension + "' (expected .obj, .gltf, .glb, .pov or .wrl)");
+    throw InputError({file.string(), 0, ""}, "unknown output format '" + extension +
+                                                 "' (expected .obj, .gltf, .glb, .pov or .wrl)");
   writer(mesh, materialsFor(mesh, species), file);
 }
 

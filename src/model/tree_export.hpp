@@ -15,10 +15,14 @@ namespace eco {
 // One material per part of the mesh, in the same order.
 std::vector<Material> materialsFor(const TreeMesh& mesh, const Species& species);
 
-void writeObj(const TreeMesh& mesh, const std::vector<Material>& materials, const std::filesystem::path& file);
-void writeGltf(const TreeMesh& mesh, const std::vector<Material>& materials, const std::filesystem::path& file);
-void writePov(const TreeMesh& mesh, const std::vector<Material>& materials, const std::filesystem::path& file);
-void writeVrml(const TreeMesh& mesh, const std::vector<Material>& materials, const std::filesystem::path& file);
+void writeObj(const TreeMesh& mesh, const std::vector<Material>& materials,
+              const std::filesystem::path& file);
+void writeGltf(const TreeMesh& mesh, const std::vector<Material>& materials,
+               const std::filesystem::path& file);
+void writePov(const TreeMesh& mesh, const std::vector<Material>& materials,
+              const std::filesystem::path& file);
+void writeVrml(const TreeMesh& mesh, const std::vector<Material>& materials,
+               const std::filesystem::path& file);
 
 // Chooses the writer by extension (.obj .gltf .glb .pov .wrl); another extension is an
 // InputError naming the file.

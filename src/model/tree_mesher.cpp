@@ -32,7 +32,9 @@ void addCard(MeshPart& part, glm::vec3 base, glm::vec3 along, glm::vec3 across, 
   part.addTriangle(a, c, d);
 }
 
-float leafCardAspect(LeafShape shape) { return shape == LeafShape::NeedleTuft ? 0.9f : 0.6f; }
+float leafCardAspect(LeafShape shape) {
+  return shape == LeafShape::NeedleTuft ? 0.9f : 0.6f;
+}
 
 void meshBranches(const TreeSkeleton& skeleton, const MeshOptions& options, MeshPart& bark) {
   const auto& segments = skeleton.segments;
@@ -47,15 +49,17 @@ void meshBranches(const TreeSkeleton& skeleton, const MeshOptions& options, Mesh
     const BranchSegment& head = segments[first];
     if (head.continuesParent || head.strands < options.minStrands) continue;
     chain.clear();
-    for (auto s = static_cast<std::int32_t>(first); s >= 0 && segments[s].strands >= options.minStrands;
-         s = majorChild[s])
+    for (auto s = static_cast<std::int32_t>(first);
+         s >= 0 && segments[s].strands >= options.minStrands; s = majorChild[s])
       chain.push_back(s);
 
     // Thick chains get more sides; sqrt keeps mid-sized branches round.
-    int sides = static_cast<int>(std::lround(options.maxSides * std::sqrt(head.startRadius_m / rootRadius)));
+    int sides = static_cast<int>(
+        std::lround(options.maxSides * std::sqrt(head.startRadius_m / rootRadius)));
     sides = std::clamp(sides, options.minSides, options.maxSides);
     const std::size_t rings = chain.size() + 1;
-    const float circumference = 2.0f * std::numbers::pi_v<float> * std::max(head.startRadius_m, 1e-4f);
+    const float circumference =
+        2.0f * std::numbers::pi_v<float> * std::max(head.startRadius_m, 1e-4f);
 
     glm::vec3 reference = head.frame[0];
     float travelled = 0.0f;
@@ -71,10 +75,12 @@ void meshBranches(const TreeSkeleton& skeleton, const MeshOptions& options, Mesh
       glm::vec3 binormal = glm::cross(tangent, reference);
       std::uint32_t ringStart = 0;
       for (int j = 0; j <= sides; ++j) {  // j == sides duplicates j == 0 for the texture seam
-        float angle = 2.0f * std::numbers::pi_v<float> * static_cast<float>(j) / static_cast<float>(sides);
+        float angle =
+            2.0f * std::numbers::pi_v<float> * static_cast<float>(j) / static_cast<float>(sides);
         glm::vec3 out = std::cos(angle) * reference + std::sin(angle) * binormal;
-        std::uint32_t v = bark.addVertex(center + radius * out, out,
-                                         {static_cast<float>(j) / static_cast<float>(sides), travelled / circumference});
+        std::uint32_t v = bark.addVertex(
+            center + radius * out, out,
+            {static_cast<float>(j) / static_cast<float>(sides), travelled / circumference});
         if (j == 0) ringStart = v;
       }
       if (k == 0) firstVertex = ringStart;
@@ -90,13 +96,15 @@ void meshBranches(const TreeSkeleton& skeleton, const MeshOptions& options, Mesh
     }
     // Close the tip with a cone to an apex; close the stem base with a flat cap.
     const BranchSegment& last = segments[chain.back()];
-    std::uint32_t lastRing = static_cast<std::uint32_t>(bark.positions.size()) - static_cast<std::uint32_t>(sides + 1);
+    std::uint32_t lastRing =
+        static_cast<std::uint32_t>(bark.positions.size()) - static_cast<std::uint32_t>(sides + 1);
     std::uint32_t apex = bark.addVertex(last.end() + last.axis() * last.endRadius_m, last.axis(),
                                         {0.5f, (travelled + last.endRadius_m) / circumference});
     for (int j = 0; j < sides; ++j) bark.addTriangle(lastRing + j, lastRing + j + 1, apex);
     if (head.parent < 0) {
       std::uint32_t center = bark.addVertex(head.start, -head.axis(), {0.5f, 0.0f});
-      for (int j = 0; j < sides; ++j) bark.addTriangle(firstVertex + j + 1, firstVertex + j, center);
+      for (int j = 0; j < sides; ++j)
+        bark.addTriangle(firstVertex + j + 1, firstVertex + j, center);
     }
   }
 }
@@ -186,7 +194,8 @@ void meshTreeInto(const TreeSkeleton& skeleton, const MeshOptions& options, Tree
   // An upper bound keeps the bark arrays from reallocating on the hot path: every segment
   // adds at most one ring, every chain a cap and a tip. Leaf arrays are sized exactly.
   const std::size_t sides = static_cast<std::size_t>(options.maxSides);
-  bark.reserve(skeleton.segments.size() * (sides + 1) * 2 + 2, skeleton.segments.size() * sides * 4);
+  bark.reserve(skeleton.segments.size() * (sides + 1) * 2 + 2,
+               skeleton.segments.size() * sides * 4);
   meshBranches(skeleton, options, bark);
   if (options.leaves) meshLeaves(skeleton, options.leafShape, cards, needles);
   mesh.dropEmptyParts();

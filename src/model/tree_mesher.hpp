@@ -15,9 +15,9 @@
 namespace eco {
 
 struct MeshOptions {
-  int maxSides = 8;       // ring sides of the thickest chain (the trunk)
-  int minSides = 3;       // ring sides of the thinnest twigs
-  int minStrands = 1;     // segments with fewer strands are left out (twig dropping)
+  int maxSides = 8;    // ring sides of the thickest chain (the trunk)
+  int minSides = 3;    // ring sides of the thinnest twigs
+  int minStrands = 1;  // segments with fewer strands are left out (twig dropping)
   bool leaves = true;
   LeafShape leafShape = LeafShape::Broadleaf;
 };

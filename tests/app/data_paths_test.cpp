@@ -10,7 +10,8 @@ namespace eco {
 
 TEST(DataPaths, BareNamesResolveInTheSpeciesFolder) {
   unsetenv("ECOFOREST_DATA_DIR");
-  EXPECT_EQ(resolveSpecies("beech"), std::filesystem::path(ECOFOREST_DATA_DIR) / "species" / "beech.toml");
+  EXPECT_EQ(resolveSpecies("beech"),
+            std::filesystem::path(ECOFOREST_DATA_DIR) / "species" / "beech.toml");
   EXPECT_EQ(resolveSpecies("my/oak.toml"), std::filesystem::path("my/oak.toml"));  // paths as given
   EXPECT_EQ(resolveSpecies("oak.toml"), std::filesystem::path("oak.toml"));
 }

@@ -1,9 +1,9 @@
 // Runs the real `ecoforest` program as a user would.
+#include <sys/wait.h>
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <fstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -20,14 +20,16 @@ RunResult run(const std::string& arguments) {
   RunResult result;
   FILE* pipe = popen(command.c_str(), "r");
   std::array<char, 4096> buffer{};
-  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
+    result.output.append(buffer.data(), n);
   int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }
 
 std::filesystem::path freshDirectory(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("ecoforest_app_" + name + "_" + std::to_string(::getpid()));
+  auto dir = std::filesystem::temp_directory_path() /
+             ("ecoforest_app_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -49,7 +51,8 @@ TEST(TreeCommand, StatsForThePapersTrees) {
   EXPECT_EQ(beech["leaves"], 5000);
   EXPECT_NEAR(beech["trunk_diameter_m"].get<double>(), 0.01 * std::sqrt(1000.0), 1e-6);
   EXPECT_GT(beech["height_m"].get<double>(), 5.0);
-  for (const char* key : {"strands", "max_gravelius", "max_weibull", "crown_radius_m", "build_ms", "seed"})
+  for (const char* key :
+       {"strands", "max_gravelius", "max_weibull", "crown_radius_m", "build_ms", "seed"})
     EXPECT_TRUE(beech.contains(key)) << key;
   EXPECT_GT(beech["triangles"]["lod0"].get<int>(), beech["triangles"]["lod1"].get<int>());
   EXPECT_GT(beech["triangles"]["lod1"].get<int>(), beech["triangles"]["lod2"].get<int>());
@@ -59,8 +62,17 @@ TEST(TreeCommand, StatsForThePapersTrees) {
 }
 
 TEST(TreeCommand, AgeAndSeedChangeTheTree) {
-  EXPECT_LT(statsOf("maple --age 0.3")["height_m"].get<double>(), statsOf("maple --age 0.8")["height_m"].get<double>());
-  EXPECT_NE(statsOf("maple --seed 1")["crown_radius_m"], statsOf("maple --seed 2")["crown_radius_m"]);
+  EXPECT_LT(statsOf("maple --age 0.3")["height_m"].get<double>(),
+            statsOf("maple --age 0.8")["height_m"].get<double>());
+  EXPECT_NE(statsOf("maple --seed 1")["crown_radius_m"],
+            statsOf("maple --seed 2")["crown_radius_m"]);
+}
+
+TEST(TreeCommand, SidesSetTheTubeResolution) {
+  int coarse = statsOf("beech --sides 4")["triangles"]["lod0"].get<int>();
+  int fine = statsOf("beech --sides 16")["triangles"]["lod0"].get<int>();
+  EXPECT_GT(fine, coarse + 5000);
+  EXPECT_EQ(run("tree beech --sides 2").exitCode, 2);
 }
 
 TEST(TreeCommand, WritesEveryFormat) {
@@ -83,11 +95,13 @@ TEST(TreeCommand, GltfPassesTheKhronosValidator) {
     for (const char* extension : {".glb", ".gltf"}) {
       auto file = dir / ("tree" + std::string(extension));
       ASSERT_EQ(run("tree " + args + " --out " + file.string()).exitCode, 0);
-      std::string command = "node " + (validator / "validate.mjs").string() + " " + file.string() + " 2>&1";
+      std::string command =
+          "node " + (validator / "validate.mjs").string() + " " + file.string() + " 2>&1";
       FILE* pipe = popen(command.c_str(), "r");
       std::array<char, 4096> buffer{};
       std::string report;
-      while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) report.append(buffer.data(), n);
+      while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
+        report.append(buffer.data(), n);
       int status = pclose(pipe);
       EXPECT_EQ(WEXITSTATUS(status), 0) << args << extension << ": " << report;
       EXPECT_NE(report.find("\"errors\":0"), std::string::npos) << report;
@@ -114,7 +128,8 @@ TEST(TreeCommand, BadArgumentsAreExitTwo) {
   auto dir = freshDirectory("args");
   RunResult unknownSpecies = run("tree baobab");
   EXPECT_EQ(unknownSpecies.exitCode, 2);
-  EXPECT_NE(unknownSpecies.output.find("ecoforest: error: baobab: unknown species"), std::string::npos);
+  EXPECT_NE(unknownSpecies.output.find("ecoforest: error: baobab: unknown species"),
+            std::string::npos);
   EXPECT_EQ(run("tree beech --age 1.5").exitCode, 2);
   EXPECT_EQ(run("tree beech --lod 3").exitCode, 2);
   EXPECT_EQ(run("tree").exitCode, 2);
@@ -124,7 +139,8 @@ TEST(TreeCommand, BadArgumentsAreExitTwo) {
   EXPECT_NE(badFormat.output.find("unknown output format"), std::string::npos);
   RunResult missingFolder = run("tree beech --out /nonexistent/dir/x.glb");
   EXPECT_EQ(missingFolder.exitCode, 2);
-  EXPECT_NE(missingFolder.output.find("/nonexistent/dir/x.glb: cannot write this file"), std::string::npos)
+  EXPECT_NE(missingFolder.output.find("/nonexistent/dir/x.glb: cannot write this file"),
+            std::string::npos)
       << missingFolder.output;
   EXPECT_TRUE(std::filesystem::is_empty(dir));
   RunResult missingFile = run("tree /nonexistent/oak.toml");

@@ -11,7 +11,8 @@ namespace eco {
 namespace {
 
 std::filesystem::path freshDirectory(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("ecoforest_" + name + "_" + std::to_string(::getpid()));
+  auto dir = std::filesystem::temp_directory_path() /
+             ("ecoforest_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -40,7 +41,10 @@ TEST(AtomicFile, AppearsOnlyOnCommit) {
 
 TEST(AtomicFile, AbandonedFileLeavesNothing) {
   auto dir = freshDirectory("abandon");
-  { AtomicFile file(dir / "b.txt"); file.write(std::string_view("partial")); }
+  {
+    AtomicFile file(dir / "b.txt");
+    file.write(std::string_view("partial"));
+  }
   EXPECT_EQ(entriesIn(dir), 0u);
 }
 

@@ -26,7 +26,7 @@ TEST(Polyline, ClampsOutsideItsControlPoints) {
 TEST(Polyline, VerticalStepLikeThePinesKsW) {
   Polyline p({{0, 1}, {42.89, 1.005}, {42.89, 0.654}, {50, 0.6256}});
   EXPECT_NEAR(p(42.0), 1.0 + 0.005 * 42.0 / 42.89, 1e-12);  // before the step
-  EXPECT_NEAR(p(42.89), 0.654, 1e-12);                    // at it: the value after
+  EXPECT_NEAR(p(42.89), 0.654, 1e-12);                      // at it: the value after
   EXPECT_NEAR(p(43.0), 0.654 + (0.6256 - 0.654) * (0.11 / 7.11), 1e-12);
   EXPECT_NEAR(p(42.8899), 1.005, 1e-6);
 }

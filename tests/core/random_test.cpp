@@ -32,7 +32,7 @@ TEST(Rng, UniformHasTheRightMoments) {
     sumSq += u * u;
   }
   double mean = sum / n;
-  EXPECT_NEAR(mean, 0.5, 0.005);                      // sd of the mean is 0.00065
+  EXPECT_NEAR(mean, 0.5, 0.005);  // sd of the mean is 0.00065
   EXPECT_NEAR(sumSq / n - mean * mean, 1.0 / 12.0, 0.002);
 }
 

@@ -20,7 +20,8 @@ InputError inputErrorOf(Body body) {
 }  // namespace
 
 TEST(TomlReader, ReadsValuesAndDefaults) {
-  TomlDocument doc = TomlDocument::parse("a = 2\nb = 2.5\nname = \"x\"\nflag = true\nv = [1, 2.5, 3]\n", "t.toml");
+  TomlDocument doc =
+      TomlDocument::parse("a = 2\nb = 2.5\nname = \"x\"\nflag = true\nv = [1, 2.5, 3]\n", "t.toml");
   TomlTable root = doc.root();
   EXPECT_DOUBLE_EQ(root.number("a"), 2.0);  // integers are numbers too
   EXPECT_DOUBLE_EQ(root.number("b"), 2.5);
@@ -60,7 +61,8 @@ TEST(TomlReader, WrongTypeAndRangeAndMissing) {
 }
 
 TEST(TomlReader, PolylineErrorsPointAtTheBadPoint) {
-  TomlDocument doc = TomlDocument::parse("p = [\n  [0, 1],\n  [5, 2],\n  [3, 4],\n]\nq = [[0, 9]]\nr = [1, 2]\n", "p.toml");
+  TomlDocument doc = TomlDocument::parse(
+      "p = [\n  [0, 1],\n  [5, 2],\n  [3, 4],\n]\nq = [[0, 9]]\nr = [1, 2]\n", "p.toml");
   TomlTable root = doc.root();
   InputError unsorted = inputErrorOf([&] { root.polyline("p"); });
   EXPECT_EQ(unsorted.where().line, 4);

@@ -1,5 +1,5 @@
-#include <tiny_gltf.h>
 #include <gtest/gtest.h>
+#include <tiny_gltf.h>
 
 #include "model/lod.hpp"
 #include "model/strand_model.hpp"
@@ -13,8 +13,9 @@ tinygltf::Model load(const std::filesystem::path& file) {
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
   std::string error, warning;
-  bool ok = file.extension() == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
-                                       : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
+  bool ok = file.extension() == ".glb"
+                ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
+                : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
   EXPECT_TRUE(ok) << error;
   return model;
 }
@@ -32,7 +33,8 @@ TEST(ExportGltf, ReadsBackWithTheSameGeometry) {
     ASSERT_EQ(model.meshes[0].primitives.size(), mesh.parts.size());
     for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
       const tinygltf::Primitive& primitive = model.meshes[0].primitives[p];
-      EXPECT_EQ(model.accessors[primitive.attributes.at("POSITION")].count, mesh.parts[p].positions.size());
+      EXPECT_EQ(model.accessors[primitive.attributes.at("POSITION")].count,
+                mesh.parts[p].positions.size());
       EXPECT_EQ(model.accessors[primitive.indices].count, mesh.parts[p].indices.size());
       EXPECT_EQ(model.accessors[primitive.attributes.at("POSITION")].minValues.size(), 3u);
     }

@@ -15,8 +15,11 @@ TEST(ExportVrml, OneShapePerPartAndEveryTriangle) {
   std::string text = test::readFile(dir / "maple.wrl");
   EXPECT_EQ(text.rfind("#VRML V2.0 utf8\n", 0), 0u);
   std::size_t shapes = 0, faces = 0;
-  for (std::size_t at = text.find("Shape {"); at != std::string::npos; at = text.find("Shape {", at + 1)) ++shapes;
-  for (std::size_t at = text.find(" -1,"); at != std::string::npos; at = text.find(" -1,", at + 1)) ++faces;
+  for (std::size_t at = text.find("Shape {"); at != std::string::npos;
+       at = text.find("Shape {", at + 1))
+    ++shapes;
+  for (std::size_t at = text.find(" -1,"); at != std::string::npos; at = text.find(" -1,", at + 1))
+    ++faces;
   EXPECT_EQ(shapes, mesh.parts.size());
   EXPECT_EQ(faces, mesh.triangleCount());
   EXPECT_NE(text.find("url \"maple_bark.png\""), std::string::npos);

@@ -4,8 +4,8 @@
 #include <numbers>
 #include <set>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 namespace eco {
 namespace {
@@ -34,8 +34,9 @@ double azimuth_deg(const Leaf& leaf) {
 }  // namespace
 
 TEST(Leaves, CountSizeKindAndUnitVectors) {
-  for (LeafDistribution d : {LeafDistribution::Spiral, LeafDistribution::Stacked, LeafDistribution::Staggered,
-                             LeafDistribution::Bunched, LeafDistribution::Coniferous}) {
+  for (LeafDistribution d :
+       {LeafDistribution::Spiral, LeafDistribution::Stacked, LeafDistribution::Staggered,
+        LeafDistribution::Bunched, LeafDistribution::Coniferous}) {
     std::vector<Leaf> leaves = place(d, 8);
     ASSERT_EQ(leaves.size(), 8u) << toString(d);
     for (const Leaf& leaf : leaves) {
@@ -83,7 +84,8 @@ TEST(Leaves, TheFiveDistributionsDiffer) {
 
   // Coniferous: needles, pointing closer to the twig axis than spiral leaves.
   double coniferAngle = 0.0, spiralAngle = 0.0;
-  for (const Leaf& l : place(LeafDistribution::Coniferous, 8)) coniferAngle += std::acos(l.direction.x);
+  for (const Leaf& l : place(LeafDistribution::Coniferous, 8))
+    coniferAngle += std::acos(l.direction.x);
   for (const Leaf& l : spiral) spiralAngle += std::acos(l.direction.x);
   EXPECT_LT(coniferAngle, spiralAngle - 0.5);
 }

@@ -1,7 +1,7 @@
 #include "model/lod.hpp"
 
-#include <glm/common.hpp>
 #include <gtest/gtest.h>
+#include <glm/common.hpp>
 
 #include "model/strand_model.hpp"
 #include "model/textures.hpp"
@@ -37,7 +37,8 @@ TEST(Lod, Lod1KeepsTheVisibleLeafArea) {
     EXPECT_EQ(lod1.find(MaterialKind::Leaf), nullptr);
     double cardArea = 0.0;
     for (std::size_t t = 0; t < clusters->indices.size(); t += 3) {
-      glm::vec3 a = clusters->positions[clusters->indices[t]], b = clusters->positions[clusters->indices[t + 1]];
+      glm::vec3 a = clusters->positions[clusters->indices[t]],
+                b = clusters->positions[clusters->indices[t + 1]];
       glm::vec3 c = clusters->positions[clusters->indices[t + 2]];
       cardArea += 0.5 * glm::length(glm::cross(b - a, c - a));
     }

@@ -30,8 +30,8 @@ TEST(Skeleton, MeasureHandBuiltTree) {
   EXPECT_EQ(m.terminalSegments, 1u);
   EXPECT_EQ(m.maxGravelius, 1);
   EXPECT_EQ(m.maxWeibull, 1);
-  EXPECT_DOUBLE_EQ(m.height_m, 4.5);        // the leaf tip
-  EXPECT_DOUBLE_EQ(m.crownRadius_m, 3.0);   // the side branch's end
+  EXPECT_DOUBLE_EQ(m.height_m, 4.5);       // the leaf tip
+  EXPECT_DOUBLE_EQ(m.crownRadius_m, 3.0);  // the side branch's end
   EXPECT_NEAR(m.trunkDiameter_m, 0.4, 1e-6);
 }
 

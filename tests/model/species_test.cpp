@@ -132,7 +132,8 @@ TEST(Species, BadInputNamesFileLineAndKey) {
   EXPECT_EQ(negativeLine, 4);
   EXPECT_NE(negative.find("outside"), std::string::npos);
 
-  auto [unsorted, unsortedLine] = errorWith("ks_g = [[0, 0.75]]", "ks_g = [[5, 0.75],\n  [1, 0.8]]");
+  auto [unsorted, unsortedLine] =
+      errorWith("ks_g = [[0, 0.75]]", "ks_g = [[5, 0.75],\n  [1, 0.8]]");
   EXPECT_EQ(unsortedLine, 13);
   EXPECT_NE(unsorted.find("strand.local.ks_g"), std::string::npos);
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "model/local_params.hpp"
 #include "test_support.hpp"
@@ -13,7 +13,8 @@ namespace eco {
 namespace {
 
 double angleBetween_deg(glm::vec3 a, glm::vec3 b) {
-  double c = std::clamp(static_cast<double>(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0);
+  double c =
+      std::clamp(static_cast<double>(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0);
   return std::acos(c) * 180.0 / std::numbers::pi;
 }
 
@@ -25,7 +26,8 @@ std::vector<Children> childrenOf(const TreeSkeleton& tree) {
   std::vector<Children> children(tree.segments.size());
   for (std::size_t i = 1; i < tree.segments.size(); ++i) {
     const BranchSegment& s = tree.segments[i];
-    (s.continuesParent ? children[s.parent].major : children[s.parent].minor) = static_cast<std::int32_t>(i);
+    (s.continuesParent ? children[s.parent].major : children[s.parent].minor) =
+        static_cast<std::int32_t>(i);
   }
   return children;
 }
@@ -71,12 +73,14 @@ TEST(StrandModel, StrandsAreConservedAtEveryNode) {
     }
     ASSERT_GE(children[i].major, 0);
     ASSERT_GE(children[i].minor, 0);
-    int s1 = tree.segments[children[i].major].strands, s2 = tree.segments[children[i].minor].strands;
+    int s1 = tree.segments[children[i].major].strands,
+        s2 = tree.segments[children[i].minor].strands;
     ASSERT_EQ(s1 + s2, s.strands) << "node " << i;
     ASSERT_GE(s1, s2);
     // S1 = ceil(1 + k_s (S0 - 2)) with the local k_s of this node.
     double ks = evaluateLocal(pine.strand.graphs, s.gravelius, s.weibull).ks;
-    ASSERT_EQ(s1, std::clamp(static_cast<int>(std::ceil(1.0 + ks * (s.strands - 2) - 1e-9)), 1, s.strands - 1));
+    ASSERT_EQ(s1, std::clamp(static_cast<int>(std::ceil(1.0 + ks * (s.strands - 2) - 1e-9)), 1,
+                             s.strands - 1));
     // Orders: the minor child is one Gravelius order up, both one Weibull order up.
     EXPECT_EQ(tree.segments[children[i].minor].gravelius, s.gravelius + 1);
     EXPECT_EQ(tree.segments[children[i].major].gravelius, s.gravelius);
@@ -121,7 +125,8 @@ TEST(StrandModel, BranchingAnglesSumToAlpha) {
     const BranchSegment& major = tree.segments[children[i].major];
     const BranchSegment& minor = tree.segments[children[i].minor];
     double alpha = evaluateLocal(beech.strand.graphs, s.gravelius, s.weibull).alpha_deg;
-    double alpha1 = beech.strand.kc * std::sqrt(static_cast<double>(minor.strands) / s.strands) * alpha;
+    double alpha1 =
+        beech.strand.kc * std::sqrt(static_cast<double>(minor.strands) / s.strands) * alpha;
     ASSERT_NEAR(angleBetween_deg(major.axis(), minor.axis()), alpha, 1e-2) << "node " << i;
     ASSERT_NEAR(angleBetween_deg(s.axis(), major.axis()), alpha1, 1e-2) << "node " << i;
     ++checked;
@@ -165,10 +170,12 @@ TEST(StrandModel, DirectedWindTiltsTheCrownDownwind) {
   Species maple = test::loadNamed("maple");
   const glm::dvec3 east(1.0, 0.0, 0.0);
   glm::vec3 calm = leafCentroid(buildStrandTree(maple, {.windDirected = 0.0}));
-  glm::vec3 windy = leafCentroid(buildStrandTree(maple, {.windDirected = 6.0, .windDirection = east}));
-  EXPECT_GT(windy.x - calm.x, 0.3f);                   // metres downwind
+  glm::vec3 windy =
+      leafCentroid(buildStrandTree(maple, {.windDirected = 6.0, .windDirection = east}));
+  EXPECT_GT(windy.x - calm.x, 0.3f);  // metres downwind
   EXPECT_LT(std::abs(windy.z - calm.z), 0.5f * (windy.x - calm.x));
-  glm::vec3 west = leafCentroid(buildStrandTree(maple, {.windDirected = 6.0, .windDirection = -east}));
+  glm::vec3 west =
+      leafCentroid(buildStrandTree(maple, {.windDirected = 6.0, .windDirection = -east}));
   EXPECT_LT(west.x - calm.x, -0.3f);
 }
 
@@ -197,7 +204,8 @@ TEST(StrandModel, SameSeedSameTreeOtherSeedOtherTree) {
   TreeSkeleton b = buildStrandTree(beech, {.seed = 7});
   TreeSkeleton c = buildStrandTree(beech, {.seed = 8});
   ASSERT_EQ(a.segments.size(), b.segments.size());
-  for (std::size_t i = 0; i < a.segments.size(); ++i) ASSERT_EQ(a.segments[i].end(), b.segments[i].end());
+  for (std::size_t i = 0; i < a.segments.size(); ++i)
+    ASSERT_EQ(a.segments[i].end(), b.segments[i].end());
   ASSERT_EQ(a.leaves.size(), b.leaves.size());
   EXPECT_EQ(a.segments.size(), c.segments.size());  // topology is the species'
   EXPECT_GT(glm::length(leafCentroid(a) - leafCentroid(c)), 0.01f);

@@ -1,8 +1,8 @@
 #include "test_support.hpp"
 
+#include <unistd.h>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace eco::test {
 
@@ -16,7 +16,8 @@ Species withoutVariation(Species species) {
 }
 
 std::filesystem::path freshDirectory(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("ecoforest_" + name + "_" + std::to_string(::getpid()));
+  auto dir = std::filesystem::temp_directory_path() /
+             ("ecoforest_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -2,8 +2,8 @@
 
 #include <map>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "model/strand_model.hpp"
 #include "test_support.hpp"
@@ -20,7 +20,8 @@ std::vector<std::pair<glm::vec3, glm::vec3>> openEdges(const MeshPart& part) {
   std::map<decltype(keyOf(glm::vec3())), std::uint32_t> weld;
   std::vector<std::uint32_t> welded(part.positions.size());
   for (std::size_t i = 0; i < part.positions.size(); ++i)
-    welded[i] = weld.try_emplace(keyOf(part.positions[i]), static_cast<std::uint32_t>(i)).first->second;
+    welded[i] =
+        weld.try_emplace(keyOf(part.positions[i]), static_cast<std::uint32_t>(i)).first->second;
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
   for (std::size_t t = 0; t < part.indices.size(); t += 3)
     for (int e = 0; e < 3; ++e) {
@@ -87,7 +88,8 @@ TEST(TreeMesher, MajorContinuationSharesOneRing) {
   EXPECT_EQ(bark.positions.size(), 3u * 7u + 2u);
   EXPECT_EQ(bark.triangleCount(), 2u * 6u * 2u + 6u + 6u);
   EXPECT_TRUE(openEdges(bark).empty());
-  for (std::size_t i = 0; i < bark.normals.size(); ++i) EXPECT_NEAR(glm::length(bark.normals[i]), 1.0f, 1e-5f);
+  for (std::size_t i = 0; i < bark.normals.size(); ++i)
+    EXPECT_NEAR(glm::length(bark.normals[i]), 1.0f, 1e-5f);
 }
 
 TEST(TreeMesher, TrianglesFaceOutward) {
@@ -100,7 +102,8 @@ TEST(TreeMesher, TrianglesFaceOutward) {
     glm::vec3 c = bark.positions[bark.indices[t + 2]];
     glm::vec3 faceNormal = glm::cross(b - a, c - a);
     if (glm::length(faceNormal) < 1e-12f) continue;
-    glm::vec3 vertexNormals = bark.normals[bark.indices[t]] + bark.normals[bark.indices[t + 1]] + bark.normals[bark.indices[t + 2]];
+    glm::vec3 vertexNormals = bark.normals[bark.indices[t]] + bark.normals[bark.indices[t + 1]] +
+                              bark.normals[bark.indices[t + 2]];
     outward += glm::dot(faceNormal, vertexNormals) > 0.0f ? 1 : 0;
     ++total;
   }
@@ -117,7 +120,8 @@ TEST(TreeMesher, SidesFollowOptionsAndLeavesBecomeCards) {
   options.maxSides = 4;
   options.minSides = 3;
   TreeMesh coarse = meshTree(tree, options);
-  EXPECT_GT(fine.find(MaterialKind::Bark)->triangleCount(), 1.5 * coarse.find(MaterialKind::Bark)->triangleCount());
+  EXPECT_GT(fine.find(MaterialKind::Bark)->triangleCount(),
+            1.5 * coarse.find(MaterialKind::Bark)->triangleCount());
   ASSERT_NE(fine.find(MaterialKind::Leaf), nullptr);
   EXPECT_EQ(fine.find(MaterialKind::Leaf)->triangleCount(), 2 * tree.leaves.size());
   EXPECT_EQ(fine.find(MaterialKind::Needle), nullptr);

@@ -38,7 +38,8 @@ inline glm::mat3 rotationAbout(glm::vec3 axis, double degrees) {
   float s = static_cast<float>(std::sin(radians(degrees)));
   float t = 1.0f - c;
   float x = axis.x, y = axis.y, z = axis.z;
-  // clang-format off (one column per line)
+  // One column of the matrix per line.
+  // clang-format off
   return glm::mat3(t * x * x + c,     t * x * y + s * z, t * x * z - s * y,
                    t * x * y - s * z, t * y * y + c,     t * y * z + s * x,
                    t * x * z + s * y, t * y * z - s * x, t * z * z + c);

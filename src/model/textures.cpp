@@ -44,10 +44,26 @@ float bladeHalfWidth(float v) {
   return 0.47f * std::pow(std::sin(std::numbers::pi_v<float> * std::pow(t, 0.75f)), 0.85f);
 }
 
+// Inside a broadleaf blade lying along v (0 petiole .. 1 tip), centred at u = 0.5.
+bool insideBlade(float u, float v) {
+  return v >= 0.0f && v <= 1.0f && std::abs(u - 0.5f) < bladeHalfWidth(v);
+}
+
 // Coverage of one needle lying along v at u = 0.5, with a sharp tip.
 bool insideNeedle(float u, float v, float halfWidth) {
   if (v < 0.0f || v > 1.0f) return false;
   return std::abs(u - 0.5f) < halfWidth * (1.0f - std::pow(v, 6.0f));
+}
+
+// A kTextureSize square texture with colorAt(u, v) at every pixel centre (u to the right,
+// v down, both in [0, 1]).
+template <typename ColorAt>
+Image paint(ColorAt colorAt) {
+  Image image(kTextureSize, kTextureSize);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      image.set(x, y, colorAt((x + 0.5f) / image.width, (y + 0.5f) / image.height));
+  return image;
 }
 
 glm::vec4 leafColorAt(const Appearance& look, float u, float v) {
@@ -80,57 +96,43 @@ float tileableNoise(float x, float y, int frequencyX, int frequencyY, int octave
 }
 
 Image makeBarkTexture(const Appearance& look) {
-  Image image(kTextureSize, kTextureSize);
   const auto roughness = static_cast<float>(look.barkRoughness);
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      float u = (x + 0.5f) / image.width, v = (y + 0.5f) / image.height;
-      // Fissures follow an iso-line of noise stretched along the stem (v), so they run
-      // lengthwise and enclose plates; rough bark has wide, dark fissures.
-      float plates = tileableNoise(u, v, 6, 2, 4, 11);
-      float toFissure = std::abs(2.0f * plates - 1.0f);
-      float fissure =
-          roughness * (1.0f - std::clamp(toFissure / (0.04f + 0.14f * roughness), 0.0f, 1.0f));
-      float grain = tileableNoise(u, v, 16, 3, 12);
-      float plateShade = 0.85f + 0.3f * tileableNoise(u, v, 3, 2, 13);
-      glm::vec3 c = look.barkColor * plateShade * (0.85f + 0.3f * grain) * (1.0f - 0.75f * fissure);
-      image.set(x, y, glm::vec4(c, 1.0f));
-    }
-  return image;
+  return paint([&](float u, float v) {
+    // Fissures follow an iso-line of noise stretched along the stem (v), so they run
+    // lengthwise and enclose plates; rough bark has wide, dark fissures.
+    float plates = tileableNoise(u, v, 6, 2, 4, 11);
+    float toFissure = std::abs(2.0f * plates - 1.0f);
+    float fissure =
+        roughness * (1.0f - std::clamp(toFissure / (0.04f + 0.14f * roughness), 0.0f, 1.0f));
+    float grain = tileableNoise(u, v, 16, 3, 12);
+    float plateShade = 0.85f + 0.3f * tileableNoise(u, v, 3, 2, 13);
+    glm::vec3 c = look.barkColor * plateShade * (0.85f + 0.3f * grain) * (1.0f - 0.75f * fissure);
+    return glm::vec4(c, 1.0f);
+  });
 }
 
 Image makeLeafTexture(const Appearance& look) {
-  Image image(kTextureSize, kTextureSize);
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      float u = (x + 0.5f) / image.width, v = (y + 0.5f) / image.height;
-      bool inside = false;
-      if (look.leafShape == LeafShape::Broadleaf) {
-        inside = std::abs(u - 0.5f) < bladeHalfWidth(v);
-      } else {  // a tuft of needles fanning out from the base
-        for (int k = 0; k < 13 && !inside; ++k) {
-          float angle = (static_cast<float>(k) / 12.0f - 0.5f) * 0.9f;
-          float along = v * std::cos(angle) + (u - 0.5f) * std::sin(angle);
-          float aside = -v * std::sin(angle) + (u - 0.5f) * std::cos(angle);
-          inside = along < 0.98f && insideNeedle(aside + 0.5f, along, 0.012f);
-        }
+  return paint([&](float u, float v) {
+    bool inside = false;
+    if (look.leafShape == LeafShape::Broadleaf) {
+      inside = insideBlade(u, v);
+    } else {  // a tuft of needles fanning out from the base
+      for (int k = 0; k < 13 && !inside; ++k) {
+        float angle = (static_cast<float>(k) / 12.0f - 0.5f) * 0.9f;
+        float along = v * std::cos(angle) + (u - 0.5f) * std::sin(angle);
+        float aside = -v * std::sin(angle) + (u - 0.5f) * std::cos(angle);
+        inside = along < 0.98f && insideNeedle(aside + 0.5f, along, 0.012f);
       }
-      glm::vec4 c = inside ? leafColorAt(look, u, v) : glm::vec4(look.leafColor, 0.0f);
-      image.set(x, y, c);
     }
-  return image;
+    return inside ? leafColorAt(look, u, v) : glm::vec4(look.leafColor, 0.0f);
+  });
 }
 
 Image makeNeedleTexture(const Appearance& look) {
-  Image image(kTextureSize, kTextureSize);
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      float u = (x + 0.5f) / image.width, v = (y + 0.5f) / image.height;
-      bool inside = insideNeedle(u, v, 0.4f);
-      glm::vec3 c = look.leafColor * (0.85f + 0.3f * (1.0f - std::abs(u - 0.5f) * 2.0f));
-      image.set(x, y, glm::vec4(c, inside ? 1.0f : 0.0f));
-    }
-  return image;
+  return paint([&](float u, float v) {
+    glm::vec3 c = look.leafColor * (0.85f + 0.3f * (1.0f - std::abs(u - 0.5f) * 2.0f));
+    return glm::vec4(c, insideNeedle(u, v, 0.4f) ? 1.0f : 0.0f);
+  });
 }
 
 Image makeLeafClusterTexture(const Appearance& look, bool needles) {
@@ -151,23 +153,18 @@ Image makeLeafClusterTexture(const Appearance& look, bool needles) {
                       static_cast<float>(rng.uniform(margin, 1.0 - margin)),
                       static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)), size});
   }
-  Image image(kTextureSize, kTextureSize);
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      float px = (x + 0.5f) / image.width, py = (y + 0.5f) / image.height;
-      glm::vec4 c(look.leafColor, 0.0f);
-      for (const Stamp& s : stamps) {
-        // Into the stamp's leaf coordinates: v along the blade, u across it.
-        float dx = px - s.cx, dy = py - s.cy;
-        float v = (dx * std::cos(s.angle) + dy * std::sin(s.angle)) / s.size + 0.5f;
-        float u = (-dx * std::sin(s.angle) + dy * std::cos(s.angle)) / s.size + 0.5f;
-        bool inside = needles ? insideNeedle(u, v, 0.03f)
-                              : (v >= 0.0f && v <= 1.0f && std::abs(u - 0.5f) < bladeHalfWidth(v));
-        if (inside) c = leafColorAt(look, u, v) * glm::vec4(glm::vec3(0.75f + s.size), 1.0f);
-      }
-      image.set(x, y, c);
+  return paint([&](float px, float py) {
+    glm::vec4 c(look.leafColor, 0.0f);
+    for (const Stamp& s : stamps) {
+      // Into the stamp's leaf coordinates: v along the blade, u across it.
+      float dx = px - s.cx, dy = py - s.cy;
+      float v = (dx * std::cos(s.angle) + dy * std::sin(s.angle)) / s.size + 0.5f;
+      float u = (-dx * std::sin(s.angle) + dy * std::cos(s.angle)) / s.size + 0.5f;
+      bool inside = needles ? insideNeedle(u, v, 0.03f) : insideBlade(u, v);
+      if (inside) c = leafColorAt(look, u, v) * glm::vec4(glm::vec3(0.75f + s.size), 1.0f);
     }
-  return image;
+    return c;
+  });
 }
 
 Material makeMaterial(MaterialKind kind, const Species& species) {

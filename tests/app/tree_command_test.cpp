@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "test_files.hpp"
+
 namespace {
 
 struct RunResult {
@@ -28,11 +30,7 @@ RunResult run(const std::string& arguments) {
 }
 
 std::filesystem::path freshDirectory(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() /
-             ("ecoforest_app_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return eco::test::freshDirectory("app_" + name);
 }
 
 nlohmann::json statsOf(const std::string& arguments) {
@@ -121,7 +119,7 @@ TEST(TreeCommand, BadSpeciesFileIsExitTwoWithFileLineAndNoOutput) {
   EXPECT_EQ(r.output.rfind(expected, 0), 0u) << r.output;
   EXPECT_NE(r.output.find("strand.kc: expected a number"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.glb"));
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);  // no temporaries
+  EXPECT_EQ(eco::test::entriesIn(dir), 1u);  // no temporaries
 }
 
 TEST(TreeCommand, BadArgumentsAreExitTwo) {

@@ -6,23 +6,11 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "test_files.hpp"
 
 namespace eco {
-namespace {
-
-std::filesystem::path freshDirectory(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() /
-             ("ecoforest_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-std::size_t entriesIn(const std::filesystem::path& dir) {
-  return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(dir), {}));
-}
-
-}  // namespace
+using test::entriesIn;
+using test::freshDirectory;
 
 TEST(AtomicFile, AppearsOnlyOnCommit) {
   auto dir = freshDirectory("atomic");

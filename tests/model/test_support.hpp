@@ -5,6 +5,7 @@
 #include <string>
 
 #include "model/species.hpp"
+#include "test_files.hpp"
 
 namespace eco::test {
 
@@ -12,9 +13,6 @@ namespace eco::test {
 Species loadNamed(const std::string& name);
 // The same species with no individual variation, so angles and lengths are the paper's.
 Species withoutVariation(Species species);
-// An empty folder under the temporary directory, unique to this process.
-std::filesystem::path freshDirectory(const std::string& name);
-std::string readFile(const std::filesystem::path& file);
 // Writes `text` to NAME.toml in a fresh folder and returns its path.
 std::filesystem::path writeTemporary(const std::string& name, const std::string& text);
 

@@ -1,0 +1,14 @@
+// File helpers shared by the test suites of every module.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace eco::test {
+
+// An empty folder under the temporary directory, unique to this process.
+std::filesystem::path freshDirectory(const std::string& name);
+std::string readFile(const std::filesystem::path& file);
+std::size_t entriesIn(const std::filesystem::path& folder);
+
+}  // namespace eco::test

@@ -21,11 +21,11 @@ namespace {
 struct Node {
   std::int32_t parent = -1;
   int g = 0, w = 0;
-  int strands = 1;           // S_0
-  int majorStrands = 0;      // S_1 of the split at this node's tip (0 for a terminal)
-  double startDist = 0.0;    // path length from the ground to this node's base, mature tree
-  double fullLength = 0.0;   // l_0 at maturity, metres
-  double branchAngle = 0.0;  // +alpha_1 (major) or -alpha_2 (minor), degrees, from the parent
+  int strands = 1;               // S_0
+  int majorStrands = 0;          // S_1 of the split at this node's tip (0 for a terminal)
+  std::int32_t majorChild = -1;  // node index of the major sub-branch
+  double fullLength = 0.0;       // l_0 at maturity, metres
+  double branchAngle = 0.0;      // +alpha_1 (major) or -alpha_2 (minor), degrees, from the parent
   bool major = false;
   // Used for this node's own split:
   double alphaM_deg = 0.0;             // alpha_m^{g,w}
@@ -65,10 +65,7 @@ std::vector<Node> splitStrands(const Species& species, std::uint64_t seed) {
     node.major = call.major;
     node.branchAngle = call.branchAngle;
     node.fullLength = call.activeLength * (1.0 + v.length * rng.uniform(-1.0, 1.0));
-    if (call.parent >= 0) {
-      const Node& parent = nodes[call.parent];
-      node.startDist = parent.startDist + parent.fullLength;
-    }
+    if (call.parent >= 0 && call.major) nodes[call.parent].majorChild = index;
     if (node.strands > 1) {
       LocalParams local = evaluateLocal(p.graphs, node.g, node.w);
       const double s0 = node.strands;
@@ -126,15 +123,20 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
   ECO_ASSERT(p.strands >= 1, "strands=" << p.strands);
   const std::vector<Node> nodes = splitStrands(species, options.seed);
 
-  // Growth: a front travels outward along every path from the ground at constant speed,
-  // reaching the farthest tip at age 1. A segment is as long as the front has gone past its
-  // base; its children emerge at zero length when it is complete.
-  double longestPath = 0.0;
-  for (const Node& n : nodes) longestPath = std::max(longestPath, n.startDist + n.fullLength);
+  // Growth (docs/model.md): development runs through the Weibull orders one after another
+  // -- segments of order w lengthen from zero while development passes from w/W to
+  // (w+1)/W -- and the whole tree scales with the square root of development. Children
+  // emerge at zero length when their parent is complete; nothing jumps.
+  int deepest = 0;
+  for (const Node& n : nodes) deepest = std::max(deepest, n.w);
+  const double orders = deepest + 1.0;
   const double age = std::clamp(options.age, 0.0, 1.0);
-  const double growth = kSeedlingFraction + (1.0 - kSeedlingFraction) * age;
-  const double front = growth * longestPath;
+  const double development = kSeedlingFraction + (1.0 - kSeedlingFraction) * age;
   const bool mature = age >= 1.0;
+  const double scale = mature ? 1.0 : std::sqrt(development);
+  std::vector<double> progress(nodes.size());  // 0 unborn .. 1 full length, of each node
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    progress[i] = mature ? 1.0 : std::clamp(development * orders - nodes[i].w, 0.0, 1.0);
 
   const double wg = options.windDirected.value_or(p.windDirected);
   const double ws = options.windUndirected.value_or(p.windUndirected);
@@ -153,10 +155,9 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
 
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const Node& node = nodes[i];
-    if (!mature && node.parent >= 0 && node.startDist >= front) continue;
+    if (node.parent >= 0 && progress[i] <= 0.0) continue;
     BranchSegment seg;
-    seg.length_m = static_cast<float>(
-        mature ? node.fullLength : std::clamp(front - node.startDist, 0.0, node.fullLength));
+    seg.length_m = static_cast<float>(node.fullLength * progress[i] * scale);
     seg.gravelius = static_cast<std::int16_t>(node.g);
     seg.weibull = static_cast<std::int16_t>(node.w);
     seg.strands = node.strands;
@@ -164,7 +165,7 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
     seg.windPhaseX = node.phaseX;
     seg.windPhaseZ = node.phaseZ;
     // Thickness from Mandelbrot: d = k_d sqrt(S_0); the whole tree thickens as it grows.
-    const double girth = 0.5 * p.kd * growth;
+    const double girth = 0.5 * p.kd * development;
     seg.startRadius_m = static_cast<float>(girth * std::sqrt(node.strands));
     seg.endRadius_m = static_cast<float>(
         node.majorStrands > 0 ? girth * std::sqrt(node.majorStrands) : 0.5 * seg.startRadius_m);
@@ -203,11 +204,17 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
     const int fewest = static_cast<int>(std::floor(p.leafDensity));
     const LeafPattern patterns[2] = {makeLeafPattern(p.leafDistribution, fewest),
                                      makeLeafPattern(p.leafDistribution, fewest + 1)};
+    auto grownFraction = [&](std::int32_t n) { return n < 0 ? 0.0 : progress[n]; };
     for (std::size_t i = 0; i < nodes.size(); ++i) {
-      if (nodes[i].strands != 1 || segmentOf[i] < 0) continue;
+      if (segmentOf[i] < 0) continue;
       const BranchSegment& twig = skeleton.segments[segmentOf[i]];
-      // Leaves unfold as their twig lengthens.
-      double unfolded = nodes[i].fullLength > 0.0 ? twig.length_m / nodes[i].fullLength : 1.0;
+      // Leaves unfold as their twig lengthens. While a tree grows, the current tip of
+      // every shoot carries leaves too: they shrink away as the shoot's major sub-branch
+      // grows and takes over, so a sapling is leafy and the mature tree keeps only the
+      // terminal strands' leaves, without any leaf popping in or out.
+      double unfolded = grownFraction(static_cast<std::int32_t>(i));
+      if (nodes[i].strands > 1) unfolded *= 1.0 - grownFraction(nodes[i].majorChild);
+      if (unfolded <= 0.0) continue;
       Rng rng(streamKey(options.seed, i, purpose("leaves")));
       const LeafPattern& pattern = patterns[rng.stochasticRound(p.leafDensity) - fewest];
       auto size = static_cast<float>(p.leafSize_m * unfolded);

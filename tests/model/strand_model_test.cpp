@@ -234,6 +234,29 @@ TEST(StrandModel, GrowthIsContinuousAndMonotone) {
   EXPECT_EQ(previousSegments, 1999u);
 }
 
+TEST(StrandModel, SaplingsAreLeafyAndFoliageChangesSmoothly) {
+  Species maple = test::loadNamed("maple");
+  auto leafArea = [&](double age) {
+    double area = 0.0;
+    for (const Leaf& leaf : buildStrandTree(maple, {.age = age}).leaves)
+      area += leaf.size_m * leaf.size_m;
+    return area;
+  };
+  const double mature = leafArea(1.0);
+  EXPECT_GT(leafArea(0.0), 0.0) << "even a seedling has leaves";
+  EXPECT_GT(buildStrandTree(maple, {.age = 0.25}).leaves.size(), 100u);
+  // Continuous, not popping: the change shrinks with the step. Whole branch orders hand
+  // over together, so foliage changes fastest there; 0.1% of age never moves more than
+  // 3% of the mature leaf area, 0.01% never more than 0.3%.
+  for (double step : {0.001, 0.0001}) {
+    double worst = 0.0;
+    for (double age = 0.0; age + step <= 1.0; age += step < 0.001 ? 0.0137 : step)
+      worst = std::max(worst, std::abs(leafArea(age + step) - leafArea(age)));
+    EXPECT_LT(worst, 30.0 * step * mature) << "step " << step;
+  }
+  EXPECT_EQ(buildStrandTree(maple, {}).leaves.size(), 6000u);  // mature: terminal strands only
+}
+
 TEST(StrandModel, NewSegmentsEmergeAtZeroLength) {
   Species beech = test::loadNamed("beech");
   TreeSkeleton before = buildStrandTree(beech, {.age = 0.5});

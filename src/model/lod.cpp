@@ -24,7 +24,7 @@ MeshOptions lod0Options(const Species& species, int maxSides) {
 }
 
 // Leaves under the same branch of at least kLod1ClusterStrands strands become one cluster
-// of two crossed cards with the same total leaf area.
+// of two crossed cards showing the same visible leaf area.
 void clusterLeaves(const TreeSkeleton& skeleton, const Species& species, MeshPart& clusters) {
   struct Cluster {
     glm::vec3 centroid{0.0f};

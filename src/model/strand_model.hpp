@@ -25,7 +25,7 @@ struct TreeBuildOptions {
   bool leaves = true;
 };
 
-// The fraction of the mature growth front a seedling (age 0) already has.
+// The development a seedling (age 0) already has (growth rule in docs/model.md).
 inline constexpr double kSeedlingFraction = 0.04;
 
 TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& options);

@@ -31,6 +31,10 @@ class TomlTable {
 
   const std::string& file() const { return file_; }
   bool has(std::string_view key) const { return table_->contains(key); }
+  bool isArray(std::string_view key) const {
+    const toml::node* node = table_->get(key);
+    return node != nullptr && node->is_array();
+  }
 
   // Each getter marks the key as used. Without a fallback the key is required.
   double number(std::string_view key, std::optional<double> fallback = {}, Range range = {});

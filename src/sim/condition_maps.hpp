@@ -1,0 +1,18 @@
+// What `ecoforest conditions` writes: maps/<field>.exr (raw floats), maps/<field>.png
+// (colour-mapped, with a legend strip giving the range and unit) and conditions.json.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "sim/conditions.hpp"
+
+namespace eco {
+
+// RGB of a field value on the field's colour ramp; t in [0, 1].
+glm::vec3 rampColor(const std::string& field, double t);
+
+void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport& report, const Scenario& scenario,
+                           const std::filesystem::path& folder);
+
+}  // namespace eco

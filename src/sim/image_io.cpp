@@ -1,0 +1,92 @@
+#include "sim/image_io.hpp"
+
+#include <cmath>
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "core/error.hpp"
+
+namespace eco {
+namespace {
+
+InputError imageError(const std::filesystem::path& file, const std::string& message) {
+  return InputError({file.string(), 0, ""}, message);
+}
+
+void writeAtomically(const std::filesystem::path& file, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
+                     const void* pixels) {
+  std::filesystem::path temporary = file;
+  temporary.replace_filename(file.stem().string() + ".tmp-" + std::to_string(::getpid()) +
+                             file.extension().string());
+  auto out = OIIO::ImageOutput::create(temporary.string());
+  if (!out) throw imageError(file, "cannot write this image format: " + OIIO::geterror());
+  bool ok = out->open(temporary.string(), spec) && out->write_image(type, pixels) && out->close();
+  std::error_code ignored;
+  if (!ok) {
+    std::string reason = out->geterror();
+    std::filesystem::remove(temporary, ignored);
+    throw imageError(file, "cannot write image: " + reason);
+  }
+  std::filesystem::rename(temporary, file, ignored);
+  if (ignored) {
+    std::filesystem::remove(temporary, ignored);
+    throw imageError(file, "cannot rename the finished image into place");
+  }
+}
+
+}  // namespace
+
+SingleChannelImage readSingleChannel(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw imageError(file, "no such file");
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw imageError(file, "cannot read image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.nchannels != 1)
+    throw imageError(file, "expected a single-channel (grey) heightmap, found " + std::to_string(spec.nchannels) +
+                               " channels");
+  if (spec.width < 2 || spec.height < 2)
+    throw imageError(file, "a heightmap needs at least 2 x 2 pixels, found " + std::to_string(spec.width) + " x " +
+                               std::to_string(spec.height));
+  SingleChannelImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  image.values.resize(static_cast<std::size_t>(spec.width) * spec.height);
+  if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.values.data()))
+    throw imageError(file, "cannot read pixels: " + in->geterror());
+  // OpenImageIO maps unsigned integers to [0, 1] (and signed to [-1, 1]); undo that so
+  // callers see the stored values.
+  double scale = 1.0;
+  switch (spec.format.basetype) {
+    case OIIO::TypeDesc::UINT8: scale = 255.0; break;
+    case OIIO::TypeDesc::UINT16: scale = 65535.0; break;
+    case OIIO::TypeDesc::INT16: scale = 32767.0; break;
+    case OIIO::TypeDesc::UINT32: scale = 4294967295.0; break;
+    default: break;
+  }
+  image.typeMax = scale;
+  for (float& v : image.values) {
+    if (!std::isfinite(v)) throw imageError(file, "the heightmap contains NaN or infinite pixels");
+    if (scale != 1.0) v = static_cast<float>(std::round(v * scale));
+  }
+  return image;
+}
+
+void writeFloatImage(const std::filesystem::path& file, int width, int height, int channels,
+                     const std::vector<float>& values) {
+  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+  writeAtomically(file, spec, OIIO::TypeDesc::FLOAT, values.data());
+}
+
+void writeUint16Image(const std::filesystem::path& file, int width, int height,
+                      const std::vector<std::uint16_t>& values) {
+  OIIO::ImageSpec spec(width, height, 1, OIIO::TypeDesc::UINT16);
+  writeAtomically(file, spec, OIIO::TypeDesc::UINT16, values.data());
+}
+
+void writeRgb8Image(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgb) {
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  writeAtomically(file, spec, OIIO::TypeDesc::UINT8, rgb.data());
+}
+
+}  // namespace eco

@@ -1,0 +1,31 @@
+// Raster files through OpenImageIO: heightmaps in, condition maps out. Every write goes to
+// a temporary name beside the target (same extension, so OpenImageIO picks the same
+// format) and is renamed only when complete.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace eco {
+
+struct SingleChannelImage {
+  int width = 0;
+  int height = 0;
+  std::vector<float> values;  // row 0 first; integers as stored (not divided by the type's max)
+  double typeMax = 1.0;       // largest value of the stored type (255, 65535, ...); 1 for floats
+};
+
+// Reads a one-channel image. Integer pixel types come back as their stored values
+// (a 16-bit 40000 is 40000.0f): OpenImageIO's normalisation is undone. Unreadable files,
+// several channels, fewer than 2 x 2 pixels and NaN or infinite pixels are InputErrors.
+SingleChannelImage readSingleChannel(const std::filesystem::path& file);
+
+void writeFloatImage(const std::filesystem::path& file, int width, int height, int channels,
+                     const std::vector<float>& values);
+void writeUint16Image(const std::filesystem::path& file, int width, int height,
+                      const std::vector<std::uint16_t>& values);
+void writeRgb8Image(const std::filesystem::path& file, int width, int height,
+                    const std::vector<std::uint8_t>& rgb);
+
+}  // namespace eco

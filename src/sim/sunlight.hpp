@@ -1,0 +1,84 @@
+// Sunniness from the sun's path over a year and Embree occlusion rays against the terrain
+// (docs/conditions.md). Directions here are (east, north, up) unit vectors.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "sim/terrain.hpp"
+
+namespace eco {
+
+struct SunlightSettings {
+  int days = 12;               // days sampled through the year
+  int hoursPerDay = 10;        // sun positions between sunrise and sunset of each day
+  int skyDirections = 24;      // directions over the sky hemisphere for the sky-view factor
+  double diffuseFraction = 0.4;  // share of diffuse light in annual insolation on open flat ground
+};
+
+// Sun directions above the horizon with weights proportional to the time they stand for
+// (declination by Cooper's formula, hour angles spread evenly from sunrise to sunset).
+struct SunPath {
+  std::vector<glm::dvec3> directions;
+  std::vector<double> weights;
+};
+SunPath makeSunPath(double latitude_deg, const SunlightSettings& settings);
+
+// Directions spread evenly (in solid angle) over the upper hemisphere (a Fibonacci lattice).
+std::vector<glm::dvec3> skyDirections(int count);
+
+// The unit normal of a plane of slope and aspect (compass bearing it faces).
+glm::dvec3 planeNormal(double slope_deg, double aspect_deg);
+// Annual direct-beam insolation on an unshaded plane relative to horizontal, for the sun path.
+double unshadedDirectRatio(const SunPath& sun, glm::dvec3 normal);
+
+// The terrain as an Embree triangle mesh (two triangles per grid square, vertices at cell
+// centres) in one Embree device shared by the process.
+class TerrainScene {
+ public:
+  explicit TerrainScene(const Terrain& terrain);
+  ~TerrainScene();
+  TerrainScene(const TerrainScene&) = delete;
+  TerrainScene& operator=(const TerrainScene&) = delete;
+
+  // For each ray (origin, unit direction, tnear, tfar): is anything in the way?
+  struct Ray {
+    glm::vec3 origin;
+    glm::vec3 direction;
+    float tnear = 0.0f, tfar = 0.0f;
+  };
+  // Casts a batch through rtcOccluded1M; occluded[i] = 1 where ray i is blocked.
+  void occluded(const std::vector<Ray>& rays, std::vector<std::uint8_t>& occluded) const;
+  // The same rays one by one with rtcOccluded1: the plain reference loop of the benchmark.
+  void occludedOneByOne(const std::vector<Ray>& rays, std::vector<std::uint8_t>& occluded) const;
+
+  glm::vec3 cellPosition(int x, int y) const;
+  float maxHeight() const { return maxHeight_m_; }
+  float extent() const { return extent_m_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  const Terrain& terrain_;
+  float maxHeight_m_ = 0.0f;
+  float extent_m_ = 0.0f;
+};
+
+struct SunlightParts {
+  Field directRelative;  // annual direct beam, shaded, relative to unshaded flat ground
+  Field skyView;         // cosine-weighted visible sky, 1 on open flat ground
+  double best = 1.0;     // the insolation of the best unshaded slope, relative to flat
+  std::uint64_t rays = 0;
+};
+
+// sunniness = ((1 - f) direct + f sky) / best, in [0, 1]: 1 is the sunniest unshaded slope
+// possible at this latitude, open flat ground is 1 / best.
+void computeSunniness(const Terrain& terrain, const Field& slope_deg, const Field& aspect_deg,
+                      double latitude_deg, const SunlightSettings& settings, Field& sunniness,
+                      SunlightParts* parts = nullptr, const std::function<void(double)>& progress = {});
+
+}  // namespace eco

@@ -1,0 +1,84 @@
+#include "sim/terrain.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "sim/image_io.hpp"
+
+namespace eco {
+
+Terrain readHeightmap(const std::filesystem::path& file, double dx_m, double dy_m,
+                      std::optional<double> heightMin_m, std::optional<double> heightMax_m) {
+  SingleChannelImage image = readSingleChannel(file);
+  Terrain terrain;
+  terrain.grid = Grid{image.width, image.height, dx_m, dy_m};
+  terrain.height_m = std::move(image.values);
+  if (heightMin_m && heightMax_m) {
+    // Integer images: 0 .. maximum of the file's type; float images: 0 .. 1.
+    const double top = image.typeMax;
+    const double lo = *heightMin_m, span = *heightMax_m - *heightMin_m;
+    for (float& h : terrain.height_m) h = static_cast<float>(lo + span * (h / top));
+  }
+  return terrain;
+}
+
+Terrain generateMidpoint(const GeneratedTerrain& settings, double dx_m, double dy_m, double base_m,
+                         std::uint64_t seed) {
+  const int n = settings.size;
+  ECO_ASSERT(n >= 3 && ((n - 1) & (n - 2)) == 0, "size=" << n);
+  Terrain terrain;
+  terrain.grid = Grid{n, n, dx_m, dy_m};
+  Field& h = terrain.height_m;
+  h.assign(terrain.grid.cellCount(), 0.0f);
+  auto offset = [&](int x, int y, double amplitude) {
+    Rng rng(streamKey(seed, static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y), purpose("midpoint")));
+    return static_cast<float>(amplitude * rng.uniform(-1.0, 1.0));
+  };
+  auto at = [&](int x, int y) -> float& { return h[terrain.grid.index(x, y)]; };
+  for (int x : {0, n - 1})
+    for (int y : {0, n - 1}) at(x, y) = offset(x, y, 1.0);
+  double amplitude = 1.0;
+  for (int step = n - 1; step > 1; step /= 2) {
+    const int half = step / 2;
+    amplitude *= settings.roughness;
+    // Diamond: the centre of every square is its corners' mean plus a displacement.
+    for (int y = half; y < n; y += step)
+      for (int x = half; x < n; x += step)
+        at(x, y) = 0.25f * (at(x - half, y - half) + at(x + half, y - half) + at(x - half, y + half) +
+                            at(x + half, y + half)) +
+                   offset(x, y, amplitude);
+    // Square: every edge midpoint is the mean of its (up to four) diamond neighbours.
+    for (int y = 0; y < n; y += half)
+      for (int x = (y / half) % 2 == 0 ? half : 0; x < n; x += step) {
+        float sum = 0.0f;
+        int count = 0;
+        for (auto [ox, oy] : {std::pair{-half, 0}, {half, 0}, {0, -half}, {0, half}})
+          if (terrain.grid.contains(x + ox, y + oy)) sum += at(x + ox, y + oy), ++count;
+        at(x, y) = sum / static_cast<float>(count) + offset(x, y, amplitude);
+      }
+  }
+  auto [lo, hi] = std::minmax_element(h.begin(), h.end());
+  const float low = *lo, span = std::max(*hi - *lo, 1e-6f);
+  for (float& v : h) v = static_cast<float>(base_m + settings.relief_m * (v - low) / span);
+  return terrain;
+}
+
+Terrain loadTerrain(const Scenario& scenario) {
+  const TerrainSpec& spec = scenario.terrain;
+  if (spec.generate)
+    return generateMidpoint(*spec.generate, spec.cellDx_m, spec.cellDy_m, spec.baseAltitude_m, scenario.seed);
+  return readHeightmap(*spec.heightmap, spec.cellDx_m, spec.cellDy_m, spec.heightMin_m, spec.heightMax_m);
+}
+
+void writeHeightmap16(const Terrain& terrain, const std::filesystem::path& file, double lo_m, double hi_m) {
+  std::vector<std::uint16_t> values(terrain.height_m.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    double t = std::clamp((terrain.height_m[i] - lo_m) / (hi_m - lo_m), 0.0, 1.0);
+    values[i] = static_cast<std::uint16_t>(std::lround(t * 65535.0));
+  }
+  writeUint16Image(file, terrain.grid.width, terrain.grid.height, values);
+}
+
+}  // namespace eco

@@ -15,10 +15,12 @@ std::filesystem::path dataDirectory() {
   return ECOFOREST_DATA_DIR;
 }
 
-std::filesystem::path resolveSpecies(const std::string& nameOrPath) {
+namespace {
+
+std::filesystem::path resolveNamed(const std::string& nameOrPath,
+                                   const std::filesystem::path& folder, const char* what) {
   std::filesystem::path given(nameOrPath);
   if (nameOrPath.find('/') != std::string::npos || given.extension() == ".toml") return given;
-  std::filesystem::path folder = dataDirectory() / "species";
   std::filesystem::path file = folder / (nameOrPath + ".toml");
   if (std::filesystem::exists(file)) return file;
   std::vector<std::string> known;
@@ -28,8 +30,19 @@ std::filesystem::path resolveSpecies(const std::string& nameOrPath) {
   std::sort(known.begin(), known.end());
   std::string list;
   for (const std::string& name : known) list += (list.empty() ? "" : ", ") + name;
-  throw InputError({nameOrPath, 0, ""}, "unknown species (looked in " + folder.string() +
+  throw InputError({nameOrPath, 0, ""}, std::string("unknown ") + what + " (looked in " +
+                                            folder.string() +
                                             "; available: " + (list.empty() ? "none" : list) + ")");
+}
+
+}  // namespace
+
+std::filesystem::path resolveSpecies(const std::string& nameOrPath) {
+  return resolveNamed(nameOrPath, dataDirectory() / "species", "species");
+}
+
+std::filesystem::path resolveScenario(const std::string& nameOrPath) {
+  return resolveNamed(nameOrPath, dataDirectory(), "scenario");
 }
 
 }  // namespace eco

@@ -12,5 +12,7 @@ std::filesystem::path dataDirectory();
 // "beech" -> <data>/species/beech.toml; a path (with a '/' or ending in .toml) is used as
 // given. Unknown names are an InputError listing the species that exist.
 std::filesystem::path resolveSpecies(const std::string& nameOrPath);
+// "valley" -> <data>/valley.toml, likewise.
+std::filesystem::path resolveScenario(const std::string& nameOrPath);
 
 }  // namespace eco

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/conditions_command.hpp"
 #include "app/tree_command.hpp"
 #include "core/error.hpp"
 
@@ -12,6 +13,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("ecoforest ") + ECOFOREST_VERSION);
   app.require_subcommand(1);
   eco::addTreeCommand(app);
+  eco::addConditionsCommand(app);
+  eco::addTerrainCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

@@ -1,7 +1,7 @@
 #include "core/progress.hpp"
 
-#include <cstdio>
 #include <unistd.h>
+#include <cstdio>
 
 namespace eco {
 
@@ -11,7 +11,9 @@ Progress::~Progress() {
   if (enabled_) std::fprintf(stderr, "\r%-24s done\n", label_.c_str());
 }
 
-bool Progress::stderrIsTerminal() { return ::isatty(STDERR_FILENO) != 0; }
+bool Progress::stderrIsTerminal() {
+  return ::isatty(STDERR_FILENO) != 0;
+}
 
 void Progress::update(double fraction) {
   if (!enabled_) return;

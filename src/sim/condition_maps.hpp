@@ -12,7 +12,7 @@ namespace eco {
 // RGB of a field value on the field's colour ramp; t in [0, 1].
 glm::vec3 rampColor(const std::string& field, double t);
 
-void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport& report, const Scenario& scenario,
-                           const std::filesystem::path& folder);
+void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport& report,
+                           const Scenario& scenario, const std::filesystem::path& folder);
 
 }  // namespace eco

@@ -10,15 +10,19 @@ namespace eco {
 
 const std::vector<FieldInfo>& conditionFieldInfo() {
   static const std::vector<FieldInfo> info = {
-      {"altitude", "m", &ConditionFields::altitude_m},   {"slope", "degrees", &ConditionFields::slope_deg},
-      {"aspect", "degrees", &ConditionFields::aspect_deg}, {"moisture", "0-1", &ConditionFields::moisture},
-      {"windiness", "0-1", &ConditionFields::windiness}, {"sunniness", "0-1", &ConditionFields::sunniness},
+      {"altitude", "m", &ConditionFields::altitude_m},
+      {"slope", "degrees", &ConditionFields::slope_deg},
+      {"aspect", "degrees", &ConditionFields::aspect_deg},
+      {"moisture", "0-1", &ConditionFields::moisture},
+      {"windiness", "0-1", &ConditionFields::windiness},
+      {"sunniness", "0-1", &ConditionFields::sunniness},
   };
   return info;
 }
 
-ConditionFields computeConditions(const Terrain& terrain, const Climate& climate, const SunlightSettings& sunlight,
-                                  ConditionsReport* report, const std::function<void(const char*, double)>& progress) {
+ConditionFields computeConditions(const Terrain& terrain, const Climate& climate,
+                                  const SunlightSettings& sunlight, ConditionsReport* report,
+                                  const std::function<void(const char*, double)>& progress) {
   using Clock = std::chrono::steady_clock;
   ConditionFields fields;
   fields.grid = terrain.grid;
@@ -33,12 +37,17 @@ ConditionFields computeConditions(const Terrain& terrain, const Climate& climate
   };
   timed("altitude", [&] { fields.altitude_m = terrain.height_m; });
   timed("slope", [&] { computeSlopeAspect(terrain, fields.slope_deg, fields.aspect_deg); });
-  timed("moisture", [&] { computeMoisture(terrain, fields.slope_deg, climate.annualPrecipitation_mm, fields.moisture); });
-  timed("windiness", [&] { computeWindiness(terrain, climate.prevailingWindFrom_deg, fields.windiness); });
+  timed("moisture", [&] {
+    computeMoisture(terrain, fields.slope_deg, climate.annualPrecipitation_mm, fields.moisture);
+  });
+  timed("windiness",
+        [&] { computeWindiness(terrain, climate.prevailingWindFrom_deg, fields.windiness); });
   SunlightParts parts;
   double sunMs = timed("sunniness", [&] {
-    computeSunniness(terrain, fields.slope_deg, fields.aspect_deg, climate.latitude_deg, sunlight, fields.sunniness,
-                     &parts, [&](double f) { if (progress) progress("sunniness", f); });
+    computeSunniness(terrain, fields.slope_deg, fields.aspect_deg, climate.latitude_deg, sunlight,
+                     fields.sunniness, &parts, [&](double f) {
+                       if (progress) progress("sunniness", f);
+                     });
   });
   if (report) {
     report->sunRays = parts.rays;

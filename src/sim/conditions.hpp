@@ -38,7 +38,8 @@ struct ConditionsReport {
 };
 
 // `progress(field, fraction)` is called as work advances (possibly from several threads).
-ConditionFields computeConditions(const Terrain& terrain, const Climate& climate, const SunlightSettings& sunlight,
+ConditionFields computeConditions(const Terrain& terrain, const Climate& climate,
+                                  const SunlightSettings& sunlight,
                                   ConditionsReport* report = nullptr,
                                   const std::function<void(const char*, double)>& progress = {});
 

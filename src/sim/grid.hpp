@@ -13,7 +13,9 @@ struct Grid {
   double dx_m = 1.0;  // ground distance between cell centres, east-west
   double dy_m = 1.0;  // and north-south
 
-  std::size_t cellCount() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
+  std::size_t cellCount() const {
+    return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  }
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
   double area_m2() const { return dx_m * dy_m * static_cast<double>(cellCount()); }

@@ -1,7 +1,7 @@
 #include "sim/image_io.hpp"
 
-#include <cmath>
 #include <unistd.h>
+#include <cmath>
 
 #include <OpenImageIO/imageio.h>
 
@@ -14,8 +14,8 @@ InputError imageError(const std::filesystem::path& file, const std::string& mess
   return InputError({file.string(), 0, ""}, message);
 }
 
-void writeAtomically(const std::filesystem::path& file, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
-                     const void* pixels) {
+void writeAtomically(const std::filesystem::path& file, const OIIO::ImageSpec& spec,
+                     OIIO::TypeDesc type, const void* pixels) {
   std::filesystem::path temporary = file;
   temporary.replace_filename(file.stem().string() + ".tmp-" + std::to_string(::getpid()) +
                              file.extension().string());
@@ -43,11 +43,11 @@ SingleChannelImage readSingleChannel(const std::filesystem::path& file) {
   if (!in) throw imageError(file, "cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.nchannels != 1)
-    throw imageError(file, "expected a single-channel (grey) heightmap, found " + std::to_string(spec.nchannels) +
-                               " channels");
+    throw imageError(file, "expected a single-channel (grey) heightmap, found " +
+                               std::to_string(spec.nchannels) + " channels");
   if (spec.width < 2 || spec.height < 2)
-    throw imageError(file, "a heightmap needs at least 2 x 2 pixels, found " + std::to_string(spec.width) + " x " +
-                               std::to_string(spec.height));
+    throw imageError(file, "a heightmap needs at least 2 x 2 pixels, found " +
+                               std::to_string(spec.width) + " x " + std::to_string(spec.height));
   SingleChannelImage image;
   image.width = spec.width;
   image.height = spec.height;
@@ -58,11 +58,20 @@ SingleChannelImage readSingleChannel(const std::filesystem::path& file) {
   // callers see the stored values.
   double scale = 1.0;
   switch (spec.format.basetype) {
-    case OIIO::TypeDesc::UINT8: scale = 255.0; break;
-    case OIIO::TypeDesc::UINT16: scale = 65535.0; break;
-    case OIIO::TypeDesc::INT16: scale = 32767.0; break;
-    case OIIO::TypeDesc::UINT32: scale = 4294967295.0; break;
-    default: break;
+    case OIIO::TypeDesc::UINT8:
+      scale = 255.0;
+      break;
+    case OIIO::TypeDesc::UINT16:
+      scale = 65535.0;
+      break;
+    case OIIO::TypeDesc::INT16:
+      scale = 32767.0;
+      break;
+    case OIIO::TypeDesc::UINT32:
+      scale = 4294967295.0;
+      break;
+    default:
+      break;
   }
   image.typeMax = scale;
   for (float& v : image.values) {
@@ -84,7 +93,8 @@ void writeUint16Image(const std::filesystem::path& file, int width, int height,
   writeAtomically(file, spec, OIIO::TypeDesc::UINT16, values.data());
 }
 
-void writeRgb8Image(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgb) {
+void writeRgb8Image(const std::filesystem::path& file, int width, int height,
+                    const std::vector<std::uint8_t>& rgb) {
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
   writeAtomically(file, spec, OIIO::TypeDesc::UINT8, rgb.data());
 }

@@ -46,7 +46,8 @@ std::vector<double> fillDepressions(const Terrain& terrain) {
   return filled;
 }
 
-Field flowAccumulation(const Terrain& terrain, const std::vector<double>& filled, const Field& slope_deg) {
+Field flowAccumulation(const Terrain& terrain, const std::vector<double>& filled,
+                       const Field& slope_deg) {
   const Grid& g = terrain.grid;
   const double diagonal = std::hypot(g.dx_m, g.dy_m);
   std::vector<std::int64_t> receiver(g.cellCount(), -1);
@@ -61,7 +62,8 @@ Field flowAccumulation(const Terrain& terrain, const std::vector<double>& filled
         if (!g.contains(nx, ny)) continue;
         const double distance = kDx[k] == 0 ? g.dy_m : kDy[k] == 0 ? g.dx_m : diagonal;
         const double drop = (filled[c] - filled[g.index(nx, ny)]) / distance;
-        if (drop > steepest) steepest = drop, receiver[c] = static_cast<std::int64_t>(g.index(nx, ny));
+        if (drop > steepest)
+          steepest = drop, receiver[c] = static_cast<std::int64_t>(g.index(nx, ny));
       }
     }
   // Highest cells first, so each passes on everything it has gathered.
@@ -89,12 +91,15 @@ Field wetnessIndex(const Terrain& terrain, const Field& accumulation, const Fiel
   return twi;
 }
 
-void computeMoisture(const Terrain& terrain, const Field& slope_deg, double precipitation_mm, Field& moisture) {
-  Field twi = wetnessIndex(terrain, flowAccumulation(terrain, fillDepressions(terrain), slope_deg), slope_deg);
+void computeMoisture(const Terrain& terrain, const Field& slope_deg, double precipitation_mm,
+                     Field& moisture) {
+  const std::vector<double> filled = fillDepressions(terrain);
+  Field twi = wetnessIndex(terrain, flowAccumulation(terrain, filled, slope_deg), slope_deg);
   const double wetClimate = 1.0 - std::exp(-precipitation_mm / 800.0);
   moisture.resize(twi.size());
   for (std::size_t c = 0; c < twi.size(); ++c) {
-    double topographic = std::clamp((twi[c] - 4.0) / 12.0, 0.0, 1.0);
+    const bool pond = filled[c] - terrain.height_m[c] > kDepression_m;
+    double topographic = pond ? 1.0 : std::clamp((twi[c] - 4.0) / 12.0, 0.0, 1.0);
     moisture[c] = static_cast<float>(wetClimate * (0.3 + 0.7 * topographic));
   }
 }

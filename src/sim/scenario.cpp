@@ -9,13 +9,16 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
   TerrainSpec spec;
   if (terrain.has("heightmap")) spec.heightmap = scenarioFolder / terrain.string("heightmap");
   if (std::optional<TomlTable> generate = terrain.table("generate")) {
-    if (spec.heightmap) terrain.fail("generate", "give either heightmap or [terrain.generate], not both");
+    if (spec.heightmap)
+      terrain.fail("generate", "give either heightmap or [terrain.generate], not both");
     GeneratedTerrain g;
     std::string method = generate->string("method", "midpoint");
-    if (method != "midpoint") generate->fail("method", "unknown method '" + method + "' (expected midpoint)");
+    if (method != "midpoint")
+      generate->fail("method", "unknown method '" + method + "' (expected midpoint)");
     g.size = static_cast<int>(generate->integer("size", g.size, {3, 8193}));
     if (((g.size - 1) & (g.size - 2)) != 0)
-      generate->fail("size", "midpoint displacement needs 2^n + 1 cells per side (e.g. 257, 513, 1025)");
+      generate->fail("size",
+                     "midpoint displacement needs 2^n + 1 cells per side (e.g. 257, 513, 1025)");
     g.roughness = generate->number("roughness", g.roughness, {0.0, 1.0});
     g.relief_m = generate->number("relief_m", g.relief_m, {0.0, 10000.0});
     spec.baseAltitude_m = generate->number("base_altitude_m", 0.0, {-500.0, 9000.0});
@@ -25,15 +28,18 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
   if (!spec.heightmap && !spec.generate)
     terrain.fail("heightmap", "give heightmap = \"FILE\" or a [terrain.generate] table");
   // cell_size_m: one number, or [dx, dy] for non-square cells.
-  std::vector<double> cell = terrain.isArray("cell_size_m") ? terrain.numbers("cell_size_m", 2)
-                                                            : std::vector<double>{terrain.number("cell_size_m", 10.0)};
+  std::vector<double> cell = terrain.isArray("cell_size_m")
+                                 ? terrain.numbers("cell_size_m", 2)
+                                 : std::vector<double>{terrain.number("cell_size_m", 10.0)};
   for (double c : cell)
-    if (!(c > 0.0) || c > 100000.0) terrain.fail("cell_size_m", "cell size must be a positive number of metres");
+    if (!(c > 0.0) || c > 100000.0)
+      terrain.fail("cell_size_m", "cell size must be a positive number of metres");
   spec.cellDx_m = cell.front();
   spec.cellDy_m = cell.back();
   if (terrain.has("height_range_m")) {
     auto range = terrain.numbers("height_range_m", 2, {}, {-12000.0, 12000.0});
-    if (!(range[1] > range[0])) terrain.fail("height_range_m", "expected [lowest, highest] with highest > lowest");
+    if (!(range[1] > range[0]))
+      terrain.fail("height_range_m", "expected [lowest, highest] with highest > lowest");
     spec.heightMin_m = range[0];
     spec.heightMax_m = range[1];
   }
@@ -56,8 +62,10 @@ Scenario loadScenario(const std::filesystem::path& file) {
   if (std::optional<TomlTable> climate = root.table("climate")) {
     Climate& c = s.climate;
     c.latitude_deg = climate->number("latitude_deg", c.latitude_deg, {-89.0, 89.0});
-    c.prevailingWindFrom_deg = climate->number("prevailing_wind_from_deg", c.prevailingWindFrom_deg, {0.0, 360.0});
-    c.annualPrecipitation_mm = climate->number("annual_precipitation_mm", c.annualPrecipitation_mm, {0.0, 15000.0});
+    c.prevailingWindFrom_deg =
+        climate->number("prevailing_wind_from_deg", c.prevailingWindFrom_deg, {0.0, 360.0});
+    c.annualPrecipitation_mm =
+        climate->number("annual_precipitation_mm", c.annualPrecipitation_mm, {0.0, 15000.0});
     climate->finish();
   }
   root.finish();

@@ -11,9 +11,9 @@
 namespace eco {
 
 struct GeneratedTerrain {
-  int size = 513;          // cells per side; midpoint displacement needs 2^n + 1
-  double roughness = 0.55; // amplitude kept from one subdivision level to the next
-  double relief_m = 600.0; // height difference between the lowest and highest cell
+  int size = 513;           // cells per side; midpoint displacement needs 2^n + 1
+  double roughness = 0.55;  // amplitude kept from one subdivision level to the next
+  double relief_m = 600.0;  // height difference between the lowest and highest cell
 };
 
 struct TerrainSpec {

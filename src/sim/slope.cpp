@@ -15,9 +15,13 @@ namespace {
 double extendedHeight(const Terrain& terrain, int x, int y) {
   const Grid& g = terrain.grid;
   if (x < 0) return 2.0 * extendedHeight(terrain, 0, y) - extendedHeight(terrain, -x, y);
-  if (x >= g.width) return 2.0 * extendedHeight(terrain, g.width - 1, y) - extendedHeight(terrain, 2 * (g.width - 1) - x, y);
+  if (x >= g.width)
+    return 2.0 * extendedHeight(terrain, g.width - 1, y) -
+           extendedHeight(terrain, 2 * (g.width - 1) - x, y);
   if (y < 0) return 2.0 * extendedHeight(terrain, x, 0) - extendedHeight(terrain, x, -y);
-  if (y >= g.height) return 2.0 * extendedHeight(terrain, x, g.height - 1) - extendedHeight(terrain, x, 2 * (g.height - 1) - y);
+  if (y >= g.height)
+    return 2.0 * extendedHeight(terrain, x, g.height - 1) -
+           extendedHeight(terrain, x, 2 * (g.height - 1) - y);
   return terrain.heightAt(x, y);
 }
 
@@ -27,8 +31,10 @@ Gradient hornGradient(const Terrain& terrain, int x, int y) {
   const Grid& g = terrain.grid;
   auto z = [&](int dx, int dy) { return extendedHeight(terrain, x + dx, y + dy); };
   // Row -1 is the northern neighbour row (row 0 of the grid is the north edge).
-  double east = ((z(1, -1) + 2.0 * z(1, 0) + z(1, 1)) - (z(-1, -1) + 2.0 * z(-1, 0) + z(-1, 1))) / (8.0 * g.dx_m);
-  double north = ((z(-1, -1) + 2.0 * z(0, -1) + z(1, -1)) - (z(-1, 1) + 2.0 * z(0, 1) + z(1, 1))) / (8.0 * g.dy_m);
+  double east = ((z(1, -1) + 2.0 * z(1, 0) + z(1, 1)) - (z(-1, -1) + 2.0 * z(-1, 0) + z(-1, 1))) /
+                (8.0 * g.dx_m);
+  double north = ((z(-1, -1) + 2.0 * z(0, -1) + z(1, -1)) - (z(-1, 1) + 2.0 * z(0, 1) + z(1, 1))) /
+                 (8.0 * g.dy_m);
   return {east, north};
 }
 

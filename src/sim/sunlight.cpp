@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include <embree3/rtcore.h>
-#include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
 
 #include "core/error.hpp"
 
@@ -71,9 +71,10 @@ SunPath makeSunPath(double latitude_deg, const SunlightSettings& settings) {
     const double step = 2.0 * sunset / settings.hoursPerDay;
     for (int h = 0; h < settings.hoursPerDay; ++h) {
       const double omega = -sunset + (h + 0.5) * step;
-      glm::dvec3 s(-std::cos(delta) * std::sin(omega),
-                   std::sin(delta) * std::cos(phi) - std::cos(delta) * std::cos(omega) * std::sin(phi),
-                   std::sin(delta) * std::sin(phi) + std::cos(delta) * std::cos(omega) * std::cos(phi));
+      glm::dvec3 s(
+          -std::cos(delta) * std::sin(omega),
+          std::sin(delta) * std::cos(phi) - std::cos(delta) * std::cos(omega) * std::sin(phi),
+          std::sin(delta) * std::sin(phi) + std::cos(delta) * std::cos(omega) * std::cos(phi));
       if (s.z <= 0.0) continue;
       path.directions.push_back(glm::normalize(s));
       path.weights.push_back(step);  // time the sample stands for, in radians of hour angle
@@ -107,15 +108,16 @@ double unshadedDirectRatio(const SunPath& sun, glm::dvec3 normal) {
   return flat > 0.0 ? onPlane / flat : 0.0;
 }
 
-TerrainScene::TerrainScene(const Terrain& terrain) : impl_(std::make_unique<Impl>()), terrain_(terrain) {
+TerrainScene::TerrainScene(const Terrain& terrain)
+    : impl_(std::make_unique<Impl>()), terrain_(terrain) {
   const Grid& g = terrain.grid;
   EmbreeDevice& device = embree();
   RTCGeometry mesh = rtcNewGeometry(device.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                3 * sizeof(float), g.cellCount()));
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), g.cellCount()));
   const std::size_t quads = static_cast<std::size_t>(g.width - 1) * (g.height - 1);
-  auto* indices = static_cast<unsigned*>(
-      rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), 2 * quads));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), 2 * quads));
   device.check("allocating the terrain mesh");
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
@@ -126,7 +128,8 @@ TerrainScene::TerrainScene(const Terrain& terrain) : impl_(std::make_unique<Impl
   for (int y = 0; y + 1 < g.height; ++y)
     for (int x = 0; x + 1 < g.width; ++x) {
       auto a = static_cast<unsigned>(g.index(x, y)), b = static_cast<unsigned>(g.index(x + 1, y));
-      auto c = static_cast<unsigned>(g.index(x, y + 1)), d = static_cast<unsigned>(g.index(x + 1, y + 1));
+      auto c = static_cast<unsigned>(g.index(x, y + 1)),
+           d = static_cast<unsigned>(g.index(x + 1, y + 1));
       unsigned tri[6] = {a, c, b, b, c, d};
       std::copy(tri, tri + 6, indices + 6 * t++);
     }
@@ -141,7 +144,9 @@ TerrainScene::TerrainScene(const Terrain& terrain) : impl_(std::make_unique<Impl
   extent_m_ = static_cast<float>(std::hypot(g.width * g.dx_m, g.height * g.dy_m));
 }
 
-TerrainScene::~TerrainScene() { rtcReleaseScene(impl_->scene); }
+TerrainScene::~TerrainScene() {
+  rtcReleaseScene(impl_->scene);
+}
 
 glm::vec3 TerrainScene::cellPosition(int x, int y) const {
   // World: x east, y north (row 0 is the north edge), z up.
@@ -163,19 +168,22 @@ RTCRay toEmbree(const TerrainScene::Ray& r) {
 
 }  // namespace
 
-void TerrainScene::occluded(const std::vector<Ray>& rays, std::vector<std::uint8_t>& blocked) const {
+void TerrainScene::occluded(const std::vector<Ray>& rays,
+                            std::vector<std::uint8_t>& blocked) const {
   thread_local std::vector<RTCRay> batch;
   batch.resize(rays.size());
   for (std::size_t i = 0; i < rays.size(); ++i) batch[i] = toEmbree(rays[i]);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  rtcOccluded1M(impl_->scene, &context, batch.data(), static_cast<unsigned>(batch.size()), sizeof(RTCRay));
+  rtcOccluded1M(impl_->scene, &context, batch.data(), static_cast<unsigned>(batch.size()),
+                sizeof(RTCRay));
   blocked.resize(rays.size());
   for (std::size_t i = 0; i < rays.size(); ++i) blocked[i] = batch[i].tfar < 0.0f ? 1 : 0;
 }
 
-void TerrainScene::occludedOneByOne(const std::vector<Ray>& rays, std::vector<std::uint8_t>& blocked) const {
+void TerrainScene::occludedOneByOne(const std::vector<Ray>& rays,
+                                    std::vector<std::uint8_t>& blocked) const {
   blocked.resize(rays.size());
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -193,7 +201,8 @@ void computeSunniness(const Terrain& terrain, const Field& slope_deg, const Fiel
   const SunPath sun = makeSunPath(latitude_deg, settings);
   const std::vector<glm::dvec3> sky = skyDirections(settings.skyDirections);
   double flatDirect = 0.0, flatSky = 0.0;
-  for (std::size_t i = 0; i < sun.directions.size(); ++i) flatDirect += sun.weights[i] * sun.directions[i].z;
+  for (std::size_t i = 0; i < sun.directions.size(); ++i)
+    flatDirect += sun.weights[i] * sun.directions[i].z;
   for (const glm::dvec3& d : sky) flatSky += d.z;
   const double f = settings.diffuseFraction;
 
@@ -234,7 +243,8 @@ void computeSunniness(const Terrain& terrain, const Field& slope_deg, const Fiel
           // Past the height where the rising ray clears the highest terrain nothing can
           // block it; the map's diagonal bounds near-horizontal rays.
           float clear = (scene.maxHeight() - origin.z + 1.0f) / static_cast<float>(d.z);
-          rays.push_back({origin, glm::vec3(d), tnear, std::min(std::max(clear, tnear), scene.extent())});
+          rays.push_back(
+              {origin, glm::vec3(d), tnear, std::min(std::max(clear, tnear), scene.extent())});
           cellOf.push_back(x);
         }
         if (rays.empty()) continue;
@@ -259,7 +269,8 @@ void computeSunniness(const Terrain& terrain, const Field& slope_deg, const Fiel
 
   sunniness.resize(g.cellCount());
   for (std::size_t c = 0; c < sunniness.size(); ++c)
-    sunniness[c] = static_cast<float>(std::clamp(((1.0 - f) * direct[c] + f * skyView[c]) / best, 0.0, 1.0));
+    sunniness[c] =
+        static_cast<float>(std::clamp(((1.0 - f) * direct[c] + f * skyView[c]) / best, 0.0, 1.0));
   if (parts) {
     parts->directRelative = std::move(direct);
     parts->skyView = std::move(skyView);

@@ -14,9 +14,9 @@
 namespace eco {
 
 struct SunlightSettings {
-  int days = 12;               // days sampled through the year
-  int hoursPerDay = 10;        // sun positions between sunrise and sunset of each day
-  int skyDirections = 24;      // directions over the sky hemisphere for the sky-view factor
+  int days = 12;                 // days sampled through the year
+  int hoursPerDay = 10;          // sun positions between sunrise and sunset of each day
+  int skyDirections = 24;        // directions over the sky hemisphere for the sky-view factor
   double diffuseFraction = 0.4;  // share of diffuse light in annual insolation on open flat ground
 };
 
@@ -79,6 +79,7 @@ struct SunlightParts {
 // possible at this latitude, open flat ground is 1 / best.
 void computeSunniness(const Terrain& terrain, const Field& slope_deg, const Field& aspect_deg,
                       double latitude_deg, const SunlightSettings& settings, Field& sunniness,
-                      SunlightParts* parts = nullptr, const std::function<void(double)>& progress = {});
+                      SunlightParts* parts = nullptr,
+                      const std::function<void(double)>& progress = {});
 
 }  // namespace eco

@@ -33,7 +33,8 @@ Terrain generateMidpoint(const GeneratedTerrain& settings, double dx_m, double d
   Field& h = terrain.height_m;
   h.assign(terrain.grid.cellCount(), 0.0f);
   auto offset = [&](int x, int y, double amplitude) {
-    Rng rng(streamKey(seed, static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y), purpose("midpoint")));
+    Rng rng(streamKey(seed, static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y),
+                      purpose("midpoint")));
     return static_cast<float>(amplitude * rng.uniform(-1.0, 1.0));
   };
   auto at = [&](int x, int y) -> float& { return h[terrain.grid.index(x, y)]; };
@@ -46,8 +47,8 @@ Terrain generateMidpoint(const GeneratedTerrain& settings, double dx_m, double d
     // Diamond: the centre of every square is its corners' mean plus a displacement.
     for (int y = half; y < n; y += step)
       for (int x = half; x < n; x += step)
-        at(x, y) = 0.25f * (at(x - half, y - half) + at(x + half, y - half) + at(x - half, y + half) +
-                            at(x + half, y + half)) +
+        at(x, y) = 0.25f * (at(x - half, y - half) + at(x + half, y - half) +
+                            at(x - half, y + half) + at(x + half, y + half)) +
                    offset(x, y, amplitude);
     // Square: every edge midpoint is the mean of its (up to four) diamond neighbours.
     for (int y = 0; y < n; y += half)
@@ -68,11 +69,14 @@ Terrain generateMidpoint(const GeneratedTerrain& settings, double dx_m, double d
 Terrain loadTerrain(const Scenario& scenario) {
   const TerrainSpec& spec = scenario.terrain;
   if (spec.generate)
-    return generateMidpoint(*spec.generate, spec.cellDx_m, spec.cellDy_m, spec.baseAltitude_m, scenario.seed);
-  return readHeightmap(*spec.heightmap, spec.cellDx_m, spec.cellDy_m, spec.heightMin_m, spec.heightMax_m);
+    return generateMidpoint(*spec.generate, spec.cellDx_m, spec.cellDy_m, spec.baseAltitude_m,
+                            scenario.seed);
+  return readHeightmap(*spec.heightmap, spec.cellDx_m, spec.cellDy_m, spec.heightMin_m,
+                       spec.heightMax_m);
 }
 
-void writeHeightmap16(const Terrain& terrain, const std::filesystem::path& file, double lo_m, double hi_m) {
+void writeHeightmap16(const Terrain& terrain, const std::filesystem::path& file, double lo_m,
+                      double hi_m) {
   std::vector<std::uint16_t> values(terrain.height_m.size());
   for (std::size_t i = 0; i < values.size(); ++i) {
     double t = std::clamp((terrain.height_m[i] - lo_m) / (hi_m - lo_m), 0.0, 1.0);

@@ -33,6 +33,7 @@ Terrain generateMidpoint(const GeneratedTerrain& settings, double dx_m, double d
                          std::uint64_t seed);
 
 // Saves heights as a 16-bit PNG mapping [lo, hi] onto 0 .. 65535.
-void writeHeightmap16(const Terrain& terrain, const std::filesystem::path& file, double lo_m, double hi_m);
+void writeHeightmap16(const Terrain& terrain, const std::filesystem::path& file, double lo_m,
+                      double hi_m);
 
 }  // namespace eco

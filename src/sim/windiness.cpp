@@ -12,7 +12,8 @@ namespace {
 bool sampleHeight(const Terrain& terrain, double fx, double fy, double& height) {
   const Grid& g = terrain.grid;
   if (fx < 0.0 || fy < 0.0 || fx > g.width - 1.0 || fy > g.height - 1.0) return false;
-  int x0 = std::min(static_cast<int>(fx), g.width - 2), y0 = std::min(static_cast<int>(fy), g.height - 2);
+  int x0 = std::min(static_cast<int>(fx), g.width - 2),
+      y0 = std::min(static_cast<int>(fy), g.height - 2);
   double tx = fx - x0, ty = fy - y0;
   double top = terrain.heightAt(x0, y0) * (1.0 - tx) + terrain.heightAt(x0 + 1, y0) * tx;
   double bottom = terrain.heightAt(x0, y0 + 1) * (1.0 - tx) + terrain.heightAt(x0 + 1, y0 + 1) * tx;
@@ -34,7 +35,8 @@ Field upwindSlope(const Terrain& terrain, double from_deg, double searchDistance
       for (double sector : {-15.0, 0.0, 15.0}) {
         const double bearing = (from_deg + sector) * M_PI / 180.0;
         // Upwind, in cells: east is +x, north is -y.
-        const double ux = std::sin(bearing) * step_m / g.dx_m, uy = -std::cos(bearing) * step_m / g.dy_m;
+        const double ux = std::sin(bearing) * step_m / g.dx_m,
+                     uy = -std::cos(bearing) * step_m / g.dy_m;
         double steepest = -90.0;
         for (int k = 1; k <= steps; ++k) {
           double h;

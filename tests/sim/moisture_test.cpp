@@ -19,7 +19,8 @@ TEST(Moisture, FlatPlaneIsUniform) {
 
 TEST(Moisture, VValleyGathersFlowInItsLine) {
   // Sides fall 0.2 m/m toward the valley line at east = 300 m; the line falls south.
-  Terrain valley = test::analyticTerrain(61, 61, 10, 10, [](double e, double n) { return 0.2 * std::abs(e - 300.0) + 0.02 * n; });
+  Terrain valley = test::analyticTerrain(
+      61, 61, 10, 10, [](double e, double n) { return 0.2 * std::abs(e - 300.0) + 0.02 * n; });
   Field slope, aspect, moisture;
   computeSlopeAspect(valley, slope, aspect);
   Field accumulation = flowAccumulation(valley, fillDepressions(valley), slope);
@@ -45,9 +46,16 @@ TEST(Moisture, PitsFillToTheirSpillLevel) {
   });
   std::vector<double> filled = fillDepressions(bowl);
   const std::size_t centre = bowl.grid.index(20, 20);
-  EXPECT_GT(filled[centre], 99.0);   // the pond reaches the rim
+  EXPECT_GT(filled[centre], 99.0);  // the pond reaches the rim
   EXPECT_LT(filled[centre], 100.01);
   for (std::size_t c = 0; c < filled.size(); ++c) ASSERT_GE(filled[c], bowl.height_m[c]);
+  // The pond is as wet as the climate allows, all over.
+  Field slope(bowl.grid.cellCount(), 5.0f), moisture;
+  computeMoisture(bowl, slope, 1100.0, moisture);
+  const float wettest = static_cast<float>(1.0 - std::exp(-1100.0 / 800.0));
+  EXPECT_FLOAT_EQ(moisture[centre], wettest);
+  EXPECT_FLOAT_EQ(moisture[bowl.grid.index(25, 20)], wettest);
+  EXPECT_LT(moisture[bowl.grid.index(20, 2)], wettest);  // outside the rim
 }
 
 TEST(Moisture, WetterClimateIsWetter) {

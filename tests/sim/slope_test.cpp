@@ -21,7 +21,8 @@ TEST(Slope, FlatPlaneIsLevel) {
 TEST(Slope, TiltedPlaneOfKnownSlopeAndAspect) {
   const double tan20 = std::tan(20.0 * M_PI / 180.0);
   // Rising toward the east: it faces (falls toward) the west.
-  Terrain west = test::analyticTerrain(30, 30, 10, 10, [&](double e, double) { return 100.0 + tan20 * e; });
+  Terrain west =
+      test::analyticTerrain(30, 30, 10, 10, [&](double e, double) { return 100.0 + tan20 * e; });
   Field slope, aspect;
   computeSlopeAspect(west, slope, aspect);
   for (std::size_t c = 0; c < slope.size(); ++c) {

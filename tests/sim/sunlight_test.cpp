@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+#include <glm/geometric.hpp>
 
 #include "sim/slope.hpp"
 #include "terrain_support.hpp"
@@ -22,8 +22,10 @@ double annualClosedForm(double latitude_deg, double equivalent_deg) {
     double n = (day + 0.5) / 10.0;
     double delta = 23.44 * M_PI / 180.0 * std::sin(2.0 * M_PI * (284.0 + n) / 365.0);
     double sunset = std::acos(std::clamp(-std::tan(phi) * std::tan(delta), -1.0, 1.0));
-    double lit = std::min(sunset, std::acos(std::clamp(-std::tan(phiE) * std::tan(delta), -1.0, 1.0)));
-    sum += 2.0 * (std::sin(delta) * std::sin(phiE) * lit + std::cos(delta) * std::cos(phiE) * std::sin(lit));
+    double lit =
+        std::min(sunset, std::acos(std::clamp(-std::tan(phiE) * std::tan(delta), -1.0, 1.0)));
+    sum += 2.0 * (std::sin(delta) * std::sin(phiE) * lit +
+                  std::cos(delta) * std::cos(phiE) * std::sin(lit));
   }
   return sum;
 }
@@ -73,8 +75,10 @@ TEST(Sunlight, SouthAndNorthSlopesMatchTheClosedForm) {
   const double latitude = 46.0, tilt = 30.0, t = std::tan(tilt * M_PI / 180.0);
   SunlightSettings fine{.days = 48, .hoursPerDay = 48};
   // Rising northward: faces south. Rising southward: faces north.
-  Terrain south = test::analyticTerrain(21, 21, 10, 10, [&](double, double n) { return 500.0 + t * n; });
-  Terrain north = test::analyticTerrain(21, 21, 10, 10, [&](double, double n) { return 800.0 - t * n; });
+  Terrain south =
+      test::analyticTerrain(21, 21, 10, 10, [&](double, double n) { return 500.0 + t * n; });
+  Terrain north =
+      test::analyticTerrain(21, 21, 10, 10, [&](double, double n) { return 800.0 - t * n; });
   const std::size_t centre = south.grid.index(10, 10);
   double southDirect = sunOn(south, latitude, fine).parts.directRelative[centre];
   double northDirect = sunOn(north, latitude, fine).parts.directRelative[centre];
@@ -84,7 +88,8 @@ TEST(Sunlight, SouthAndNorthSlopesMatchTheClosedForm) {
   // Sampling 48 days x 48 sun positions against the closed form's integral: within 1%.
   EXPECT_NEAR(southDirect, expectedSouth, 0.01 * expectedSouth);
   EXPECT_NEAR(northDirect, expectedNorth, 0.01 * expectedNorth);
-  EXPECT_NEAR(southDirect / northDirect, expectedSouth / expectedNorth, 0.02 * expectedSouth / expectedNorth);
+  EXPECT_NEAR(southDirect / northDirect, expectedSouth / expectedNorth,
+              0.02 * expectedSouth / expectedNorth);
   EXPECT_GT(southDirect / northDirect, 2.0);
 }
 

@@ -15,7 +15,8 @@ inline Terrain analyticTerrain(int width, int height, double dx, double dy,
   t.grid = Grid{width, height, dx, dy};
   t.height_m.resize(t.grid.cellCount());
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) t.height_m[t.grid.index(x, y)] = static_cast<float>(heightAt(x * dx, (height - 1 - y) * dy));
+    for (int x = 0; x < width; ++x)
+      t.height_m[t.grid.index(x, y)] = static_cast<float>(heightAt(x * dx, (height - 1 - y) * dy));
   return t;
 }
 

@@ -33,7 +33,9 @@ TEST(Windiness, LeeOfARidgeIsCalmer) {
 }
 
 TEST(Windiness, HigherIsWindierOnOpenGround) {
-  Terrain cone = test::analyticTerrain(41, 41, 10, 10, [](double e, double n) { return 300.0 - 0.1 * std::hypot(e - 200, n - 200); });
+  Terrain cone = test::analyticTerrain(41, 41, 10, 10, [](double e, double n) {
+    return 300.0 - 0.1 * std::hypot(e - 200, n - 200);
+  });
   Field wind;
   computeWindiness(cone, 0.0, wind);
   EXPECT_GT(wind[cone.grid.index(20, 20)], wind[cone.grid.index(20, 38)]);

@@ -194,6 +194,32 @@ void TerrainScene::occludedOneByOne(const std::vector<Ray>& rays,
   }
 }
 
+std::vector<glm::dvec3> rowNormals(const Grid& g, const Field& slope_deg, const Field& aspect_deg,
+                                   int y) {
+  std::vector<glm::dvec3> normals(g.width);
+  for (int x = 0; x < g.width; ++x)
+    normals[x] = planeNormal(slope_deg[g.index(x, y)], std::max(0.0f, aspect_deg[g.index(x, y)]));
+  return normals;
+}
+
+void rowRays(const TerrainScene& scene, int y, const std::vector<glm::dvec3>& normals,
+             glm::dvec3 direction, std::vector<TerrainScene::Ray>& rays, std::vector<int>& cells) {
+  rays.clear();
+  cells.clear();
+  const float cell = scene.cellSize();
+  const float lift = 0.01f * cell, tnear = 0.25f * cell;
+  for (int x = 0; x < static_cast<int>(normals.size()); ++x) {
+    if (glm::dot(normals[x], direction) <= 0.0) continue;  // the slope faces away: self-shaded
+    glm::vec3 origin = scene.cellPosition(x, y) + glm::vec3(0.0f, 0.0f, lift);
+    // Past the height where the rising ray clears the highest terrain nothing can block
+    // it; the map's diagonal bounds near-horizontal rays.
+    float clear = (scene.maxHeight() - origin.z + 1.0f) / static_cast<float>(direction.z);
+    rays.push_back(
+        {origin, glm::vec3(direction), tnear, std::min(std::max(clear, tnear), scene.extent())});
+    cells.push_back(x);
+  }
+}
+
 void computeSunniness(const Terrain& terrain, const Field& slope_deg, const Field& aspect_deg,
                       double latitude_deg, const SunlightSettings& settings, Field& sunniness,
                       SunlightParts* parts, const std::function<void(double)>& progress) {
@@ -219,34 +245,18 @@ void computeSunniness(const Terrain& terrain, const Field& slope_deg, const Fiel
   Field direct(g.cellCount(), 0.0f), skyView(g.cellCount(), 0.0f);
   std::atomic<std::uint64_t> rayCount{0};
   std::atomic<int> rowsDone{0};
-  const float lift = 0.01f * static_cast<float>(std::min(g.dx_m, g.dy_m));
-  const float tnear = 0.25f * static_cast<float>(std::min(g.dx_m, g.dy_m));
-
-  // One batch per row: all cells of the row toward one direction after another, so that
+  // One batch per row and direction: all cells of the row toward one direction, so that
   // neighbouring rays are coherent. Each cell's result depends only on its own rays, so
   // the fields are identical whatever the thread count.
   tbb::parallel_for(0, g.height, [&](int y) {
     std::vector<TerrainScene::Ray> rays;
+    std::vector<int> cellOf;
     std::vector<std::uint8_t> blocked;
     std::vector<double> sumDirect(g.width, 0.0), sumSky(g.width, 0.0);
-    std::vector<glm::dvec3> normal(g.width);
-    for (int x = 0; x < g.width; ++x)
-      normal[x] = planeNormal(slope_deg[g.index(x, y)], std::max(0.0f, aspect_deg[g.index(x, y)]));
+    const std::vector<glm::dvec3> normal = rowNormals(g, slope_deg, aspect_deg, y);
     auto cast = [&](const std::vector<glm::dvec3>& directions, auto&& accumulate) {
       for (std::size_t k = 0; k < directions.size(); ++k) {
-        rays.clear();
-        std::vector<int> cellOf;
-        const glm::dvec3 d = directions[k];
-        for (int x = 0; x < g.width; ++x) {
-          if (glm::dot(normal[x], d) <= 0.0) continue;  // the slope faces away: self-shaded
-          glm::vec3 origin = scene.cellPosition(x, y) + glm::vec3(0.0f, 0.0f, lift);
-          // Past the height where the rising ray clears the highest terrain nothing can
-          // block it; the map's diagonal bounds near-horizontal rays.
-          float clear = (scene.maxHeight() - origin.z + 1.0f) / static_cast<float>(d.z);
-          rays.push_back(
-              {origin, glm::vec3(d), tnear, std::min(std::max(clear, tnear), scene.extent())});
-          cellOf.push_back(x);
-        }
+        rowRays(scene, y, normal, directions[k], rays, cellOf);
         if (rays.empty()) continue;
         scene.occluded(rays, blocked);
         rayCount += rays.size();

@@ -2,6 +2,7 @@
 // (docs/conditions.md). Directions here are (east, north, up) unit vectors.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -57,6 +58,9 @@ class TerrainScene {
   void occludedOneByOne(const std::vector<Ray>& rays, std::vector<std::uint8_t>& occluded) const;
 
   glm::vec3 cellPosition(int x, int y) const;
+  float cellSize() const {
+    return static_cast<float>(std::min(terrain_.grid.dx_m, terrain_.grid.dy_m));
+  }
   float maxHeight() const { return maxHeight_m_; }
   float extent() const { return extent_m_; }
 
@@ -67,6 +71,15 @@ class TerrainScene {
   float maxHeight_m_ = 0.0f;
   float extent_m_ = 0.0f;
 };
+
+// Unit surface normals of the cells of row y.
+std::vector<glm::dvec3> rowNormals(const Grid& grid, const Field& slope_deg,
+                                   const Field& aspect_deg, int y);
+// The rays of one batch: from every cell of row y whose surface faces `direction` (a little
+// above it, skipping the first quarter cell so the cell's own facets cannot block it) to
+// where the rising ray clears the highest terrain, at most the map's diagonal.
+void rowRays(const TerrainScene& scene, int y, const std::vector<glm::dvec3>& normals,
+             glm::dvec3 direction, std::vector<TerrainScene::Ray>& rays, std::vector<int>& cells);
 
 struct SunlightParts {
   Field directRelative;  // annual direct beam, shaded, relative to unshaded flat ground

@@ -14,8 +14,10 @@ InputError imageError(const std::filesystem::path& file, const std::string& mess
   return InputError({file.string(), 0, ""}, message);
 }
 
-void writeAtomically(const std::filesystem::path& file, const OIIO::ImageSpec& spec,
-                     OIIO::TypeDesc type, const void* pixels) {
+void writeAtomically(const std::filesystem::path& file, OIIO::ImageSpec spec, OIIO::TypeDesc type,
+                     const void* pixels) {
+  // No time stamp: the same scenario must give byte-identical files.
+  spec.attribute("DateTime", "");
   std::filesystem::path temporary = file;
   temporary.replace_filename(file.stem().string() + ".tmp-" + std::to_string(::getpid()) +
                              file.extension().string());

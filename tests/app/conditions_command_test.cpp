@@ -1,0 +1,96 @@
+// Runs `ecoforest conditions` and `ecoforest terrain` as a user would.
+#include <sys/wait.h>
+#include <array>
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_files.hpp"
+
+namespace {
+
+struct RunResult {
+  int exitCode = -1;
+  std::string output;
+};
+
+RunResult run(const std::string& arguments) {
+  std::string command = std::string(ECOFOREST_EXE) + " " + arguments + " 2>&1";
+  RunResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  std::array<char, 4096> buffer{};
+  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
+    result.output.append(buffer.data(), n);
+  int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+}  // namespace
+
+TEST(ConditionsCommand, TheValleyScenarioWritesMapsAndSummary) {
+  auto dir = eco::test::freshDirectory("app_conditions");
+  RunResult r = run("conditions valley --out " + dir.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* field : {"altitude", "slope", "aspect", "moisture", "windiness", "sunniness"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "maps" / (std::string(field) + ".exr"))) << field;
+    EXPECT_TRUE(std::filesystem::exists(dir / "maps" / (std::string(field) + ".png"))) << field;
+  }
+  nlohmann::json summary = nlohmann::json::parse(eco::test::readFile(dir / "conditions.json"));
+  EXPECT_EQ(summary["scenario"], "valley");
+  EXPECT_NEAR(summary["grid"]["area_km2"].get<double>(), 6.0, 0.1);  // the paper's 6 km2
+  EXPECT_NEAR(summary["fields"]["altitude"]["min"].get<double>(), 260.0, 0.01);
+  EXPECT_NEAR(summary["fields"]["altitude"]["max"].get<double>(), 910.0, 0.01);
+  EXPECT_EQ(r.output.find('\r'), std::string::npos) << "no progress line when not on a terminal";
+}
+
+TEST(ConditionsCommand, SameOutputsWithOneAndTwoThreads) {
+  auto one = eco::test::freshDirectory("app_threads1"),
+       two = eco::test::freshDirectory("app_threads2");
+  ASSERT_EQ(run("conditions valley --threads 1 --out " + one.string()).exitCode, 0);
+  ASSERT_EQ(run("conditions valley --threads 2 --out " + two.string()).exitCode, 0);
+  for (const char* field : {"moisture", "windiness", "sunniness"}) {
+    std::string name = std::string(field) + ".exr";
+    EXPECT_TRUE(eco::test::readFile(one / "maps" / name) ==
+                eco::test::readFile(two / "maps" / name))
+        << field;
+  }
+}
+
+TEST(ConditionsCommand, BadInputIsExitTwoWithFileAndLine) {
+  auto dir = eco::test::freshDirectory("app_conditions_bad");
+  std::ofstream(dir / "zero.toml") << "[terrain]\nheightmap = \"h.png\"\ncell_size_m = 0\n";
+  RunResult zero =
+      run("conditions " + (dir / "zero.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(zero.exitCode, 2);
+  EXPECT_NE(zero.output.find("zero.toml:3: terrain.cell_size_m"), std::string::npos) << zero.output;
+  std::ofstream(dir / "missing.toml") << "[terrain]\nheightmap = \"nothere.png\"\n";
+  RunResult missing =
+      run("conditions " + (dir / "missing.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.output.find("nothere.png: no such file"), std::string::npos) << missing.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  EXPECT_EQ(run("conditions nowhere").exitCode, 2);
+}
+
+TEST(TerrainCommand, SavesAHeightmapTheConditionsCanRead) {
+  auto dir = eco::test::freshDirectory("app_terrain");
+  std::ofstream(dir / "gen.toml")
+      << "seed = 3\n[terrain]\ncell_size_m = 10\n[terrain.generate]\nsize = 65\n"
+         "relief_m = 300\nbase_altitude_m = 100\n";
+  RunResult saved =
+      run("terrain " + (dir / "gen.toml").string() + " --out " + (dir / "h.png").string());
+  ASSERT_EQ(saved.exitCode, 0) << saved.output;
+  EXPECT_NE(saved.output.find("height_range_m = [100.0, 400.0]"), std::string::npos)
+      << saved.output;
+  std::ofstream(dir / "read.toml")
+      << "[terrain]\nheightmap = \"h.png\"\ncell_size_m = 10\nheight_range_m = [100, 400]\n";
+  RunResult conditions =
+      run("conditions " + (dir / "read.toml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(conditions.exitCode, 0) << conditions.output;
+  nlohmann::json summary =
+      nlohmann::json::parse(eco::test::readFile(dir / "out" / "conditions.json"));
+  EXPECT_NEAR(summary["fields"]["altitude"]["max"].get<double>(), 400.0, 0.01);
+}

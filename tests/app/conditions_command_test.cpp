@@ -1,7 +1,4 @@
 // Runs `ecoforest conditions` and `ecoforest terrain` as a user would.
-#include <sys/wait.h>
-#include <array>
-#include <cstdio>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -11,21 +8,10 @@
 
 namespace {
 
-struct RunResult {
-  int exitCode = -1;
-  std::string output;
-};
+using RunResult = eco::test::CommandResult;
 
 RunResult run(const std::string& arguments) {
-  std::string command = std::string(ECOFOREST_EXE) + " " + arguments + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-    result.output.append(buffer.data(), n);
-  int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  return eco::test::runCommand(std::string(ECOFOREST_EXE) + " " + arguments);
 }
 
 }  // namespace

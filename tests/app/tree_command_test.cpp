@@ -1,8 +1,5 @@
 // Runs the real `ecoforest` program as a user would.
-#include <sys/wait.h>
 #include <unistd.h>
-#include <array>
-#include <cstdio>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -12,21 +9,10 @@
 
 namespace {
 
-struct RunResult {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
+using RunResult = eco::test::CommandResult;
 
 RunResult run(const std::string& arguments) {
-  std::string command = std::string(ECOFOREST_EXE) + " " + arguments + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-    result.output.append(buffer.data(), n);
-  int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  return eco::test::runCommand(std::string(ECOFOREST_EXE) + " " + arguments);
 }
 
 std::filesystem::path freshDirectory(const std::string& name) {
@@ -93,15 +79,10 @@ TEST(TreeCommand, GltfPassesTheKhronosValidator) {
     for (const char* extension : {".glb", ".gltf"}) {
       auto file = dir / ("tree" + std::string(extension));
       ASSERT_EQ(run("tree " + args + " --out " + file.string()).exitCode, 0);
-      std::string command =
-          "node " + (validator / "validate.mjs").string() + " " + file.string() + " 2>&1";
-      FILE* pipe = popen(command.c_str(), "r");
-      std::array<char, 4096> buffer{};
-      std::string report;
-      while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-        report.append(buffer.data(), n);
-      int status = pclose(pipe);
-      EXPECT_EQ(WEXITSTATUS(status), 0) << args << extension << ": " << report;
+      RunResult validated = eco::test::runCommand("node " + (validator / "validate.mjs").string() +
+                                                  " " + file.string());
+      const std::string& report = validated.output;
+      EXPECT_EQ(validated.exitCode, 0) << args << extension << ": " << report;
       EXPECT_NE(report.find("\"errors\":0"), std::string::npos) << report;
     }
   }

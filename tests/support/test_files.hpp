@@ -11,4 +11,11 @@ std::filesystem::path freshDirectory(const std::string& name);
 std::string readFile(const std::filesystem::path& file);
 std::size_t entriesIn(const std::filesystem::path& folder);
 
+struct CommandResult {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+// Runs a shell command and collects what it prints.
+CommandResult runCommand(const std::string& command);
+
 }  // namespace eco::test

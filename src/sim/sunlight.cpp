@@ -99,12 +99,17 @@ glm::dvec3 planeNormal(double slope_deg, double aspect_deg) {
   return {std::sin(s) * std::sin(a), std::sin(s) * std::cos(a), std::cos(s)};
 }
 
+double flatInsolation(const SunPath& sun) {
+  double flat = 0.0;
+  for (std::size_t i = 0; i < sun.directions.size(); ++i) flat += sun.weights[i] * sun.directions[i].z;
+  return flat;
+}
+
 double unshadedDirectRatio(const SunPath& sun, glm::dvec3 normal) {
-  double onPlane = 0.0, flat = 0.0;
-  for (std::size_t i = 0; i < sun.directions.size(); ++i) {
+  double onPlane = 0.0;
+  for (std::size_t i = 0; i < sun.directions.size(); ++i)
     onPlane += sun.weights[i] * std::max(0.0, glm::dot(normal, sun.directions[i]));
-    flat += sun.weights[i] * sun.directions[i].z;
-  }
+  const double flat = flatInsolation(sun);
   return flat > 0.0 ? onPlane / flat : 0.0;
 }
 
@@ -226,9 +231,8 @@ void computeSunniness(const Terrain& terrain, const Field& slope_deg, const Fiel
   const Grid& g = terrain.grid;
   const SunPath sun = makeSunPath(latitude_deg, settings);
   const std::vector<glm::dvec3> sky = skyDirections(settings.skyDirections);
-  double flatDirect = 0.0, flatSky = 0.0;
-  for (std::size_t i = 0; i < sun.directions.size(); ++i)
-    flatDirect += sun.weights[i] * sun.directions[i].z;
+  const double flatDirect = flatInsolation(sun);
+  double flatSky = 0.0;
   for (const glm::dvec3& d : sky) flatSky += d.z;
   const double f = settings.diffuseFraction;
 

@@ -34,6 +34,8 @@ std::vector<glm::dvec3> skyDirections(int count);
 
 // The unit normal of a plane of slope and aspect (compass bearing it faces).
 glm::dvec3 planeNormal(double slope_deg, double aspect_deg);
+// Annual direct-beam insolation on unshaded horizontal ground: sum of weight x sun height.
+double flatInsolation(const SunPath& sun);
 // Annual direct-beam insolation on an unshaded plane relative to horizontal, for the sun path.
 double unshadedDirectRatio(const SunPath& sun, glm::dvec3 normal);
 

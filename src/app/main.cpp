@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/conditions_command.hpp"
+#include "app/run_command.hpp"
 #include "app/tree_command.hpp"
 #include "core/error.hpp"
 
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   eco::addTreeCommand(app);
   eco::addConditionsCommand(app);
   eco::addTerrainCommand(app);
+  eco::addRunCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
@@ -23,6 +25,8 @@ int main(int argc, char** argv) {
     return app.exit(help);
   } catch (const CLI::CallForVersion& version) {
     return app.exit(version);
+  } catch (const CLI::RuntimeError& done) {
+    return done.get_exit_code();  // a command that reported its own outcome (an interrupted run)
   } catch (const CLI::ParseError& error) {
     std::cerr << "ecoforest: error: " << error.what() << "\n";
     if (error.get_exit_code() != 0) std::cerr << "Run with --help for usage.\n";

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "core/hash.hpp"
+
 namespace eco {
 
 // SplitMix64's finaliser: a bijective 64-bit mix with good avalanche.
@@ -20,9 +22,7 @@ constexpr std::uint64_t mix64(std::uint64_t x) {
 // A compile-time tag for what the numbers are for (FNV-1a of the name), so that two
 // purposes keyed by the same ids draw independent streams.
 constexpr std::uint64_t purpose(std::string_view name) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (char c : name) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-  return hash;
+  return fnv1a64(name);
 }
 
 // Combine any number of ids into one stream key.

@@ -31,6 +31,10 @@ class TomlTable {
 
   const std::string& file() const { return file_; }
   bool has(std::string_view key) const { return table_->contains(key); }
+  bool isString(std::string_view key) const {
+    const toml::node* node = table_->get(key);
+    return node != nullptr && node->is_string();
+  }
   bool isArray(std::string_view key) const {
     const toml::node* node = table_->get(key);
     return node != nullptr && node->is_array();

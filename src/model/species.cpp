@@ -112,6 +112,8 @@ Species loadSpecies(const std::filesystem::path& file) {
     a.barkRoughness = look->number("bark_roughness", a.barkRoughness, {0.0, 1.0});
     look->finish();
   }
+  if (std::optional<TomlTable> ecology = root.table("ecology"))
+    species.ecology = parseEcology(*ecology);
   root.finish();
   return species;
 }

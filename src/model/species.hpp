@@ -5,11 +5,13 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <glm/vec3.hpp>
 
 #include "core/polyline.hpp"
+#include "model/ecology.hpp"
 
 namespace eco {
 
@@ -68,6 +70,7 @@ struct Species {
   StrandParams strand;
   Variation variation;
   Appearance appearance;
+  std::optional<Ecology> ecology;  // [ecology]: needed to plant the species in an ecosystem
 };
 
 // Reads a species file; unknown keys, wrong types and out-of-range values throw InputError

@@ -44,6 +44,12 @@ const std::vector<Stop>& rampFor(const std::string& field) {
                                               {1.0f, {0.35f, 0.1f, 0.5f}}};
   static const std::vector<Stop> sunniness = {
       {0.0f, {0.1f, 0.1f, 0.25f}}, {0.5f, {0.75f, 0.35f, 0.3f}}, {1.0f, {1.0f, 0.95f, 0.45f}}};
+  static const std::vector<Stop> suitability = {
+      {0.0f, {0.85f, 0.82f, 0.75f}}, {0.5f, {0.62f, 0.75f, 0.35f}}, {1.0f, {0.05f, 0.35f, 0.12f}}};
+  static const std::vector<Stop> canopy = {
+      {0.0f, {0.93f, 0.9f, 0.8f}}, {0.3f, {0.6f, 0.78f, 0.4f}}, {1.0f, {0.02f, 0.25f, 0.1f}}};
+  if (field.starts_with("suitability")) return suitability;
+  if (field == "canopy_height") return canopy;
   if (field == "altitude") return altitude;
   if (field == "slope") return slope;
   if (field == "aspect") return aspect;
@@ -108,6 +114,14 @@ glm::vec3 rampColor(const std::string& field, double t) {
   return stops.back().color;
 }
 
+FieldStats writeFieldMap(const std::filesystem::path& folder, const std::string& name,
+                         const std::string& unit, const Field& values, const Grid& grid) {
+  FieldStats stats = statsOf(values);
+  writeFloatImage(folder / (name + ".exr"), grid.width, grid.height, 1, values);
+  writeLegendedPng(folder / (name + ".png"), values, grid, name, unit, stats);
+  return stats;
+}
+
 void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport& report,
                            const Scenario& scenario, const std::filesystem::path& folder) {
   std::error_code error;
@@ -124,11 +138,7 @@ void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport
                   {"area_km2", fields.grid.area_m2() / 1e6}};
   for (const FieldInfo& info : conditionFieldInfo()) {
     const Field& values = fields.*info.field;
-    FieldStats stats = statsOf(values);
-    writeFloatImage(folder / "maps" / (std::string(info.name) + ".exr"), fields.grid.width,
-                    fields.grid.height, 1, values);
-    writeLegendedPng(folder / "maps" / (std::string(info.name) + ".png"), values, fields.grid,
-                     info.name, info.unit, stats);
+    FieldStats stats = writeFieldMap(folder / "maps", info.name, info.unit, values, fields.grid);
     nlohmann::ordered_json entry = {
         {"unit", info.unit}, {"min", stats.min}, {"mean", stats.mean}, {"max", stats.max}};
     for (const auto& [name, ms] : report.fieldMilliseconds)

@@ -19,6 +19,17 @@ struct Grid {
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
   double area_m2() const { return dx_m * dy_m * static_cast<double>(cellCount()); }
+
+  // Map coordinates of plants: metres east of the westmost cell centres and north of the
+  // southmost ones; cell (x, y) covers the square of side dx, dy around its centre.
+  double eastOf(int x) const { return x * dx_m; }
+  double northOf(int y) const { return (height - 1 - y) * dy_m; }
+  // The cell holding a map position, or -1 outside the grid.
+  long cellAt(double east_m, double north_m) const {
+    const double fx = east_m / dx_m + 0.5, fy = (height - 1) + 0.5 - north_m / dy_m;
+    if (!(fx >= 0.0 && fy >= 0.0 && fx < width && fy < height)) return -1;
+    return static_cast<long>(index(static_cast<int>(fx), static_cast<int>(fy)));
+  }
 };
 
 using Field = std::vector<float>;

@@ -68,6 +68,38 @@ Scenario loadScenario(const std::filesystem::path& file) {
         climate->number("annual_precipitation_mm", c.annualPrecipitation_mm, {0.0, 15000.0});
     climate->finish();
   }
+  if (std::optional<TomlTable> simulation = root.table("simulation")) {
+    SimulationSettings& sim = s.simulation;
+    sim.years = static_cast<int>(simulation->integer("years", sim.years, {1, 100000}));
+    const std::string rule = simulation->string("suitability", "minimum");
+    if (rule == "minimum")
+      sim.suitability = SuitabilityRule::Minimum;
+    else if (rule == "product")
+      sim.suitability = SuitabilityRule::Product;
+    else
+      simulation->fail("suitability", "unknown rule '" + rule + "' (expected minimum or product)");
+    sim.maxStemsPerHa = simulation->number("max_stems_per_ha", sim.maxStemsPerHa, {1.0, 1e6});
+    sim.maxSeedlingsPerHa =
+        simulation->number("max_seedlings_per_ha", sim.maxSeedlingsPerHa, {1.0, 1e6});
+    sim.lightDirections =
+        static_cast<int>(simulation->integer("light_directions", sim.lightDirections, {4, 256}));
+    simulation->finish();
+  }
+  for (TomlTable& entry : root.tables("species")) {
+    ScenarioSpecies species;
+    species.where = entry.where("file");
+    species.file = file.parent_path() / entry.string("file");
+    species.seedRainPerHaPerYear = entry.number("seed_rain_per_ha_per_year", 0.0, {0.0, 1e6});
+    entry.finish();
+    s.species.push_back(std::move(species));
+  }
+  s.output.dir = std::filesystem::path("out") / s.name;
+  if (std::optional<TomlTable> output = root.table("output")) {
+    if (output->has("dir")) s.output.dir = output->string("dir");
+    s.output.snapshotEveryYears = static_cast<int>(
+        output->integer("snapshot_every_years", s.output.snapshotEveryYears, {1, 100000}));
+    output->finish();
+  }
   root.finish();
   return s;
 }

@@ -1,12 +1,15 @@
 // Scenario files (docs/scenario.md): where the landscape comes from and its climate.
-// Paths are relative to the scenario file. Later parts of the product add their tables
-// (simulation, species, output) here.
+// Paths are relative to the scenario file, except the output folder (relative to where
+// ecoforest runs, like --out).
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "core/error.hpp"
 
 namespace eco {
 
@@ -31,12 +34,39 @@ struct Climate {
   double annualPrecipitation_mm = 1100.0;
 };
 
+// How a plant's site suitability combines its five per-condition suitabilities.
+enum class SuitabilityRule { Minimum, Product };
+
+struct SimulationSettings {
+  int years = 100;
+  SuitabilityRule suitability = SuitabilityRule::Minimum;  // Liebig's law by default
+  // Density caps, turned into plants per cell: stems of breast height and more (the canopy
+  // layer) and plants below it (the regeneration layer, where seeds establish).
+  double maxStemsPerHa = 400.0;
+  double maxSeedlingsPerHa = 500.0;
+  int lightDirections = 16;  // sky directions of each plant's light estimate
+};
+
+struct ScenarioSpecies {
+  std::filesystem::path file;  // absolute after loading
+  double seedRainPerHaPerYear = 0.0;
+  SourceLocation where;  // the [[species]] entry, for errors about this species
+};
+
+struct OutputSettings {
+  std::filesystem::path dir;  // relative to the working directory; default out/<name>
+  int snapshotEveryYears = 10;
+};
+
 struct Scenario {
   std::filesystem::path file;
   std::string name;
   std::uint64_t seed = 1;
   TerrainSpec terrain;
   Climate climate;
+  SimulationSettings simulation;
+  std::vector<ScenarioSpecies> species;  // empty for terrain-only scenarios
+  OutputSettings output;
 };
 
 Scenario loadScenario(const std::filesystem::path& file);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <mutex>
 #include <numbers>
 
 #include <embree3/rtcore.h>
@@ -11,47 +10,12 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.hpp"
+#include "sim/embree_device.hpp"
 
 namespace eco {
 namespace {
 
 constexpr double kRad = std::numbers::pi / 180.0;
-
-// One Embree device per process. Embree reports errors through this callback; we keep the
-// first message and turn it into an exception after the call that failed.
-struct EmbreeDevice {
-  RTCDevice device = nullptr;
-  std::mutex mutex;
-  std::string error;
-
-  EmbreeDevice() {
-    device = rtcNewDevice(nullptr);
-    if (device == nullptr) throw InternalError("Embree: cannot create a device");
-    rtcSetDeviceErrorFunction(
-        device,
-        [](void* self, RTCError, const char* message) {
-          auto* d = static_cast<EmbreeDevice*>(self);
-          std::lock_guard lock(d->mutex);
-          if (d->error.empty()) d->error = message ? message : "unknown error";
-        },
-        this);
-  }
-  ~EmbreeDevice() { rtcReleaseDevice(device); }
-
-  void check(const char* what) {
-    std::lock_guard lock(mutex);
-    if (!error.empty()) {
-      std::string message = "Embree: " + std::string(what) + ": " + error;
-      error.clear();
-      throw InternalError(message);
-    }
-  }
-};
-
-EmbreeDevice& embree() {
-  static EmbreeDevice device;
-  return device;
-}
 
 }  // namespace
 

@@ -15,6 +15,9 @@ struct Terrain {
   Field height_m;  // altitude above sea level of each cell centre
 
   float heightAt(int x, int y) const { return height_m[grid.index(x, y)]; }
+  // Altitude at a map position (Grid::cellAt) on the triangulated surface through the cell
+  // centres, clamped at the edges.
+  float altitudeAt(double east_m, double north_m) const;
 };
 
 // The scenario's terrain: its heightmap or its generated relief. Errors name the scenario.

@@ -9,6 +9,7 @@ namespace eco::test {
 // An empty folder under the temporary directory, unique to this process.
 std::filesystem::path freshDirectory(const std::string& name);
 std::string readFile(const std::filesystem::path& file);
+void writeFile(const std::filesystem::path& file, const std::string& text);
 std::size_t entriesIn(const std::filesystem::path& folder);
 
 struct CommandResult {

@@ -1,0 +1,122 @@
+#include "app/run_command.hpp"
+
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+
+#include "app/data_paths.hpp"
+#include "core/progress.hpp"
+#include "sim/simulation.hpp"
+
+namespace eco {
+namespace {
+
+struct RunArguments {
+  std::string scenario = "default";
+  std::optional<std::string> out;
+  std::optional<int> years;
+  std::optional<int> threads;
+  bool resume = false;
+};
+
+std::atomic<bool> stopRequested{false};
+
+extern "C" void requestStop(int) {
+  stopRequested = true;
+}
+
+std::string clock(double seconds) {
+  const int s = static_cast<int>(seconds + 0.5);
+  return s >= 3600 ? fmt::format("{}:{:02d}:{:02d}", s / 3600, s / 60 % 60, s % 60)
+                   : fmt::format("{}:{:02d}", s / 60, s % 60);
+}
+
+// A bar redrawn in place on a terminal; otherwise a plain line about every tenth of the run.
+void showProgress(const RunProgress& p, bool terminal) {
+  const int done = p.year - p.firstYear + 1;
+  const double rate = p.seconds > 0.0 ? done / p.seconds : 0.0;
+  const double eta = rate > 0.0 ? (p.lastYear - p.year) / rate : 0.0;
+  if (terminal) {
+    constexpr int kWidth = 24;
+    const int filled = kWidth * p.year / p.lastYear;
+    std::fprintf(stderr, "\ryear %d/%d [%s%s] %zu plants  %.1f years/s  ETA %s   ", p.year,
+                 p.lastYear, std::string(filled, '#').c_str(),
+                 std::string(kWidth - filled, '.').c_str(), p.plants, rate, clock(eta).c_str());
+    if (p.year == p.lastYear) std::fputc('\n', stderr);
+    std::fflush(stderr);
+    return;
+  }
+  const int every = std::max(1, (p.lastYear - p.firstYear + 1) / 10);
+  if (done % every == 0 || p.year == p.lastYear)
+    std::fprintf(stderr, "year %d/%d: %zu plants, %.1f years/s, ETA %s\n", p.year, p.lastYear,
+                 p.plants, rate, clock(eta).c_str());
+}
+
+int runScenario(const RunArguments& args) {
+  std::optional<tbb::global_control> threads;
+  if (args.threads) threads.emplace(tbb::global_control::max_allowed_parallelism, *args.threads);
+  RunOptions options;
+  options.scenarioFile = resolveScenario(args.scenario);
+  if (args.out) options.out = *args.out;
+  options.years = args.years;
+  options.resume = args.resume;
+  options.programVersion = ECOFOREST_VERSION;
+  options.stop = &stopRequested;
+  const bool terminal = Progress::stderrIsTerminal();
+  options.progress = [terminal](const RunProgress& p) { showProgress(p, terminal); };
+  options.warn = [](const std::string& message) {
+    std::cerr << "ecoforest: warning: " << message << "\n";
+  };
+  // Ctrl-C or a polite kill finishes the current year, whose files are then complete.
+  std::signal(SIGINT, requestStop);
+  std::signal(SIGTERM, requestStop);
+  RunSummary summary = runSimulation(options);
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+
+  if (summary.interrupted) {
+    std::cerr << fmt::format(
+        "\nstopped after year {} of {}; continue with: ecoforest run {} --resume{}\n",
+        summary.lastYear, summary.targetYears, args.scenario,
+        args.out ? " --out " + *args.out : std::string());
+    return 130;
+  }
+  std::cout << fmt::format("{}: {} years -> {}\n", options.scenarioFile.stem().string(),
+                           summary.lastYear, summary.folder.string());
+  for (const SpeciesCount& c : summary.counts)
+    std::cout << fmt::format("  {:<10} {:>8} plants, {:>8} taller than 5 m\n", c.name, c.alive,
+                             c.over5m);
+  std::cout << fmt::format(
+      "  conditions {:.1f} s, simulation {:.1f} s ({:.0f} plant-years/s)\n",
+      summary.conditionsSeconds, summary.simulationSeconds,
+      summary.simulationSeconds > 0.0 ? summary.plantYears / summary.simulationSeconds : 0.0);
+  return 0;
+}
+
+}  // namespace
+
+void addRunCommand(CLI::App& app) {
+  auto args = std::make_shared<RunArguments>();
+  CLI::App* command = app.add_subcommand(
+      "run", "Grow a forest: simulate a scenario's afforestation year by year into a run folder");
+  command->add_option("scenario", args->scenario,
+                      "Scenario name (in scenarios/) or path to a .toml (default: default)");
+  command->add_option("--out", args->out, "Run folder (default: the scenario's [output] dir)");
+  command->add_option("--years", args->years, "Years to simulate (default: the scenario's)")
+      ->check(CLI::Range(1, 100000));
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  command->add_flag("--resume", args->resume,
+                    "Continue from the run folder's checkpoint.bin to the same final outputs");
+  command->callback([args] {
+    const int code = runScenario(*args);
+    if (code != 0) throw CLI::RuntimeError(code);
+  });
+}
+
+}  // namespace eco

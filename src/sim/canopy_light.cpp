@@ -1,0 +1,205 @@
+#include "sim/canopy_light.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+
+#include <embree3/rtcore.h>
+#include <glm/geometric.hpp>
+
+#include "sim/embree_device.hpp"
+#include "sim/sunlight.hpp"
+
+namespace eco {
+namespace {
+
+// Optical depth is summed in fixed point so that the order Embree meets the crowns in
+// cannot change the last bit of the result (floating-point sums depend on order).
+constexpr double kDepthUnit = 1e-7;
+// Past this optical depth (transmittance below 0.1 %) a ray counts as blocked.
+constexpr double kOpaqueDepth = 6.9;
+// How far a light ray looks for crowns and terrain in the way.
+constexpr float kReach_m = 150.0f;
+
+struct LightQuery {
+  RTCIntersectContext context;  // first member: Embree hands back a pointer to it
+  const std::vector<Crown>* crowns;
+  int self;
+  std::int64_t depth;  // in kDepthUnit
+};
+
+// The part of the ray [tnear, tfar] inside the ellipsoid, in metres (direction is unit).
+float chordThrough(const Crown& c, glm::vec3 origin, glm::vec3 direction, float tnear, float tfar) {
+  const glm::vec3 scale(1.0f / c.radius_m, 1.0f / c.radius_m, 1.0f / c.halfLength_m);
+  const glm::vec3 o = (origin - c.centre) * scale, d = direction * scale;
+  const float a = glm::dot(d, d), b = glm::dot(o, d), cc = glm::dot(o, o) - 1.0f;
+  const float discriminant = b * b - a * cc;
+  if (discriminant <= 0.0f) return 0.0f;
+  const float root = std::sqrt(discriminant);
+  const float t0 = std::max((-b - root) / a, tnear), t1 = std::min((-b + root) / a, tfar);
+  return std::max(t1 - t0, 0.0f);
+}
+
+void crownBounds(const RTCBoundsFunctionArguments* args) {
+  const auto& crowns = *static_cast<const std::vector<Crown>*>(args->geometryUserPtr);
+  const Crown& c = crowns[args->primID];
+  RTCBounds* b = args->bounds_o;
+  b->lower_x = c.centre.x - c.radius_m, b->upper_x = c.centre.x + c.radius_m;
+  b->lower_y = c.centre.y - c.radius_m, b->upper_y = c.centre.y + c.radius_m;
+  b->lower_z = c.centre.z - c.halfLength_m, b->upper_z = c.centre.z + c.halfLength_m;
+}
+
+// Crowns never stop a ray by themselves: each one met adds its optical depth, and the ray
+// ends (occluded) only when the sum passes kOpaqueDepth.
+void crownOccluded(const RTCOccludedFunctionNArguments* args) {
+  auto* query = reinterpret_cast<LightQuery*>(args->context);
+  const Crown& c = (*query->crowns)[args->primID];
+  if (c.owner == query->self) return;
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (!args->valid[i]) continue;
+    RTCRayN* ray = args->ray;
+    const unsigned n = args->N;
+    glm::vec3 origin(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
+    glm::vec3 direction(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i),
+                        RTCRayN_dir_z(ray, n, i));
+    float& tfar = RTCRayN_tfar(ray, n, i);
+    const float chord = chordThrough(c, origin, direction, RTCRayN_tnear(ray, n, i), tfar);
+    if (chord <= 0.0f) continue;
+    query->depth += std::llround(c.opticalDepthPerMetre * chord / kDepthUnit);
+    if (query->depth * kDepthUnit > kOpaqueDepth) tfar = -std::numeric_limits<float>::infinity();
+  }
+}
+
+void crownIntersect(const RTCIntersectFunctionNArguments*) {}  // only occlusion is asked
+
+}  // namespace
+
+LightDirections makeLightDirections(double latitude_deg, int count, double diffuseFraction) {
+  // A Fibonacci lattice spread evenly in cosine-weighted solid angle: each direction brings
+  // the same share of diffuse light, and none wastes rays near the horizon.
+  LightDirections light;
+  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i) {
+    const double z = std::sqrt(1.0 - (i + 0.5) / count), r = std::sqrt(1.0 - z * z);
+    light.direction.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
+    light.weight.push_back(diffuseFraction / count);
+  }
+  SunlightSettings settings;
+  const SunPath sun = makeSunPath(latitude_deg, settings);
+  const double flat = flatInsolation(sun);
+  for (std::size_t s = 0; s < sun.directions.size(); ++s) {
+    std::size_t nearest = 0;
+    for (std::size_t k = 1; k < light.direction.size(); ++k)
+      if (glm::dot(sun.directions[s], light.direction[k]) >
+          glm::dot(sun.directions[s], light.direction[nearest]))
+        nearest = k;
+    light.weight[nearest] += (1.0 - diffuseFraction) * sun.weights[s] * sun.directions[s].z / flat;
+  }
+  return light;
+}
+
+struct CanopyScene::Impl {
+  RTCScene scene = nullptr;
+  unsigned crownGeometry = RTC_INVALID_GEOMETRY_ID;
+};
+
+CanopyScene::CanopyScene(const Terrain& terrain) : impl_(std::make_unique<Impl>()) {
+  const Grid& g = terrain.grid;
+  EmbreeDevice& device = embree();
+  RTCGeometry mesh = rtcNewGeometry(device.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), g.cellCount()));
+  const std::size_t quads =
+      static_cast<std::size_t>(std::max(g.width - 1, 0)) * std::max(g.height - 1, 0);
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), 2 * quads));
+  device.check("allocating the terrain mesh");
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      float* v = vertices + 3 * g.index(x, y);
+      v[0] = static_cast<float>(g.eastOf(x));
+      v[1] = static_cast<float>(g.northOf(y));
+      v[2] = terrain.heightAt(x, y);
+    }
+  std::size_t t = 0;
+  for (int y = 0; y + 1 < g.height; ++y)
+    for (int x = 0; x + 1 < g.width; ++x) {
+      auto a = static_cast<unsigned>(g.index(x, y)), b = static_cast<unsigned>(g.index(x + 1, y));
+      auto c = static_cast<unsigned>(g.index(x, y + 1)),
+           d = static_cast<unsigned>(g.index(x + 1, y + 1));
+      unsigned tri[6] = {a, b, c, b, d, c};
+      std::copy(tri, tri + 6, indices + 6 * t++);
+    }
+  rtcCommitGeometry(mesh);
+  // Dynamic: the terrain keeps its own BVH while the crowns are replaced every year.
+  impl_->scene = rtcNewScene(device.device);
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_DYNAMIC);
+  rtcAttachGeometry(impl_->scene, mesh);
+  rtcReleaseGeometry(mesh);
+  rtcCommitScene(impl_->scene);
+  device.check("building the terrain scene");
+  maxTerrain_m_ = *std::max_element(terrain.height_m.begin(), terrain.height_m.end());
+  maxCrownTop_m_ = maxTerrain_m_;
+}
+
+CanopyScene::~CanopyScene() {
+  rtcReleaseScene(impl_->scene);
+}
+
+void CanopyScene::setCrowns(std::vector<Crown> crowns) {
+  EmbreeDevice& device = embree();
+  if (impl_->crownGeometry != RTC_INVALID_GEOMETRY_ID) {
+    rtcDetachGeometry(impl_->scene, impl_->crownGeometry);
+    impl_->crownGeometry = RTC_INVALID_GEOMETRY_ID;
+  }
+  crowns_ = std::move(crowns);
+  maxCrownTop_m_ = maxTerrain_m_;
+  for (const Crown& c : crowns_)
+    maxCrownTop_m_ = std::max(maxCrownTop_m_, c.centre.z + c.halfLength_m);
+  if (!crowns_.empty()) {
+    RTCGeometry geometry = rtcNewGeometry(device.device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(crowns_.size()));
+    rtcSetGeometryUserData(geometry, &crowns_);
+    rtcSetGeometryBoundsFunction(geometry, crownBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, crownIntersect);
+    rtcSetGeometryOccludedFunction(geometry, crownOccluded);
+    rtcCommitGeometry(geometry);
+    impl_->crownGeometry = rtcAttachGeometry(impl_->scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(impl_->scene);
+  device.check("building the crown scene");
+}
+
+double CanopyScene::lightAt(glm::vec3 point, int self, const LightDirections& sky) const {
+  double light = 0.0;
+  for (std::size_t k = 0; k < sky.direction.size(); ++k) {
+    if (sky.weight[k] <= 0.0) continue;
+    const glm::vec3 direction(sky.direction[k]);
+    LightQuery query;
+    rtcInitIntersectContext(&query.context);
+    query.crowns = &crowns_;
+    query.self = self;
+    query.depth = 0;
+    RTCRay ray{};
+    ray.org_x = point.x, ray.org_y = point.y, ray.org_z = point.z;
+    ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
+    ray.tnear = 0.0f;
+    // Beyond the height of the highest crown top nothing can be in the way, and the far
+    // horizon is the sunniness field's business.
+    ray.tfar = std::min((maxCrownTop_m_ + 1.0f - point.z) / direction.z, kReach_m);
+    ray.mask = 0xFFFFFFFFu;
+    if (ray.tfar <= 0.0f) {
+      light += sky.weight[k];
+      continue;
+    }
+    rtcOccluded1(impl_->scene, &query.context, &ray);
+    if (ray.tfar < 0.0f) continue;  // terrain, or crowns too dense to pass light
+    light += sky.weight[k] * std::exp(-static_cast<double>(query.depth) * kDepthUnit);
+  }
+  return light;
+}
+
+}  // namespace eco

@@ -1,0 +1,21 @@
+#include "sim/dispersal.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace eco {
+
+glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng) {
+  const double distance = -life.dispersalMean_m * std::log(1.0 - rng.uniform());
+  const double angle = 2.0 * std::numbers::pi * rng.uniform();
+  glm::dvec2 offset(distance * std::cos(angle), distance * std::sin(angle));
+  if (life.dispersal == DispersalVector::Wind) offset += life.downwindBias * distance * downwind;
+  return offset;
+}
+
+glm::dvec2 downwindOf(double from_deg) {
+  const double to = (from_deg + 180.0) * std::numbers::pi / 180.0;
+  return {std::sin(to), std::cos(to)};
+}
+
+}  // namespace eco

@@ -1,0 +1,53 @@
+// The plants of an ecosystem as parallel arrays (DESIGN.md): one column per attribute, one
+// row per plant, kept in order of birth so that every pass over them is deterministic.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace eco {
+
+struct Plants {
+  std::vector<std::uint64_t> id;       // unique in a run, in order of establishment
+  std::vector<std::uint8_t> species;   // index into the run's species list
+  std::vector<float> east_m, north_m;  // map position (Grid::cellAt)
+  std::vector<float> ground_m;         // altitude of the ground at the stem
+  std::vector<std::int32_t> cell;      // grid cell holding the stem
+  std::vector<std::int32_t> age_years;
+  std::vector<float> height_m;
+  std::vector<float> crownRadius_m;
+  std::vector<float> dbh_m;                // stem diameter at breast height, 0 below 1.3 m
+  std::vector<float> vigor;                // 0..1, this year's
+  std::vector<float> light;                // fraction of open-sky light at the crown top
+  std::vector<std::uint64_t> variantSeed;  // the tree model's individual seed
+  std::vector<std::uint16_t> stressYears;  // years in a row with vigor below the threshold
+  std::vector<std::uint8_t> alive;
+
+  // Calls f(column) for every column, in a fixed order (resizing, compaction, checkpoints).
+  template <typename F>
+  void forEachColumn(F&& f) {
+    visitColumns(*this, f);
+  }
+  template <typename F>
+  void forEachColumn(F&& f) const {
+    visitColumns(*this, f);
+  }
+
+  std::size_t size() const { return id.size(); }
+  void resize(std::size_t n) {
+    forEachColumn([n](auto& column) { column.resize(n); });
+  }
+  // Drops the rows whose alive flag is 0, keeping the order of the others.
+  void removeDead();
+
+ private:
+  template <typename Self, typename F>
+  static void visitColumns(Self& p, F& f) {
+    f(p.id), f(p.species), f(p.east_m), f(p.north_m), f(p.ground_m), f(p.cell), f(p.age_years),
+        f(p.height_m), f(p.crownRadius_m), f(p.dbh_m), f(p.vigor), f(p.light), f(p.variantSeed),
+        f(p.stressYears), f(p.alive);
+  }
+};
+
+}  // namespace eco

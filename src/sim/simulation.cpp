@@ -1,0 +1,211 @@
+#include "sim/simulation.hpp"
+
+#include <chrono>
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.hpp"
+#include "core/binary_io.hpp"
+#include "core/error.hpp"
+#include "sim/checkpoint.hpp"
+#include "sim/condition_maps.hpp"
+#include "sim/run_outputs.hpp"
+#include "sim/suitability.hpp"
+
+namespace eco {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string fileBytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void createFolder(const std::filesystem::path& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error)
+    throw InputError({folder.string(), 0, ""},
+                     "cannot create the output folder: " + error.message());
+}
+
+std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem) {
+  std::vector<SpeciesCount> counts;
+  for (const EcosystemSpecies& s : ecosystem.species()) counts.push_back({s.species.name, 0, 0});
+  const Plants& p = ecosystem.plants();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    ++counts[p.species[i]].alive;
+    if (p.height_m[i] > 5.0f) ++counts[p.species[i]].over5m;
+  }
+  return counts;
+}
+
+void writeRunJson(const std::filesystem::path& folder, const Scenario& scenario,
+                  const RunOptions& options, std::uint64_t fingerprint, const RunSummary& summary,
+                  const std::string& status) {
+  nlohmann::ordered_json json;
+  json["program"] = "ecoforest";
+  json["version"] = options.programVersion;
+  json["status"] = status;
+  json["scenario"] = {{"file", std::filesystem::absolute(scenario.file).string()},
+                      {"name", scenario.name},
+                      {"fingerprint", fmt::format("{:016x}", fingerprint)},
+                      {"text", fileBytes(scenario.file)}};
+  json["seed"] = scenario.seed;
+  json["years"] = summary.targetYears;
+  json["last_year"] = summary.lastYear;
+  json["threads"] = tbb::this_task_arena::max_concurrency();
+  json["timings_s"] = {
+      {"conditions", summary.conditionsSeconds},
+      {"simulation", summary.simulationSeconds},
+      {"plant_years_per_second",
+       summary.simulationSeconds > 0.0 ? summary.plantYears / summary.simulationSeconds : 0.0}};
+  nlohmann::ordered_json counts = nlohmann::ordered_json::object();
+  for (const SpeciesCount& c : summary.counts)
+    counts[c.name] = {{"alive", c.alive}, {"taller_than_5m", c.over5m}};
+  json["final_counts"] = counts;
+  AtomicFile out(folder / "run.json");
+  out.write(json.dump(2) + "\n");
+  out.commit();
+}
+
+// Plants from a checkpoint must fit this scenario's grid and species list.
+void checkState(const EcosystemState& state, const Ecosystem& ecosystem,
+                const std::filesystem::path& file) {
+  const Plants& p = state.plants;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.species[i] >= ecosystem.species().size() || p.cell[i] < 0 ||
+        static_cast<std::size_t>(p.cell[i]) >= ecosystem.grid().cellCount())
+      throw InputError({file.string(), 0, ""},
+                       "checkpoint does not fit this scenario's terrain or species");
+}
+
+}  // namespace
+
+std::uint64_t scenarioFingerprint(const Scenario& scenario) {
+  std::uint64_t hash = fnv1a64(fileBytes(scenario.file));
+  if (scenario.terrain.heightmap) hash = fnv1a64(fileBytes(*scenario.terrain.heightmap), hash);
+  for (const ScenarioSpecies& s : scenario.species) hash = fnv1a64(fileBytes(s.file), hash);
+  return hash;
+}
+
+std::vector<EcosystemSpecies> loadEcosystemSpecies(const Scenario& scenario,
+                                                   const ConditionFields& fields) {
+  if (scenario.species.empty())
+    throw InputError({scenario.file.string(), 0, "species"},
+                     "the scenario lists no species: add [[species]] tables with a file each");
+  if (scenario.species.size() > 255)
+    throw InputError(scenario.species[255].where, "at most 255 species per scenario");
+  std::vector<EcosystemSpecies> result;
+  for (const ScenarioSpecies& entry : scenario.species) {
+    if (!std::filesystem::is_regular_file(entry.file))
+      throw InputError(entry.where, "species file not found: " + entry.file.string());
+    EcosystemSpecies s;
+    s.species = loadSpecies(entry.file);
+    if (!s.species.ecology)
+      throw InputError(entry.where, "species file " + entry.file.string() +
+                                        " has no [ecology] table, so it cannot grow in an "
+                                        "ecosystem (docs/ecology.md)");
+    s.seedRainPerHaPerYear = entry.seedRainPerHaPerYear;
+    s.suitability =
+        siteSuitability(s.species.ecology->tolerance, fields, scenario.simulation.suitability);
+    result.push_back(std::move(s));
+  }
+  return result;
+}
+
+RunSummary runSimulation(const RunOptions& options) {
+  Scenario scenario = loadScenario(options.scenarioFile);
+  RunSummary summary;
+  summary.targetYears = options.years.value_or(scenario.simulation.years);
+  if (summary.targetYears < 1)
+    throw InputError({scenario.file.string(), 0, "years"}, "years must be at least 1");
+  summary.folder = options.out.value_or(scenario.output.dir);
+  const std::uint64_t fingerprint = scenarioFingerprint(scenario);
+  if (std::all_of(scenario.species.begin(), scenario.species.end(),
+                  [](const ScenarioSpecies& s) { return s.seedRainPerHaPerYear <= 0.0; }) &&
+      !scenario.species.empty() && options.warn)
+    options.warn(fmt::format(
+        "{}: every species has seed_rain_per_ha_per_year = 0 and the landscape starts empty, "
+        "so nothing will grow; give at least one species a seed rain",
+        scenario.file.string()));
+
+  // Read the checkpoint before anything is written, so a refused resume changes nothing.
+  std::optional<Checkpoint> checkpoint;
+  if (options.resume) checkpoint = readCheckpoint(summary.folder / "checkpoint.bin", fingerprint);
+
+  const auto conditionsStart = Clock::now();
+  Terrain terrain = loadTerrain(scenario);
+  ConditionsReport report;
+  ConditionFields fields =
+      computeConditions(terrain, scenario.climate, SunlightSettings{}, &report);
+  std::vector<EcosystemSpecies> species = loadEcosystemSpecies(scenario, fields);
+  summary.conditionsSeconds = secondsSince(conditionsStart);
+
+  EcosystemSettings settings{scenario.seed, scenario.climate.latitude_deg,
+                             scenario.climate.prevailingWindFrom_deg, scenario.simulation};
+  Ecosystem ecosystem(terrain, fields, std::move(species), settings);
+  std::vector<StatsRow> stats;
+  createFolder(summary.folder / "maps");
+  createFolder(summary.folder / "trees");
+  if (checkpoint) {
+    checkState(checkpoint->state, ecosystem, summary.folder / "checkpoint.bin");
+    ecosystem.restore(std::move(checkpoint->state));
+    stats = std::move(checkpoint->stats);
+  } else {
+    // A fresh run replaces whatever an earlier run left in the folder.
+    for (const auto& entry : std::filesystem::directory_iterator(summary.folder / "trees"))
+      if (entry.path().extension() == ".csv") std::filesystem::remove(entry.path());
+    std::filesystem::remove(summary.folder / "checkpoint.bin");
+    writeConditionOutputs(fields, report, scenario, summary.folder);
+    for (const EcosystemSpecies& s : ecosystem.species())
+      writeFieldMap(summary.folder / "maps", "suitability_" + s.species.name, "0-1", s.suitability,
+                    terrain.grid);
+  }
+  summary.lastYear = ecosystem.year();
+  summary.counts = countsOf(ecosystem);
+  writeRunJson(summary.folder, scenario, options, fingerprint, summary, "running");
+
+  const auto start = Clock::now();
+  const int firstYear = ecosystem.year() + 1;
+  while (ecosystem.year() < summary.targetYears) {
+    summary.plantYears += static_cast<double>(ecosystem.plants().size());
+    ecosystem.step();
+    const int year = ecosystem.year();
+    std::vector<StatsRow> rows = statsOfYear(ecosystem);
+    stats.insert(stats.end(), rows.begin(), rows.end());
+    writeStatsCsv(summary.folder / "stats.csv", stats, ecosystem.species());
+    if (year % scenario.output.snapshotEveryYears == 0 || year == summary.targetYears)
+      writeTreesCsv(summary.folder / "trees" / fmt::format("year_{:04d}.csv", year), ecosystem);
+    writeCheckpoint(summary.folder / "checkpoint.bin",
+                    {fingerprint, options.programVersion, ecosystem.state(), stats});
+    summary.lastYear = year;
+    if (options.progress)
+      options.progress(
+          {year, summary.targetYears, firstYear, ecosystem.plants().size(), secondsSince(start)});
+    if (options.stop && options.stop->load() && year < summary.targetYears) {
+      summary.interrupted = true;
+      break;
+    }
+  }
+  summary.simulationSeconds = secondsSince(start);
+  summary.counts = countsOf(ecosystem);
+  if (!summary.interrupted)
+    writeFieldMap(summary.folder / "maps", "canopy_height", "m", canopyHeight(ecosystem),
+                  terrain.grid);
+  writeRunJson(summary.folder, scenario, options, fingerprint, summary,
+               summary.interrupted ? "interrupted" : "complete");
+  return summary;
+}
+
+}  // namespace eco

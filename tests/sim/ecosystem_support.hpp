@@ -1,0 +1,37 @@
+// Species and landscapes for the ecosystem tests: species files written on the fly (the
+// EcoMod part of beech.toml with an [ecology] chosen by the test) and uniform conditions.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "sim/ecosystem.hpp"
+
+namespace eco::test {
+
+// The text of scenarios/species/NAME.toml without its [ecology] tables.
+std::string withoutEcology(const std::string& name);
+
+// Life history of a simple test species; tolerance and light response may be added as
+// extra TOML lines inside [ecology] (before [ecology.life]).
+struct TestEcology {
+  std::string ecologyLines;  // e.g. "light_response = [[0, 1]]"
+  std::string toleranceLines;
+  double maxHeight_m = 30.0;
+  int maturityAge_years = 10;
+  double seedsPerYear = 20.0;
+  double germination = 0.5;
+  double dispersalMean_m = 20.0;
+  std::string dispersal = "animal";
+};
+
+// Writes a species file named NAME in a fresh folder and loads it.
+Species testSpecies(const std::string& name, const TestEcology& ecology);
+
+// Conditions that every default tolerance finds ideal, on the terrain's grid.
+ConditionFields uniformConditions(const Terrain& terrain);
+
+EcosystemSpecies inEcosystem(Species species, const ConditionFields& fields,
+                             double seedRainPerHaPerYear = 0.0);
+
+}  // namespace eco::test

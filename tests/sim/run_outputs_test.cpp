@@ -1,0 +1,68 @@
+#include "sim/run_outputs.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "ecosystem_support.hpp"
+#include "terrain_support.hpp"
+#include "test_files.hpp"
+
+namespace eco {
+namespace {
+
+struct OneTree : ::testing::Test {
+  // 10 x 10 cells of 10 m: exactly one hectare.
+  Terrain terrain = test::analyticTerrain(10, 10, 10.0, 10.0, [](double, double) { return 50.0; });
+  ConditionFields fields = test::uniformConditions(terrain);
+  Ecosystem ecosystem{terrain,
+                      fields,
+                      {test::inEcosystem(test::testSpecies("t", {}), fields)},
+                      EcosystemSettings{}};
+};
+
+TEST_F(OneTree, BasalAreaCoverAndCanopyFromThePlants) {
+  ecosystem.plant(0, 41.0, 43.0, 100);
+  const Plants& p = ecosystem.plants();
+  const std::vector<StatsRow> rows = statsOfYear(ecosystem);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].alive, 1);
+  EXPECT_NEAR(rows[0].meanHeight_m, p.height_m[0], 1e-6);
+  EXPECT_NEAR(rows[0].basalArea_m2PerHa, std::numbers::pi / 4.0 * p.dbh_m[0] * p.dbh_m[0], 1e-6);
+  // The cell centres inside the crown circle, counted directly.
+  int inside = 0;
+  const Grid& g = terrain.grid;
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x)
+      inside += std::hypot(g.eastOf(x) - 41.0, g.northOf(y) - 43.0) <= p.crownRadius_m[0];
+  ASSERT_GT(inside, 0);
+  EXPECT_NEAR(rows[0].coverFraction, inside / 100.0, 1e-12);
+  const Field canopy = canopyHeight(ecosystem);
+  int covered = 0;
+  for (float h : canopy) {
+    if (h > 0.0f) {
+      EXPECT_EQ(h, p.height_m[0]);
+    }
+    covered += h > 0.0f;
+  }
+  EXPECT_EQ(covered, inside);
+}
+
+TEST_F(OneTree, CsvFilesHaveTheDocumentedColumns) {
+  ecosystem.plant(0, 12.0, 33.0, 40);
+  const auto folder = test::freshDirectory("run_outputs");
+  writeTreesCsv(folder / "trees.csv", ecosystem);
+  writeStatsCsv(folder / "stats.csv", statsOfYear(ecosystem), ecosystem.species());
+  const std::string trees = test::readFile(folder / "trees.csv");
+  EXPECT_EQ(trees.substr(0, trees.find('\n')),
+            "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed");
+  EXPECT_NE(trees.find("\n1,t,12.000,33.000,50.000,40,"), std::string::npos) << trees;
+  const std::string stats = test::readFile(folder / "stats.csv");
+  EXPECT_EQ(stats.substr(0, stats.find('\n')),
+            "year,species,alive,born,died,mean_height_m,basal_area_m2_per_ha,cover_fraction");
+  EXPECT_NE(stats.find("\n0,t,1,0,0,"), std::string::npos) << stats;
+}
+
+}  // namespace
+}  // namespace eco

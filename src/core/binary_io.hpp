@@ -1,9 +1,13 @@
-// Little binary files (checkpoints): a writer that appends plain values to a byte string and
-// a reader that takes them back with bounds checks.
+// Little binary files (checkpoints): a writer that appends plain values to a byte string, a
+// reader that takes them back with bounds checks, and reading a whole file.
 #pragma once
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -12,6 +16,13 @@
 #include "core/hash.hpp"
 
 namespace eco {
+
+// The bytes of a file, or nothing if it cannot be opened.
+inline std::optional<std::string> readFileBytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
 
 class BinaryWriter {
  public:

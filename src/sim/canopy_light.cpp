@@ -108,31 +108,9 @@ struct CanopyScene::Impl {
 CanopyScene::CanopyScene(const Terrain& terrain) : impl_(std::make_unique<Impl>()) {
   const Grid& g = terrain.grid;
   EmbreeDevice& device = embree();
-  RTCGeometry mesh = rtcNewGeometry(device.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), g.cellCount()));
-  const std::size_t quads =
-      static_cast<std::size_t>(std::max(g.width - 1, 0)) * std::max(g.height - 1, 0);
-  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-      mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), 2 * quads));
-  device.check("allocating the terrain mesh");
-  for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x) {
-      float* v = vertices + 3 * g.index(x, y);
-      v[0] = static_cast<float>(g.eastOf(x));
-      v[1] = static_cast<float>(g.northOf(y));
-      v[2] = terrain.heightAt(x, y);
-    }
-  std::size_t t = 0;
-  for (int y = 0; y + 1 < g.height; ++y)
-    for (int x = 0; x + 1 < g.width; ++x) {
-      auto a = static_cast<unsigned>(g.index(x, y)), b = static_cast<unsigned>(g.index(x + 1, y));
-      auto c = static_cast<unsigned>(g.index(x, y + 1)),
-           d = static_cast<unsigned>(g.index(x + 1, y + 1));
-      unsigned tri[6] = {a, b, c, b, d, c};
-      std::copy(tri, tri + 6, indices + 6 * t++);
-    }
-  rtcCommitGeometry(mesh);
+  RTCGeometry mesh = newTerrainGeometry(terrain, [&](int x, int y) {
+    return glm::vec3(g.eastOf(x), g.northOf(y), terrain.heightAt(x, y));
+  });
   // Dynamic: the terrain keeps its own BVH while the crowns are replaced every year.
   impl_->scene = rtcNewScene(device.device);
   rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_DYNAMIC);

@@ -1,8 +1,6 @@
 #include "sim/checkpoint.hpp"
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 
@@ -39,9 +37,9 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expec
   auto refuse = [&](const std::string& why) -> InputError {
     return InputError({file.string(), 0, ""}, why);
   };
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw refuse("cannot open the checkpoint (was the run started in this folder?)");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::optional<std::string> read = readFileBytes(file);
+  if (!read) throw refuse("cannot open the checkpoint (was the run started in this folder?)");
+  const std::string& bytes = *read;
   BinaryReader header(bytes);
   if (header.getString() != kMagic || header.failed()) throw refuse("not an ecoforest checkpoint");
   if (header.get<std::uint32_t>() != kFormatVersion)

@@ -1,8 +1,6 @@
 #include "sim/simulation.hpp"
 
 #include <chrono>
-#include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 #include <tbb/info.h>
@@ -26,9 +24,9 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// A file's bytes; empty if it cannot be read (the scenario and its files were read already).
 std::string fileBytes(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return readFileBytes(file).value_or(std::string());
 }
 
 void createFolder(const std::filesystem::path& folder) {

@@ -65,7 +65,8 @@ glm::dvec3 planeNormal(double slope_deg, double aspect_deg) {
 
 double flatInsolation(const SunPath& sun) {
   double flat = 0.0;
-  for (std::size_t i = 0; i < sun.directions.size(); ++i) flat += sun.weights[i] * sun.directions[i].z;
+  for (std::size_t i = 0; i < sun.directions.size(); ++i)
+    flat += sun.weights[i] * sun.directions[i].z;
   return flat;
 }
 
@@ -81,28 +82,8 @@ TerrainScene::TerrainScene(const Terrain& terrain)
     : impl_(std::make_unique<Impl>()), terrain_(terrain) {
   const Grid& g = terrain.grid;
   EmbreeDevice& device = embree();
-  RTCGeometry mesh = rtcNewGeometry(device.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), g.cellCount()));
-  const std::size_t quads = static_cast<std::size_t>(g.width - 1) * (g.height - 1);
-  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-      mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), 2 * quads));
-  device.check("allocating the terrain mesh");
-  for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x) {
-      glm::vec3 p = cellPosition(x, y);
-      std::copy(&p.x, &p.x + 3, vertices + 3 * g.index(x, y));
-    }
-  std::size_t t = 0;
-  for (int y = 0; y + 1 < g.height; ++y)
-    for (int x = 0; x + 1 < g.width; ++x) {
-      auto a = static_cast<unsigned>(g.index(x, y)), b = static_cast<unsigned>(g.index(x + 1, y));
-      auto c = static_cast<unsigned>(g.index(x, y + 1)),
-           d = static_cast<unsigned>(g.index(x + 1, y + 1));
-      unsigned tri[6] = {a, c, b, b, c, d};
-      std::copy(tri, tri + 6, indices + 6 * t++);
-    }
-  rtcCommitGeometry(mesh);
+  RTCGeometry mesh =
+      newTerrainGeometry(terrain, [this](int x, int y) { return cellPosition(x, y); });
   impl_->scene = rtcNewScene(device.device);
   rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
   rtcAttachGeometry(impl_->scene, mesh);

@@ -32,10 +32,9 @@ void forEachChunk(std::size_t count, F&& f) {
 
 }  // namespace
 
-Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
-                     std::vector<EcosystemSpecies> species, const EcosystemSettings& settings)
+Ecosystem::Ecosystem(const Terrain& terrain, std::vector<EcosystemSpecies> species,
+                     const EcosystemSettings& settings)
     : terrain_(terrain),
-      fields_(fields),
       species_(std::move(species)),
       settings_(settings),
       sky_(makeLightDirections(settings.latitude_deg, settings.simulation.lightDirections)),

@@ -10,7 +10,6 @@
 
 #include "model/species.hpp"
 #include "sim/canopy_light.hpp"
-#include "sim/conditions.hpp"
 #include "sim/plants.hpp"
 #include "sim/scenario.hpp"
 
@@ -38,9 +37,9 @@ struct EcosystemState {
 
 class Ecosystem {
  public:
-  // The terrain and fields must outlive the ecosystem.
-  Ecosystem(const Terrain& terrain, const ConditionFields& fields,
-            std::vector<EcosystemSpecies> species, const EcosystemSettings& settings);
+  // The terrain must outlive the ecosystem; each species brings its site suitability.
+  Ecosystem(const Terrain& terrain, std::vector<EcosystemSpecies> species,
+            const EcosystemSettings& settings);
 
   // Advances one year; afterwards year() is one higher and bornLastYear()/diedLastYear()
   // hold that year's counts per species.
@@ -83,7 +82,6 @@ class Ecosystem {
   std::size_t addPlant(int species, double east_m, double north_m);
 
   const Terrain& terrain_;
-  const ConditionFields& fields_;
   std::vector<EcosystemSpecies> species_;
   EcosystemSettings settings_;
   LightDirections sky_;

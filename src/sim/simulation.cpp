@@ -152,7 +152,7 @@ RunSummary runSimulation(const RunOptions& options) {
 
   EcosystemSettings settings{scenario.seed, scenario.climate.latitude_deg,
                              scenario.climate.prevailingWindFrom_deg, scenario.simulation};
-  Ecosystem ecosystem(terrain, fields, std::move(species), settings);
+  Ecosystem ecosystem(terrain, std::move(species), settings);
   std::vector<StatsRow> stats;
   createFolder(summary.folder / "maps");
   createFolder(summary.folder / "trees");

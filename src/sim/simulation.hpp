@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/conditions.hpp"
 #include "sim/ecosystem.hpp"
 
 namespace eco {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "sim/conditions.hpp"
 #include "sim/ecosystem.hpp"
 
 namespace eco::test {

@@ -36,8 +36,7 @@ TEST(Ecosystem, SeedlingsFromOneSourceLieAtTheKernelsMeanDistance) {
   e.seedsPerYear = 4000.0;
   e.germination = 1.0;
   e.dispersalMean_m = 20.0;
-  Ecosystem ecosystem(terrain, fields,
-                      {test::inEcosystem(test::testSpecies("spreader", e), fields)},
+  Ecosystem ecosystem(terrain, {test::inEcosystem(test::testSpecies("spreader", e), fields)},
                       settingsWith(1e6));
   const double centre = 200.0;
   ecosystem.plant(0, centre, centre, 60);
@@ -61,8 +60,7 @@ TEST(Ecosystem, SpeciesExcludedFromTheUpperHalfNeverEstablishesThere) {
   TestEcology e;
   e.toleranceLines = "altitude_m = [[0, 1], [490, 1], [500, 0]]";
   e.maturityAge_years = 5;
-  Ecosystem ecosystem(terrain, fields,
-                      {test::inEcosystem(test::testSpecies("lowland", e), fields, 50.0)},
+  Ecosystem ecosystem(terrain, {test::inEcosystem(test::testSpecies("lowland", e), fields, 50.0)},
                       settingsWith());
   for (int year = 0; year < 25; ++year) ecosystem.step();
   const Plants& p = ecosystem.plants();
@@ -76,8 +74,7 @@ TEST(Ecosystem, NoPlantGrowsTallerThanItsSpeciesMaximum) {
   const ConditionFields fields = test::uniformConditions(terrain);
   TestEcology fast;
   fast.maxHeight_m = 12.0;
-  Ecosystem ecosystem(terrain, fields,
-                      {test::inEcosystem(test::testSpecies("short", fast), fields, 20.0)},
+  Ecosystem ecosystem(terrain, {test::inEcosystem(test::testSpecies("short", fast), fields, 20.0)},
                       settingsWith());
   for (int year = 0; year < 80; ++year) ecosystem.step();
   const Plants& p = ecosystem.plants();
@@ -90,7 +87,7 @@ TEST(Ecosystem, NoPlantGrowsTallerThanItsSpeciesMaximum) {
 TEST(Ecosystem, LightUnderADenseCanopyIsLowerThanInAGap) {
   const Terrain terrain = flat(30, 10.0);
   const ConditionFields fields = test::uniformConditions(terrain);
-  Ecosystem ecosystem(terrain, fields, {test::inEcosystem(test::testSpecies("shade", {}), fields)},
+  Ecosystem ecosystem(terrain, {test::inEcosystem(test::testSpecies("shade", {}), fields)},
                       settingsWith());
   // Old trees 5 m apart over the western half; the eastern half is open.
   for (double east = 2.5; east < 140.0; east += 5.0)
@@ -111,8 +108,7 @@ TEST(Ecosystem, ShadeTolerantBeechReplacesPioneerPine) {
   Species beech = loadSpecies(std::filesystem::path(ECOFOREST_DATA_DIR) / "species/beech.toml");
   Species pine = loadSpecies(std::filesystem::path(ECOFOREST_DATA_DIR) / "species/pine.toml");
   Ecosystem ecosystem(
-      terrain, fields,
-      {test::inEcosystem(beech, fields, 2.0), test::inEcosystem(pine, fields, 20.0)},
+      terrain, {test::inEcosystem(beech, fields, 2.0), test::inEcosystem(pine, fields, 20.0)},
       settingsWith());
   auto canopyShare = [&](int species) {
     const Plants& p = ecosystem.plants();
@@ -137,7 +133,7 @@ TEST(Ecosystem, SamePlantsWithOneAndTwoThreads) {
   auto run = [&](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     Ecosystem ecosystem(
-        terrain, fields,
+        terrain,
         {test::inEcosystem(test::testSpecies("a", {}), fields, 5.0),
          test::inEcosystem(test::testSpecies("b", {.dispersal = "wind"}), fields, 5.0)},
         settingsWith());
@@ -160,8 +156,7 @@ TEST(Ecosystem, SaplingsWaitBelowBreastHeightWhereTheCanopyLayerIsFull) {
   const ConditionFields fields = test::uniformConditions(terrain);
   TestEcology e;
   e.ecologyLines = "light_response = [[0, 1]]";
-  Ecosystem ecosystem(terrain, fields,
-                      {test::inEcosystem(test::testSpecies("s", e), fields, 200.0)},
+  Ecosystem ecosystem(terrain, {test::inEcosystem(test::testSpecies("s", e), fields, 200.0)},
                       settingsWith());
   for (int year = 0; year < 30; ++year) ecosystem.step();
   std::vector<int> stems(terrain.grid.cellCount(), 0);

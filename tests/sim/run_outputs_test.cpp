@@ -16,10 +16,8 @@ struct OneTree : ::testing::Test {
   // 10 x 10 cells of 10 m: exactly one hectare.
   Terrain terrain = test::analyticTerrain(10, 10, 10.0, 10.0, [](double, double) { return 50.0; });
   ConditionFields fields = test::uniformConditions(terrain);
-  Ecosystem ecosystem{terrain,
-                      fields,
-                      {test::inEcosystem(test::testSpecies("t", {}), fields)},
-                      EcosystemSettings{}};
+  Ecosystem ecosystem{
+      terrain, {test::inEcosystem(test::testSpecies("t", {}), fields)}, EcosystemSettings{}};
 };
 
 TEST_F(OneTree, BasalAreaCoverAndCanopyFromThePlants) {

@@ -187,6 +187,12 @@ Ecology parseEcology(TomlTable& table) {
   h.downwindBias = life->number("downwind_bias", 0.0, {0.0, 1.0});
   if (h.downwindBias > 0.0 && h.dispersal != DispersalVector::Wind)
     life->fail("downwind_bias", "only wind-dispersed species drift downwind");
+  h.longDistanceFraction = life->number("long_distance_fraction", 0.0, {0.0, 1.0});
+  if (h.longDistanceFraction > 0.0) {
+    h.longDistanceMean_m = life->number("long_distance_mean_m", {}, {0.01, 100000.0});
+    if (h.longDistanceMean_m <= h.dispersalMean_m)
+      life->fail("long_distance_mean_m", "must be longer than dispersal_mean_m");
+  }
   h.stressVigor = life->number("stress_vigor", h.stressVigor, {0.0, 1.0});
   h.stressYearsTolerated =
       static_cast<int>(life->integer("stress_years_tolerated", h.stressYearsTolerated, {1, 1000}));

@@ -62,6 +62,10 @@ struct LifeHistory {
   DispersalVector dispersal = DispersalVector::Gravity;
   double dispersalMean_m = 15.0;  // mean distance of the seed kernel
   double downwindBias = 0.0;      // wind-dispersed: drift downwind per metre travelled
+  // A fat-tailed kernel: this share of the seeds travels with the long mean instead (jays
+  // caching nuts, updrafts lifting seeds), which sets how fast a species spreads.
+  double longDistanceFraction = 0.0;
+  double longDistanceMean_m = 0.0;
   double stressVigor = 0.1;       // vigor below this is a year of stress
   int stressYearsTolerated = 5;   // stress years in a row before stress mortality sets in
 };

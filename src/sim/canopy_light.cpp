@@ -5,8 +5,10 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include <embree3/rtcore.h>
+#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
 #include "sim/embree_device.hpp"
@@ -23,11 +25,15 @@ constexpr double kOpaqueDepth = 6.9;
 // How far a light ray looks for crowns and terrain in the way.
 constexpr float kReach_m = 150.0f;
 
-struct LightQuery {
+// Rays are traced in packets of this many nearby probes sharing one direction, so that
+// Embree walks the crown hierarchy once for all of them.
+constexpr int kPacket = 4;
+
+struct PacketQuery {
   RTCIntersectContext context;  // first member: Embree hands back a pointer to it
   const std::vector<Crown>* crowns;
-  int self;
-  std::int64_t depth;  // in kDepthUnit
+  int self[kPacket];
+  std::int64_t depth[kPacket];  // in kDepthUnit, per ray (the ray's id is its lane)
 };
 
 // The part of the ray [tnear, tfar] inside the ellipsoid, in metres (direction is unit).
@@ -54,25 +60,42 @@ void crownBounds(const RTCBoundsFunctionArguments* args) {
 // Crowns never stop a ray by themselves: each one met adds its optical depth, and the ray
 // ends (occluded) only when the sum passes kOpaqueDepth.
 void crownOccluded(const RTCOccludedFunctionNArguments* args) {
-  auto* query = reinterpret_cast<LightQuery*>(args->context);
+  auto* query = reinterpret_cast<PacketQuery*>(args->context);
   const Crown& c = (*query->crowns)[args->primID];
-  if (c.owner == query->self) return;
-  for (unsigned i = 0; i < args->N; ++i) {
+  RTCRayN* ray = args->ray;
+  const unsigned n = args->N;
+  for (unsigned i = 0; i < n; ++i) {
     if (!args->valid[i]) continue;
-    RTCRayN* ray = args->ray;
-    const unsigned n = args->N;
+    const unsigned lane = RTCRayN_id(ray, n, i);
+    if (c.owner == query->self[lane]) continue;
     glm::vec3 origin(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
     glm::vec3 direction(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i),
                         RTCRayN_dir_z(ray, n, i));
     float& tfar = RTCRayN_tfar(ray, n, i);
     const float chord = chordThrough(c, origin, direction, RTCRayN_tnear(ray, n, i), tfar);
     if (chord <= 0.0f) continue;
-    query->depth += std::llround(c.opticalDepthPerMetre * chord / kDepthUnit);
-    if (query->depth * kDepthUnit > kOpaqueDepth) tfar = -std::numeric_limits<float>::infinity();
+    std::int64_t& depth = query->depth[lane];
+    depth += std::llround(c.opticalDepthPerMetre * chord / kDepthUnit);
+    if (depth * kDepthUnit > kOpaqueDepth) tfar = -std::numeric_limits<float>::infinity();
   }
 }
 
 void crownIntersect(const RTCIntersectFunctionNArguments*) {}  // only occlusion is asked
+
+// Interleaves the bits of x and y in metres (16 bits each, wrapping past 65 km).
+std::uint64_t mortonCode(glm::vec3 point) {
+  auto spread = [](std::uint64_t v) {
+    v &= 0xFFFF;
+    v = (v | (v << 8)) & 0x00FF00FF;
+    v = (v | (v << 4)) & 0x0F0F0F0F;
+    v = (v | (v << 2)) & 0x33333333;
+    v = (v | (v << 1)) & 0x55555555;
+    return v;
+  };
+  const auto x = static_cast<std::uint64_t>(std::max(point.x, 0.0f));
+  const auto y = static_cast<std::uint64_t>(std::max(point.y, 0.0f));
+  return spread(x) | (spread(y) << 1);
+}
 
 }  // namespace
 
@@ -152,32 +175,71 @@ void CanopyScene::setCrowns(std::vector<Crown> crowns) {
 }
 
 double CanopyScene::lightAt(glm::vec3 point, int self, const LightDirections& sky) const {
-  double light = 0.0;
+  const LightProbe probe{point, self};
+  const LightProbe* probes[] = {&probe};
+  float light = 0.0f;
+  tracePacket(probes, 1, sky, &light);
+  return light;
+}
+
+std::vector<float> CanopyScene::lightAt(const std::vector<LightProbe>& probes,
+                                        const LightDirections& sky) const {
+  // Packets of probes that are close together (in Morton order of 1 m squares) share most
+  // of their way through the crown hierarchy.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(probes.size());
+  for (std::size_t i = 0; i < probes.size(); ++i)
+    order[i] = {mortonCode(probes[i].point), static_cast<std::uint32_t>(i)};
+  std::sort(order.begin(), order.end());
+  std::vector<float> light(probes.size());
+  const std::size_t packets = (probes.size() + kPacket - 1) / kPacket;
+  tbb::parallel_for(std::size_t{0}, packets, [&](std::size_t packet) {
+    const std::size_t begin = packet * kPacket;
+    const int count = static_cast<int>(std::min<std::size_t>(kPacket, probes.size() - begin));
+    const LightProbe* members[kPacket];
+    float result[kPacket];
+    for (int lane = 0; lane < count; ++lane) members[lane] = &probes[order[begin + lane].second];
+    tracePacket(members, count, sky, result);
+    for (int lane = 0; lane < count; ++lane) light[order[begin + lane].second] = result[lane];
+  });
+  return light;
+}
+
+void CanopyScene::tracePacket(const LightProbe* const* probes, int count,
+                              const LightDirections& sky, float* light) const {
+  double sum[kPacket] = {};
   for (std::size_t k = 0; k < sky.direction.size(); ++k) {
     if (sky.weight[k] <= 0.0) continue;
     const glm::vec3 direction(sky.direction[k]);
-    LightQuery query;
+    PacketQuery query;
     rtcInitIntersectContext(&query.context);
     query.crowns = &crowns_;
-    query.self = self;
-    query.depth = 0;
-    RTCRay ray{};
-    ray.org_x = point.x, ray.org_y = point.y, ray.org_z = point.z;
-    ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
-    ray.tnear = 0.0f;
-    // Beyond the height of the highest crown top nothing can be in the way, and the far
-    // horizon is the sunniness field's business.
-    ray.tfar = std::min((maxCrownTop_m_ + 1.0f - point.z) / direction.z, kReach_m);
-    ray.mask = 0xFFFFFFFFu;
-    if (ray.tfar <= 0.0f) {
-      light += sky.weight[k];
-      continue;
+    RTCRay4 rays{};
+    alignas(64) int valid[kPacket] = {};
+    for (int lane = 0; lane < count; ++lane) {
+      const glm::vec3 p = probes[lane]->point;
+      query.self[lane] = probes[lane]->self;
+      query.depth[lane] = 0;
+      rays.org_x[lane] = p.x, rays.org_y[lane] = p.y, rays.org_z[lane] = p.z;
+      rays.dir_x[lane] = direction.x, rays.dir_y[lane] = direction.y;
+      rays.dir_z[lane] = direction.z;
+      rays.tnear[lane] = 0.0f;
+      // Beyond the height of the highest crown top nothing can be in the way, and the far
+      // horizon is the sunniness field's business.
+      rays.tfar[lane] = std::min((maxCrownTop_m_ + 1.0f - p.z) / direction.z, kReach_m);
+      rays.mask[lane] = 0xFFFFFFFFu;
+      rays.id[lane] = static_cast<unsigned>(lane);
+      valid[lane] = rays.tfar[lane] > 0.0f ? -1 : 0;
     }
-    rtcOccluded1(impl_->scene, &query.context, &ray);
-    if (ray.tfar < 0.0f) continue;  // terrain, or crowns too dense to pass light
-    light += sky.weight[k] * std::exp(-static_cast<double>(query.depth) * kDepthUnit);
+    rtcOccluded4(valid, impl_->scene, &query.context, &rays);
+    for (int lane = 0; lane < count; ++lane) {
+      if (!valid[lane]) {
+        sum[lane] += sky.weight[k];          // above every crown and hill
+      } else if (rays.tfar[lane] >= 0.0f) {  // not stopped by terrain or dense crowns
+        sum[lane] += sky.weight[k] * std::exp(-static_cast<double>(query.depth[lane]) * kDepthUnit);
+      }
+    }
   }
-  return light;
+  for (int lane = 0; lane < count; ++lane) light[lane] = static_cast<float>(sum[lane]);
 }
 
 }  // namespace eco

@@ -33,6 +33,12 @@ struct Crown {
   int owner = -1;                     // the plant (row) this crown belongs to
 };
 
+// A point whose light is wanted, and the plant whose own crown does not shade it (-1: none).
+struct LightProbe {
+  glm::vec3 point;
+  int self = -1;
+};
+
 class CanopyScene {
  public:
   explicit CanopyScene(const Terrain& terrain);
@@ -44,12 +50,18 @@ class CanopyScene {
   void setCrowns(std::vector<Crown> crowns);
   const std::vector<Crown>& crowns() const { return crowns_; }
 
-  // The light reaching `point` as a fraction of open-sky light on a horizontal surface,
-  // ignoring the crown of plant `self` (-1: none).
+  // The light reaching each probe as a fraction of open-sky light on a horizontal surface,
+  // in the probes' order. Runs in parallel; the probes are traced in small packets of
+  // nearby points, and each result is the same as lightAt's for that probe alone.
+  std::vector<float> lightAt(const std::vector<LightProbe>& probes,
+                             const LightDirections& sky) const;
   double lightAt(glm::vec3 point, int self, const LightDirections& sky) const;
 
  private:
   struct Impl;
+  void tracePacket(const LightProbe* const* probes, int count, const LightDirections& sky,
+                   float* light) const;
+
   std::unique_ptr<Impl> impl_;
   std::vector<Crown> crowns_;
   float maxTerrain_m_ = 0.0f;

@@ -101,7 +101,12 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
 
 void Ecosystem::buildCrowns() {
   const Plants& p = state_.plants;
+  std::vector<float> crownDepth;  // optical depth along a whole crown's length, per species
+  for (const EcosystemSpecies& s : species_)
+    crownDepth.push_back(
+        static_cast<float>(-std::log(std::max(lifeOf(s).crownTransmittance, 1e-4))));
   std::vector<Crown> crowns;
+  crowns.reserve(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.height_m[i] < kBreastHeight_m) continue;
     const LifeHistory& life = lifeOf(species_[p.species[i]]);
@@ -110,8 +115,7 @@ void Ecosystem::buildCrowns() {
     c.centre = {p.east_m[i], p.north_m[i], p.ground_m[i] + p.height_m[i] - 0.5f * length};
     c.radius_m = std::max(p.crownRadius_m[i], 0.05f);
     c.halfLength_m = 0.5f * length;
-    c.opticalDepthPerMetre =
-        static_cast<float>(-std::log(std::max(life.crownTransmittance, 1e-4)) / length);
+    c.opticalDepthPerMetre = crownDepth[p.species[i]] / length;
     c.owner = static_cast<int>(i);
     crowns.push_back(c);
   }
@@ -131,12 +135,13 @@ void Ecosystem::ensureGroundLight(std::vector<std::int32_t> cells) {
   std::sort(cells.begin(), cells.end());
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   const Grid& g = terrain_.grid;
-  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t k) {
+  std::vector<LightProbe> probes(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) {
     const int x = static_cast<int>(cells[k] % g.width), y = static_cast<int>(cells[k] / g.width);
-    const glm::vec3 point(g.eastOf(x), g.northOf(y),
-                          terrain_.heightAt(x, y) + kGroundLightHeight_m);
-    groundLight_[cells[k]] = static_cast<float>(scene_.lightAt(point, -1, sky_));
-  });
+    probes[k].point = {g.eastOf(x), g.northOf(y), terrain_.heightAt(x, y) + kGroundLightHeight_m};
+  }
+  const std::vector<float> light = scene_.lightAt(probes, sky_);
+  for (std::size_t k = 0; k < cells.size(); ++k) groundLight_[cells[k]] = light[k];
   groundLightCells_.insert(groundLightCells_.end(), cells.begin(), cells.end());
 }
 
@@ -144,18 +149,25 @@ void Ecosystem::computeLightAndGrow() {
   Plants& p = state_.plants;
   const std::vector<float> heightBefore = p.height_m;
   std::vector<std::int32_t> understorey;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.height_m[i] < kBreastHeight_m) understorey.push_back(p.cell[i]);
+  std::vector<LightProbe> crownTops;
+  std::vector<std::uint32_t> stems;
+  const auto refresh = static_cast<std::uint64_t>(settings_.simulation.lightRefreshYears);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.height_m[i] < kBreastHeight_m) {
+      understorey.push_back(p.cell[i]);
+    } else if ((p.id[i] + static_cast<std::uint64_t>(state_.year)) % refresh == 0) {
+      crownTops.push_back({{p.east_m[i], p.north_m[i], p.ground_m[i] + p.height_m[i] + 0.01f},
+                           static_cast<int>(i)});
+      stems.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
   ensureGroundLight(std::move(understorey));
+  const std::vector<float> stemLight = scene_.lightAt(crownTops, sky_);
+  for (std::size_t k = 0; k < stems.size(); ++k) p.light[stems[k]] = stemLight[k];
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     const EcosystemSpecies& s = species_[p.species[i]];
     const LifeHistory& life = lifeOf(s);
-    if (p.height_m[i] < kBreastHeight_m) {
-      p.light[i] = groundLight_[p.cell[i]];
-    } else {
-      const glm::vec3 top(p.east_m[i], p.north_m[i], p.ground_m[i] + p.height_m[i] + 0.01f);
-      p.light[i] = static_cast<float>(scene_.lightAt(top, static_cast<int>(i), sky_));
-    }
+    if (p.height_m[i] < kBreastHeight_m) p.light[i] = groundLight_[p.cell[i]];
     const double lightVigor = std::clamp(s.species.ecology->lightResponse(p.light[i]), 0.0, 1.0);
     const double vigor = std::min<double>(s.suitability[p.cell[i]], lightVigor);
     p.vigor[i] = static_cast<float>(vigor);
@@ -179,8 +191,15 @@ void Ecosystem::promoteSaplings(const std::vector<float>& heightBefore) {
   std::vector<int> stems(terrain_.grid.cellCount(), 0);
   for (std::size_t i = 0; i < p.size(); ++i)
     if (heightBefore[i] >= kBreastHeight_m) ++stems[p.cell[i]];
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (heightBefore[i] >= kBreastHeight_m || p.height_m[i] < kBreastHeight_m) continue;
+  // The most vigorous saplings take the free places first: under a light canopy a
+  // shade-tolerant sapling outgrows a light-demanding one.
+  std::vector<std::uint32_t> candidates;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (heightBefore[i] < kBreastHeight_m && p.height_m[i] >= kBreastHeight_m)
+      candidates.push_back(static_cast<std::uint32_t>(i));
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return p.vigor[a] > p.vigor[b]; });
+  for (std::uint32_t i : candidates) {
     if (stems[p.cell[i]] < stemsPerCell_) {
       ++stems[p.cell[i]];
       continue;

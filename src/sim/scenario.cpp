@@ -83,6 +83,8 @@ Scenario loadScenario(const std::filesystem::path& file) {
         simulation->number("max_seedlings_per_ha", sim.maxSeedlingsPerHa, {1.0, 1e6});
     sim.lightDirections =
         static_cast<int>(simulation->integer("light_directions", sim.lightDirections, {4, 256}));
+    sim.lightRefreshYears = static_cast<int>(
+        simulation->integer("light_refresh_years", sim.lightRefreshYears, {1, 10}));
     simulation->finish();
   }
   for (TomlTable& entry : root.tables("species")) {

@@ -42,9 +42,14 @@ struct SimulationSettings {
   SuitabilityRule suitability = SuitabilityRule::Minimum;  // Liebig's law by default
   // Density caps, turned into plants per cell: stems of breast height and more (the canopy
   // layer) and plants below it (the regeneration layer, where seeds establish).
-  double maxStemsPerHa = 400.0;
+  double maxStemsPerHa = 1000.0;
   double maxSeedlingsPerHa = 500.0;
   int lightDirections = 16;  // sky directions of each plant's light estimate
+  // A stem's light is traced every this many years (a different share of the stems each
+  // year) and kept in between: a tree's light changes slowly, and tracing is most of a
+  // year's work. Seedlings get their ground light every year; a new stem keeps its last
+  // ground light until its turn.
+  int lightRefreshYears = 2;
 };
 
 struct ScenarioSpecies {

@@ -1,6 +1,7 @@
 #include "sim/simulation.hpp"
 
 #include <chrono>
+#include <numeric>
 
 #include <fmt/format.h>
 #include <tbb/info.h>
@@ -37,15 +38,41 @@ void createFolder(const std::filesystem::path& folder) {
                      "cannot create the output folder: " + error.message());
 }
 
-std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem) {
+std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem, const ConditionFields& fields) {
+  const std::vector<FieldInfo>& info = conditionFieldInfo();
   std::vector<SpeciesCount> counts;
-  for (const EcosystemSpecies& s : ecosystem.species()) counts.push_back({s.species.name, 0, 0});
+  for (const EcosystemSpecies& s : ecosystem.species())
+    counts.push_back({s.species.name, 0, 0, std::vector<double>(info.size(), 0.0)});
   const Plants& p = ecosystem.plants();
   for (std::size_t i = 0; i < p.size(); ++i) {
-    ++counts[p.species[i]].alive;
-    if (p.height_m[i] > 5.0f) ++counts[p.species[i]].over5m;
+    SpeciesCount& c = counts[p.species[i]];
+    ++c.alive;
+    if (p.height_m[i] <= 5.0f) continue;
+    ++c.over5m;
+    for (std::size_t f = 0; f < info.size(); ++f)
+      c.meanSiteOver5m[f] += (fields.*info[f].field)[p.cell[i]];
+  }
+  for (SpeciesCount& c : counts) {
+    if (c.over5m == 0) c.meanSiteOver5m.clear();
+    for (double& sum : c.meanSiteOver5m) sum /= static_cast<double>(c.over5m);
   }
   return counts;
+}
+
+std::vector<double> meanSiteOf(const ConditionFields& fields) {
+  std::vector<double> means;
+  for (const FieldInfo& f : conditionFieldInfo()) {
+    const Field& field = fields.*f.field;
+    means.push_back(std::accumulate(field.begin(), field.end(), 0.0) /
+                    static_cast<double>(field.size()));
+  }
+  return means;
+}
+
+nlohmann::ordered_json siteJson(const std::vector<double>& means) {
+  nlohmann::ordered_json json = nlohmann::ordered_json::object();
+  for (std::size_t f = 0; f < means.size(); ++f) json[conditionFieldInfo()[f].name] = means[f];
+  return json;
 }
 
 void writeRunJson(const std::filesystem::path& folder, const Scenario& scenario,
@@ -70,8 +97,11 @@ void writeRunJson(const std::filesystem::path& folder, const Scenario& scenario,
        summary.simulationSeconds > 0.0 ? summary.plantYears / summary.simulationSeconds : 0.0}};
   nlohmann::ordered_json counts = nlohmann::ordered_json::object();
   for (const SpeciesCount& c : summary.counts)
-    counts[c.name] = {{"alive", c.alive}, {"taller_than_5m", c.over5m}};
+    counts[c.name] = {{"alive", c.alive},
+                      {"taller_than_5m", c.over5m},
+                      {"mean_site_taller_than_5m", siteJson(c.meanSiteOver5m)}};
   json["final_counts"] = counts;
+  json["mean_site_of_map"] = siteJson(summary.meanSite);
   AtomicFile out(folder / "run.json");
   out.write(json.dump(2) + "\n");
   out.commit();
@@ -171,7 +201,8 @@ RunSummary runSimulation(const RunOptions& options) {
                     terrain.grid);
   }
   summary.lastYear = ecosystem.year();
-  summary.counts = countsOf(ecosystem);
+  summary.meanSite = meanSiteOf(fields);
+  summary.counts = countsOf(ecosystem, fields);
   writeRunJson(summary.folder, scenario, options, fingerprint, summary, "running");
 
   const auto start = Clock::now();
@@ -197,7 +228,7 @@ RunSummary runSimulation(const RunOptions& options) {
     }
   }
   summary.simulationSeconds = secondsSince(start);
-  summary.counts = countsOf(ecosystem);
+  summary.counts = countsOf(ecosystem, fields);
   if (!summary.interrupted)
     writeFieldMap(summary.folder / "maps", "canopy_height", "m", canopyHeight(ecosystem),
                   terrain.grid);

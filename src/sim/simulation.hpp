@@ -41,6 +41,9 @@ struct SpeciesCount {
   std::string name;
   std::int64_t alive = 0;
   std::int64_t over5m = 0;  // taller than 5 m
+  // Where those taller than 5 m stand: the mean of each condition field over their cells,
+  // in conditionFieldInfo() order (empty where none is that tall).
+  std::vector<double> meanSiteOver5m;
 };
 
 struct RunSummary {
@@ -49,6 +52,7 @@ struct RunSummary {
   int targetYears = 0;
   bool interrupted = false;
   std::vector<SpeciesCount> counts;
+  std::vector<double> meanSite;  // each condition field's mean over the whole map
   double conditionsSeconds = 0.0;
   double simulationSeconds = 0.0;
   double plantYears = 0.0;  // plants stepped, summed over this session's years

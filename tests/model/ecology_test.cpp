@@ -109,6 +109,21 @@ slope_deg = [[10, 1], [20, 0]]
   EXPECT_EQ(e.life.dispersal, DispersalVector::Wind);
   EXPECT_DOUBLE_EQ(e.life.downwindBias, 0.3);
   EXPECT_DOUBLE_EQ(e.life.height_m.max, 20.0);
+  EXPECT_EQ(e.life.longDistanceFraction, 0.0);  // a plain exponential kernel by default
+}
+
+TEST(Ecology, ALongDistanceShareNeedsALongerMean) {
+  const std::string head =
+      "[ecology]\nellenberg = { light = 3, temperature = 5, moisture = 5, continentality = 2 }\n";
+  EXPECT_NE(errorOf(head + kLife + "long_distance_fraction = 0.1\n")
+                .find("ecology.life.long_distance_mean_m: missing"),
+            std::string::npos);
+  EXPECT_NE(errorOf(head + kLife + "long_distance_fraction = 0.1\nlong_distance_mean_m = 20\n")
+                .find("eco.toml:22: ecology.life.long_distance_mean_m: must be longer than "
+                      "dispersal_mean_m"),
+            std::string::npos);
+  EXPECT_EQ(errorOf(head + kLife + "long_distance_fraction = 0.1\nlong_distance_mean_m = 300\n"),
+            "no error");
 }
 
 TEST(Ecology, BadValuesAreReportedAtTheirLine) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "core/random.hpp"
 #include "terrain_support.hpp"
 
 namespace eco {
@@ -27,6 +28,35 @@ Crown crownAt(float east, float north, float transmittance) {
   c.opticalDepthPerMetre = -std::log(transmittance) / 8.0f;
   c.owner = 0;
   return c;
+}
+
+TEST(CanopyLight, TracingManyProbesGivesEachProbesOwnLight) {
+  const Terrain terrain = flat();
+  CanopyScene scene(terrain);
+  std::vector<Crown> crowns;
+  Rng rng(streamKey(9, purpose("test")));
+  for (int i = 0; i < 300; ++i) {
+    Crown c = crownAt(static_cast<float>(20.0 + 160.0 * rng.uniform()),
+                      static_cast<float>(20.0 + 160.0 * rng.uniform()), 0.2f);
+    c.centre.z = static_cast<float>(104.0 + 10.0 * rng.uniform());
+    c.owner = i;
+    crowns.push_back(c);
+  }
+  scene.setCrowns(crowns);
+  std::vector<LightProbe> probes;
+  for (int i = 0; i < 300; i += 3)  // each crown top, its own crown left out
+    probes.push_back({crowns[i].centre + glm::vec3(0.0f, 0.0f, crowns[i].halfLength_m), i});
+  for (int i = 0; i < 37; ++i)  // points on the ground
+    probes.push_back({{10.0f + 5.0f * i, 100.0f, 100.5f}, -1});
+  const LightDirections sky = makeLightDirections(46.0, 16);
+  const std::vector<float> light = scene.lightAt(probes, sky);
+  ASSERT_EQ(light.size(), probes.size());
+  double spread = 0.0;
+  for (std::size_t k = 0; k < probes.size(); ++k) {
+    EXPECT_EQ(light[k], static_cast<float>(scene.lightAt(probes[k].point, probes[k].self, sky)));
+    spread += std::abs(light[k] - light[0]);
+  }
+  EXPECT_GT(spread, 1.0);  // the probes do see different canopies
 }
 
 TEST(CanopyLight, DirectionWeightsSumToOne) {

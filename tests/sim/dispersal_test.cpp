@@ -23,6 +23,27 @@ TEST(Dispersal, DistancesFollowTheKernelsMean) {
   EXPECT_NEAR(north / n, 0.0, 0.3);
 }
 
+TEST(Dispersal, ALongDistanceShareStretchesTheMeanDistance) {
+  LifeHistory life;
+  life.dispersal = DispersalVector::Animal;
+  life.dispersalMean_m = 15.0;
+  life.longDistanceFraction = 0.1;
+  life.longDistanceMean_m = 250.0;
+  Rng rng(streamKey(5, purpose("test")));
+  double distance = 0.0;
+  int beyond100 = 0;
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    const glm::dvec2 o = seedOffset(life, {1.0, 0.0}, rng);
+    distance += std::hypot(o.x, o.y);
+    beyond100 += std::hypot(o.x, o.y) > 100.0;
+  }
+  // The mixture's mean is 0.9 x 15 + 0.1 x 250 = 38.5 m (standard error about 0.17 m); past
+  // 100 m only the long-distance seeds go: 0.1 exp(-100/250) + 0.9 exp(-100/15) = 0.0682.
+  EXPECT_NEAR(distance / n, 38.5, 0.8);
+  EXPECT_NEAR(static_cast<double>(beyond100) / n, 0.0682, 0.002);
+}
+
 TEST(Dispersal, WindDispersedSeedsDriftDownwind) {
   LifeHistory life;
   life.dispersal = DispersalVector::Wind;

@@ -51,6 +51,34 @@ annual_precipitation_mm = 1100.0
   EXPECT_DOUBLE_EQ(s.climate.prevailingWindFrom_deg, 270.0);
 }
 
+TEST(Scenario, ReadsTheSimulationTable) {
+  const Scenario defaults =
+      loadScenario(write("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n"));
+  EXPECT_EQ(defaults.simulation.lightRefreshYears, 2);
+  EXPECT_DOUBLE_EQ(defaults.simulation.maxStemsPerHa, 1000.0);
+  const Scenario s = loadScenario(write(R"([terrain]
+cell_size_m = 5
+[terrain.generate]
+size = 9
+[simulation]
+years = 150
+suitability = "product"
+max_stems_per_ha = 600
+light_directions = 24
+light_refresh_years = 1
+)"));
+  EXPECT_EQ(s.simulation.years, 150);
+  EXPECT_EQ(s.simulation.suitability, SuitabilityRule::Product);
+  EXPECT_DOUBLE_EQ(s.simulation.maxStemsPerHa, 600.0);
+  EXPECT_EQ(s.simulation.lightDirections, 24);
+  EXPECT_EQ(s.simulation.lightRefreshYears, 1);
+  EXPECT_NE(std::string(errorOf("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = "
+                                "9\n[simulation]\nlight_refresh_years = 0\n")
+                            .what())
+                .find("s.toml:6: simulation.light_refresh_years: value 0 is outside [1, 10]"),
+            std::string::npos);
+}
+
 TEST(Scenario, GeneratedTerrainAndDefaults) {
   Scenario s = loadScenario(write("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 129\n"));
   ASSERT_TRUE(s.terrain.generate.has_value());

@@ -79,6 +79,31 @@ TEST(Simulation, WritesTheRunFolder) {
   const std::string json = test::readFile(out / "run.json");
   EXPECT_NE(json.find("\"status\": \"complete\""), std::string::npos);
   EXPECT_NE(json.find("\"fingerprint\""), std::string::npos);
+  EXPECT_NE(json.find("\"mean_site_of_map\""), std::string::npos);
+  EXPECT_NE(json.find("\"mean_site_taller_than_5m\""), std::string::npos);
+  // Where the taller plants stand: a mean of each condition over their cells, so within
+  // the terrain's altitudes (base 400 m, relief 60 m) and the 0..1 of the unitless fields.
+  ASSERT_EQ(summary.meanSite.size(), conditionFieldInfo().size());
+  int speciesWithTallPlants = 0;
+  for (const SpeciesCount& c : summary.counts) {
+    if (c.over5m == 0) {
+      EXPECT_TRUE(c.meanSiteOver5m.empty());
+      continue;
+    }
+    ++speciesWithTallPlants;
+    ASSERT_EQ(c.meanSiteOver5m.size(), summary.meanSite.size());
+    for (std::size_t f = 0; f < c.meanSiteOver5m.size(); ++f) {
+      const std::string name = conditionFieldInfo()[f].name;
+      if (name == "altitude") {
+        EXPECT_GT(c.meanSiteOver5m[f], 340.0);
+        EXPECT_LT(c.meanSiteOver5m[f], 520.0);
+      } else if (name == "moisture" || name == "windiness" || name == "sunniness") {
+        EXPECT_GE(c.meanSiteOver5m[f], 0.0) << name;
+        EXPECT_LE(c.meanSiteOver5m[f], 1.0) << name;
+      }
+    }
+  }
+  EXPECT_GT(speciesWithTallPlants, 0);
 }
 
 TEST(Simulation, SameOutputsWithOneAndTwoThreads) {

@@ -28,6 +28,7 @@ constexpr float kReach_m = 150.0f;
 // Rays are traced in packets of this many nearby probes sharing one direction, so that
 // Embree walks the crown hierarchy once for all of them.
 constexpr int kPacket = 4;
+static_assert(kPacket == 4, "tracePacket traces an RTCRay4 with rtcOccluded4");
 
 struct PacketQuery {
   RTCIntersectContext context;  // first member: Embree hands back a pointer to it

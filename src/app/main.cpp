@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/conditions_command.hpp"
+#include "app/render_command.hpp"
 #include "app/run_command.hpp"
 #include "app/tree_command.hpp"
 #include "core/error.hpp"
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   eco::addConditionsCommand(app);
   eco::addTerrainCommand(app);
   eco::addRunCommand(app);
+  eco::addRenderCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

@@ -23,24 +23,35 @@ struct TerrainScene::Impl {
   RTCScene scene = nullptr;
 };
 
+double solarDeclination(double dayOfYear) {
+  return 23.44 * kRad * std::sin(2.0 * std::numbers::pi * (284.0 + dayOfYear) / 365.0);
+}
+
+glm::dvec3 sunDirection(double latitude_deg, double declination, double hourAngle) {
+  const double phi = latitude_deg * kRad;
+  return glm::normalize(
+      glm::dvec3(-std::cos(declination) * std::sin(hourAngle),
+                 std::sin(declination) * std::cos(phi) -
+                     std::cos(declination) * std::cos(hourAngle) * std::sin(phi),
+                 std::sin(declination) * std::sin(phi) +
+                     std::cos(declination) * std::cos(hourAngle) * std::cos(phi)));
+}
+
 SunPath makeSunPath(double latitude_deg, const SunlightSettings& settings) {
   SunPath path;
   const double phi = latitude_deg * kRad;
   for (int d = 0; d < settings.days; ++d) {
     const double day = 365.0 * (d + 0.5) / settings.days;
-    const double delta = 23.44 * kRad * std::sin(2.0 * std::numbers::pi * (284.0 + day) / 365.0);
+    const double delta = solarDeclination(day);
     const double cosSunset = std::clamp(-std::tan(phi) * std::tan(delta), -1.0, 1.0);
     const double sunset = std::acos(cosSunset);  // hour angle, radians; 0 in polar night
     if (sunset <= 0.0) continue;
     const double step = 2.0 * sunset / settings.hoursPerDay;
     for (int h = 0; h < settings.hoursPerDay; ++h) {
       const double omega = -sunset + (h + 0.5) * step;
-      glm::dvec3 s(
-          -std::cos(delta) * std::sin(omega),
-          std::sin(delta) * std::cos(phi) - std::cos(delta) * std::cos(omega) * std::sin(phi),
-          std::sin(delta) * std::sin(phi) + std::cos(delta) * std::cos(omega) * std::cos(phi));
+      const glm::dvec3 s = sunDirection(latitude_deg, delta, omega);
       if (s.z <= 0.0) continue;
-      path.directions.push_back(glm::normalize(s));
+      path.directions.push_back(s);
       path.weights.push_back(step);  // time the sample stands for, in radians of hour angle
     }
   }

@@ -21,6 +21,12 @@ struct SunlightSettings {
   double diffuseFraction = 0.4;  // share of diffuse light in annual insolation on open flat ground
 };
 
+// Declination (radians) on a day of the year (Cooper 1969).
+double solarDeclination(double dayOfYear);
+// The unit direction toward the sun at a latitude for a declination and an hour angle
+// (radians, 0 at solar noon, negative in the morning).
+glm::dvec3 sunDirection(double latitude_deg, double declination, double hourAngle);
+
 // Sun directions above the horizon with weights proportional to the time they stand for
 // (declination by Cooper's formula, hour angles spread evenly from sunrise to sunset).
 struct SunPath {

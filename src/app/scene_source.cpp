@@ -1,0 +1,70 @@
+#include "app/scene_source.hpp"
+
+#include <fmt/format.h>
+
+#include "app/data_paths.hpp"
+#include "core/error.hpp"
+#include "sim/conditions.hpp"
+#include "sim/image_io.hpp"
+
+namespace eco {
+
+int SceneSource::defaultYear() const {
+  return run && !run->snapshotYears.empty() ? run->snapshotYears.back() : 0;
+}
+
+Forest SceneSource::forestOf(int year, std::size_t demoTrees) const {
+  if (!library) return {};
+  if (run) return forestFromSnapshot(readSnapshot(*run, year), *library, run->dir.string());
+  return demoForest(terrain, *library, demoTrees, scenario.seed);
+}
+
+Field SceneSource::overlay(const std::string& name) const {
+  if (run) {
+    const std::filesystem::path file = run->dir / "maps" / (name + ".exr");
+    if (!std::filesystem::exists(file)) {
+      std::string names;
+      if (std::filesystem::is_directory(run->dir / "maps"))
+        for (const auto& entry : std::filesystem::directory_iterator(run->dir / "maps"))
+          if (entry.path().extension() == ".exr")
+            names += (names.empty() ? "" : ", ") + entry.path().stem().string();
+      throw InputError({run->dir.string(), 0, "overlay"},
+                       fmt::format("the run has no map '{}' (it has: {})", name, names));
+    }
+    SingleChannelImage image = readSingleChannel(file);
+    if (image.width != terrain.grid.width || image.height != terrain.grid.height)
+      throw InputError({file.string(), 0, ""}, "the map does not match the terrain's grid");
+    return std::move(image.values);
+  }
+  for (const FieldInfo& info : conditionFieldInfo())
+    if (name == info.name) {
+      const ConditionFields fields = computeConditions(terrain, scenario.climate, {});
+      return fields.*info.field;
+    }
+  std::string names;
+  for (const FieldInfo& info : conditionFieldInfo())
+    names += (names.empty() ? "" : ", ") + std::string(info.name);
+  throw InputError({scenario.file.string(), 0, "overlay"},
+                   fmt::format("no condition '{}' (there are: {})", name, names));
+}
+
+SceneSource openSceneSource(const std::string& runOrScenario, bool withTrees, bool demoTrees,
+                            const LibrarySettings& settings) {
+  SceneSource source;
+  if (std::filesystem::is_directory(runOrScenario)) {
+    source.run = openRunFolder(runOrScenario);
+    source.scenario = source.run->scenario;
+  } else {
+    source.scenario = loadScenario(resolveScenario(runOrScenario));
+  }
+  source.terrain = loadTerrain(source.scenario);
+  const bool trees = withTrees && (source.run || demoTrees) && !source.scenario.species.empty();
+  if (trees) {
+    std::vector<Species> species;
+    for (const ScenarioSpecies& s : source.scenario.species) species.push_back(loadSpecies(s.file));
+    source.library = std::make_unique<TreeLibrary>(std::move(species), settings);
+  }
+  return source;
+}
+
+}  // namespace eco

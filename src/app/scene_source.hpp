@@ -1,0 +1,39 @@
+// What `render` and `view` show: a run folder (its terrain, species and snapshots) or a
+// scenario (its terrain, and optionally a demo planting of its species).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "render/forest.hpp"
+#include "render/tree_library.hpp"
+#include "sim/grid.hpp"
+#include "sim/run_folder.hpp"
+#include "sim/scenario.hpp"
+#include "sim/terrain.hpp"
+
+namespace eco {
+
+struct SceneSource {
+  std::optional<RunFolder> run;
+  Scenario scenario;
+  Terrain terrain;
+  std::unique_ptr<TreeLibrary> library;  // null when there are no trees to draw
+
+  // The year shown when none is asked for: the run's last snapshot.
+  int defaultYear() const;
+  // The trees of a snapshot year (run) or the demo planting (scenario, `demoTrees` > 0).
+  Forest forestOf(int year, std::size_t demoTrees) const;
+  // A map for the terrain overlay: a condition, "suitability_<species>" or "canopy_height"
+  // from the run's maps/, or a condition computed for a scenario.
+  Field overlay(const std::string& name) const;
+};
+
+// A directory is a run folder; anything else a scenario name or file (resolveScenario).
+// Trees are built when the source has species and `withTrees` is set.
+SceneSource openSceneSource(const std::string& runOrScenario, bool withTrees, bool demoTrees,
+                            const LibrarySettings& settings = {});
+
+}  // namespace eco

@@ -1,0 +1,49 @@
+// Per-frame choices made on the CPU for every tree: is it in the view frustum, and which
+// level of detail draws it. LOD follows the tree's projected height in pixels; near each
+// switching size the two levels cross-fade over a band (screen-door dithering with
+// complementary masks), so nothing pops and no per-tree state is needed: a frame depends
+// only on the camera, which keeps stills and time-lapse frames reproducible.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace eco {
+
+// Levels drawn by the renderer: the model's three meshes, then the impostor.
+inline constexpr int kLevelImpostor = 3;
+inline constexpr int kLevelCount = 4;
+
+struct Frustum {
+  std::array<glm::vec4, 6> planes;  // inward normals: inside where dot(n, p) + d >= 0
+
+  static Frustum fromMatrix(const glm::mat4& viewProjection);
+  bool intersectsSphere(glm::vec3 centre, float radius) const;
+};
+
+struct LodSettings {
+  // Projected tree height (pixels) above which each level is used: LOD0, LOD1, LOD2;
+  // smaller trees are impostors, and trees under minPixels are not drawn.
+  // Impostor frames are 64 pixels (ImpostorSettings), so impostors are never magnified.
+  std::array<float, 3> switchPixels{400.0f, 120.0f, 60.0f};
+  float minPixels = 1.0f;
+  float fadeBand = 0.15f;  // cross-fade over switch * (1 +- fadeBand)
+  bool impostors = true;   // false: LOD2 all the way out
+  int forcedLevel = -1;    // >= 0: every tree at this level, no fading (tests, benchmark)
+};
+
+struct LodChoice {
+  std::int8_t level = -1;   // -1: not drawn
+  std::int8_t fadeTo = -1;  // the coarser level it fades into, or -1
+  float fade = 0.0f;        // share of the pixels the coarser level takes, 0..1
+};
+
+// Height in pixels of an object of height `height_m` at `distance_m` (perspective).
+float projectedPixels(float height_m, float distance_m, float pixelsPerRadian);
+LodChoice chooseLevel(float pixels, const LodSettings& settings);
+
+}  // namespace eco

@@ -1,0 +1,111 @@
+// Draws a Forest with a TreeLibrary on the GPU: every mesh of the library in one vertex and
+// one index buffer, one impostor atlas per type, and per frame one instance buffer filled
+// from the forest's arrays after culling and LOD choice, drawn with one instanced call per
+// (type, level, material part) — never a draw call per tree.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "render/camera.hpp"
+#include "render/culling.hpp"
+#include "render/forest.hpp"
+#include "render/frame_uniforms.hpp"
+#include "render/gl_objects.hpp"
+#include "render/impostor.hpp"
+#include "render/shader.hpp"
+#include "render/tree_library.hpp"
+
+namespace eco {
+
+struct ForestStats {
+  std::array<std::size_t, kLevelCount> instances{};  // per level, cross-fades counted twice
+  std::size_t culled = 0;                            // outside the frustum
+  std::size_t tooSmall = 0;                          // under the LOD settings' minimum size
+  std::size_t triangles = 0;                         // drawn in the colour pass
+  std::size_t lod0Triangles = 0;                     // the same trees all at LOD0, for comparison
+  std::size_t shadowCasters = 0;
+};
+
+// Where trees cast shadows: within `halfSize_m` of `centre`, and only trees drawn as meshes.
+struct ShadowBox {
+  glm::vec3 centre{0.0f};
+  float halfSize_m = 0.0f;  // 0: no shadow pass
+};
+
+// One tree instance as the shaders read it (attributes 8-10).
+struct InstanceAttributes {
+  glm::vec4 positionYaw;  // stem base (world), yaw (radians)
+  glm::vec4 scale;        // horizontal, vertical, fade code (ditherKeeps), wind phase
+  glm::vec4 tint;
+};
+// Vertex layouts of the tree shaders: TreeVertex at binding 0, InstanceAttributes at
+// binding 1 (one per instance).
+void setTreeVertexLayout(GLuint vertexArray);
+void setInstanceLayout(GLuint vertexArray);
+
+class ForestRenderer {
+ public:
+  ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
+                 const FrameUniformBuffer& uniforms);
+
+  // Culls, picks levels and fills the instance buffer for this camera.
+  ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
+                      const LodSettings& lod, const ShadowBox& shadows);
+  void draw() const;         // the colour pass of what prepare() chose
+  void drawShadows() const;  // the shadow casters into the bound depth target
+
+  const TreeLibrary& library() const { return library_; }
+  // The albedo atlas of a type's impostor (tests look at it).
+  GLuint impostorAlbedo(int type) const { return atlases_[type].albedo.id(); }
+
+ private:
+  struct DrawRange {
+    MaterialKind material;
+    GLsizei count;
+    std::uintptr_t firstIndex;
+    GLint baseVertex;
+  };
+  struct Material {
+    GlName texture;
+    glm::vec4 baseColor{1.0f};  // linear
+    bool alphaMask = false;
+    bool doubleSided = false;
+    float translucency = 0.0f;
+  };
+  struct Atlas {
+    GlName albedo, normal;
+  };
+  struct Bucket {  // instances of one type at one level, contiguous in the instance buffer
+    GLuint first = 0;
+    GLsizei count = 0;
+  };
+  using Instance = InstanceAttributes;
+
+  void drawRanges(const std::vector<DrawRange>& ranges, int species, Bucket bucket,
+                  const Program& program) const;
+  void bakeImpostors(const FrameUniformBuffer& uniforms);
+  void bindMaterial(const Program& program, int species, MaterialKind kind) const;
+
+  const TreeLibrary& library_;
+  ImpostorSettings impostorSettings_;
+  Program meshProgram_, meshShadowProgram_, bakeProgram_, impostorProgram_;
+  GlName vertices_, indices_, meshArray_, quad_, impostorArray_, instances_;
+  std::size_t instanceCapacity_ = 0;
+  std::vector<std::array<std::vector<DrawRange>, kLodCount>> ranges_;  // [type][lod]
+  std::vector<std::array<std::size_t, kLodCount>> triangles_;
+  std::vector<std::vector<Material>> materials_;  // [species][MaterialKind]
+  std::vector<Atlas> atlases_;
+  std::vector<Bucket> buckets_;        // [type * kLevelCount + level]
+  std::vector<Bucket> shadowBuckets_;  // [type]
+  // Scratch of prepare(), kept to avoid reallocating every frame.
+  std::vector<LodChoice> choices_;
+  std::vector<std::uint8_t> casts_;
+  std::vector<Instance> staging_;
+};
+
+}  // namespace eco

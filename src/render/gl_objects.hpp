@@ -1,0 +1,72 @@
+// Owning handles for OpenGL objects (moved, never copied) and the few helpers every part of
+// the renderer needs: immutable buffers, textures from images, render targets, read-back.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <utility>
+
+#include <epoxy/gl.h>
+
+#include "core/image.hpp"
+
+namespace eco {
+
+enum class GlKind { Buffer, VertexArray, Texture, Framebuffer, Program, Query };
+
+class GlName {
+ public:
+  GlName() = default;
+  GlName(GlKind kind, GLuint id) : kind_(kind), id_(id) {}
+  ~GlName() { reset(); }
+  GlName(GlName&& other) noexcept : kind_(other.kind_), id_(std::exchange(other.id_, 0)) {}
+  GlName& operator=(GlName&& other) noexcept {
+    if (this != &other) {
+      reset();
+      kind_ = other.kind_;
+      id_ = std::exchange(other.id_, 0);
+    }
+    return *this;
+  }
+  GlName(const GlName&) = delete;
+  GlName& operator=(const GlName&) = delete;
+
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  void reset();
+
+ private:
+  GlKind kind_ = GlKind::Buffer;
+  GLuint id_ = 0;
+};
+
+GlName makeBuffer(const void* data, std::size_t bytes, GLbitfield flags = 0);
+template <class T>
+GlName makeBuffer(std::span<const T> data, GLbitfield flags = 0) {
+  return makeBuffer(data.data(), data.size_bytes(), flags);
+}
+GlName makeVertexArray();
+
+// An RGBA8 texture with mipmaps from an image (row 0 at the top, as glTF's uv expects).
+GlName makeTexture(const Image& image, bool repeat);
+
+// Colour (RGBA8, or RGBA16F when hdr) plus depth, multisampled when samples > 1.
+struct RenderTarget {
+  int width = 0, height = 0;
+  GlName framebuffer;
+  GlName color;
+  GlName extraColor;  // second colour attachment, present when asked for (impostor normals)
+  GlName depth;
+
+  static RenderTarget create(int width, int height, bool extraColor = false,
+                             GLenum colorFormat = GL_RGBA8);
+  void bind() const;
+};
+
+// Reads the colour attachment of the bound framebuffer; row 0 of the image is the top row.
+Image readPixels(int width, int height, GLenum attachment = GL_COLOR_ATTACHMENT0);
+
+// Throws std::runtime_error naming `where` if OpenGL reported an error.
+void checkGl(const char* where);
+
+}  // namespace eco

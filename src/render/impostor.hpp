@@ -1,0 +1,30 @@
+// Hemi-octahedral impostors (an octahedral impostor over the upper hemisphere; Tankard's
+// billboards, 000_...txt section 3.5, taken to many directions). Each tree type is rendered
+// from frames x frames directions spread over the hemisphere by the hemi-octahedral map into
+// an atlas of albedo and normal tiles; a far tree is a quad facing the frame direction
+// nearest to the direction it is seen from, lit per pixel from the baked normals, so it
+// agrees with the mesh under any sun. The same functions exist in shaders/common.glsl.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace eco {
+
+struct ImpostorSettings {
+  int frames = 8;       // per side of the atlas: frames^2 directions
+  int tilePixels = 64;  // per frame
+  int bakeLod = 1;  // the mesh the frames show (LOD1: the look of LOD0 at a fraction of the cost)
+};
+
+// Unit direction with y >= 0 -> [0, 1]^2, and back.
+glm::vec2 hemiOctEncode(glm::vec3 direction);
+glm::vec3 hemiOctDecode(glm::vec2 uv);
+// The frame (column, row) that shows a tree seen from `direction` (tree frame), and the
+// direction that frame was baked from.
+glm::ivec2 impostorFrame(glm::vec3 direction, int frames);
+glm::vec3 frameDirection(glm::ivec2 frame, int frames);
+// The right and up axes of the orthographic camera that bakes the frame of direction f.
+void frameAxes(glm::vec3 f, glm::vec3& right, glm::vec3& up);
+
+}  // namespace eco

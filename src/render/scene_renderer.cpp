@@ -1,0 +1,135 @@
+#include "render/scene_renderer.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "model/strand_model.hpp"
+
+namespace eco {
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
+                             const TreeLibrary* library, const ImpostorSettings& impostors)
+    : latitude_deg_(latitude_deg),
+      mapSize_m_(static_cast<float>(
+          std::hypot(terrain.grid.eastOf(terrain.grid.width - 1), terrain.grid.northOf(0)))),
+      terrain_(terrain),
+      sky_({{GL_VERTEX_SHADER, "sky.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}),
+      skyArray_(makeVertexArray()) {
+  if (library) forest_ = std::make_unique<ForestRenderer>(*library, impostors, uniforms_);
+}
+
+void SceneRenderer::renderShadowMap(const Camera& camera, const RenderOptions& options,
+                                    FrameUniforms& u, bool forestCasts) {
+  if (shadowSize_ != options.shadowMapSize) {
+    shadowSize_ = options.shadowMapSize;
+    GLuint texture = 0, framebuffer = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, 1, GL_DEPTH_COMPONENT32F, shadowSize_, shadowSize_);
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glCreateFramebuffers(1, &framebuffer);
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0);
+    glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
+    shadowDepth_ = GlName(GlKind::Texture, texture);
+    shadowFramebuffer_ = GlName(GlKind::Framebuffer, framebuffer);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_.id());
+  glViewport(0, 0, shadowSize_, shadowSize_);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  uniforms_.upload(u);
+  terrain_.draw(true);
+  if (forestCasts) forest_->drawShadows();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  (void)camera;
+}
+
+FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
+                                 const RenderOptions& options, const RenderTarget& target) {
+  const auto start = std::chrono::steady_clock::now();
+  FrameStats stats;
+  const Lighting light = lightingFor(latitude_deg_, options.sun);
+  const float aspect = static_cast<float>(target.width) / static_cast<float>(target.height);
+
+  // The shadowed square lies ahead of the camera on the ground plane.
+  glm::vec3 ahead = camera.forward();
+  ahead.y = 0.0f;
+  ahead = glm::length(ahead) > 1e-4f ? glm::normalize(ahead) : glm::vec3(0.0f, 0.0f, -1.0f);
+  ShadowBox box;
+  const bool shadows = options.shadows && light.toSun.y > 0.02f;
+  if (shadows) {
+    box.centre = camera.position + ahead * (0.7f * options.shadowRange_m);
+    box.halfSize_m = options.shadowRange_m;
+  }
+
+  FrameUniforms u;
+  const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
+  u.viewProj = viewProj;
+  u.inverseViewProj = glm::inverse(viewProj);
+  if (shadows) {
+    const float depth = 4000.0f;
+    const glm::mat4 lightView =
+        glm::lookAt(box.centre + light.toSun * (0.5f * depth), box.centre,
+                    std::abs(light.toSun.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1));
+    const float r = box.halfSize_m * 1.5f;  // the square seen from a slanted sun
+    u.lightViewProj = glm::ortho(-r, r, -r, r, 0.0f, depth) * lightView;
+  }
+  u.camera = glm::vec4(camera.position, static_cast<float>(options.wind.time));
+  u.toSun = glm::vec4(light.toSun, shadows ? 1.0f : 0.0f);
+  u.sunColor = glm::vec4(light.sunColor, options.fogDensity.value_or(0.12f / mapSize_m_));
+  u.skyZenith = glm::vec4(light.skyZenith, 0.0f);
+  u.skyHorizon = glm::vec4(light.skyHorizon, 0.0f);
+  u.ambient = glm::vec4(light.ambient, 0.0f);
+  const glm::dvec3 toward = windTowardFromBearing(options.wind.fromBearing_deg);
+  const double directed = options.wind.directed_wg / kBendBasis_wg;
+  u.wind =
+      glm::vec4(static_cast<float>(toward.x * directed), static_cast<float>(toward.z * directed),
+                static_cast<float>(options.wind.sway_ws / kSwayBasis_ws),
+                static_cast<float>(options.wind.gust));
+
+  if (forest_ && forest)
+    stats.forest = forest_->prepare(*forest, camera, target.width, target.height, options.lod, box);
+  stats.prepareMs = millisecondsSince(start);
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  if (shadows) renderShadowMap(camera, options, u, forest_ && forest && stats.forest.shadowCasters);
+  glBindTextureUnit(4, shadowDepth_.id());
+
+  target.bind();
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  uniforms_.upload(u);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  sky_.use();
+  glBindVertexArray(skyArray_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_DEPTH_TEST);
+  terrain_.draw(false);
+  stats.terrainTriangles = terrain_.triangleCount();
+  if (forest_ && forest) forest_->draw();
+  glFinish();
+  checkGl("SceneRenderer::render");
+  stats.frameMs = millisecondsSince(start);
+  return stats;
+}
+
+}  // namespace eco

@@ -1,0 +1,107 @@
+// Shared by every shader: the frame's uniforms, wind, lighting, fog and dithering.
+// C++ mirror: FrameUniforms in scene_renderer.hpp (std140: only vec4 and mat4 members).
+layout(std140, binding = 0) uniform FrameBlock {
+  mat4 uViewProj;
+  mat4 uLightViewProj;
+  mat4 uInverseViewProj;
+  vec4 uCamera;      // xyz eye position; w wind time (radians of the sway oscillation)
+  vec4 uToSun;       // xyz unit direction toward the sun; w 1 when the shadow map is used
+  vec4 uSunColor;    // rgb beam; w fog density per metre
+  vec4 uSkyZenith;   // rgb
+  vec4 uSkyHorizon;  // rgb
+  vec4 uAmbient;     // rgb sky light
+  vec4 uWind;        // xy directed wind toward (east, south) in units of the bend basis;
+                     // z undirected sway in units of the sway basis; w gust amplitude
+};
+
+layout(binding = 4) uniform sampler2DShadow uShadowMap;
+
+// Wind displacement of a vertex in its tree's frame (docs/rendering.md): the undirected sway
+// of EcoMod linearised in the branch rotations, sin(t) * swaySin + cos(t) * swayCos, plus the
+// directed bend toward a horizontal wind, a sum over its two axes (bend bases for wind toward
+// east and toward south). `windLocal` is the directed wind in the tree frame.
+vec3 windOffset(vec3 swaySin, vec3 swayCos, vec3 bendEast, vec3 bendSouth, float t,
+                vec2 windLocal, float sway, float gust) {
+  float gustFactor = 1.0 + gust * sin(0.31 * t);
+  return sway * (sin(t) * swaySin + cos(t) * swayCos) +
+         gustFactor * (windLocal.x * bendEast + windLocal.y * bendSouth);
+}
+
+// Rotation about the vertical by yaw (radians), x east toward z south.
+vec3 rotateYaw(vec3 v, float yaw) {
+  float c = cos(yaw), s = sin(yaw);
+  return vec3(c * v.x - s * v.z, v.y, s * v.x + c * v.z);
+}
+
+float shadowAt(vec3 worldPosition) {
+  if (uToSun.w < 0.5) return 1.0;
+  vec4 p = uLightViewProj * vec4(worldPosition, 1.0);
+  vec3 q = p.xyz / p.w * 0.5 + 0.5;
+  if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(1.0)))) return 1.0;
+  // 2x2 percentage-closer filtering on top of the hardware comparison.
+  vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0));
+  float lit = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    vec2 o = (vec2(i & 1, i >> 1) - 0.5) * texel;
+    lit += texture(uShadowMap, vec3(q.xy + o, q.z - 0.0015));
+  }
+  return lit * 0.25;
+}
+
+vec3 skyColor(vec3 direction) {
+  float up = clamp(direction.y, 0.0, 1.0);
+  vec3 sky = mix(uSkyHorizon.rgb, uSkyZenith.rgb, pow(up, 0.6));
+  float sun = max(dot(direction, uToSun.xyz), 0.0);
+  return sky + uSunColor.rgb * (0.02 * pow(sun, 8.0) + 4.0 * smoothstep(0.9995, 0.9999, sun));
+}
+
+vec3 applyFog(vec3 color, vec3 worldPosition) {
+  vec3 toPoint = worldPosition - uCamera.xyz;
+  float distance = length(toPoint);
+  float visible = exp(-uSunColor.w * distance);
+  return mix(skyColor(normalize(vec3(toPoint.x, max(toPoint.y, 0.0) * 0.2, toPoint.z))), color,
+             visible);
+}
+
+// Lambert lighting from the sun (with shadow) and the sky; `translucency` lets thin leaves
+// pass light from behind.
+vec3 shade(vec3 albedo, vec3 normal, vec3 worldPosition, float translucency) {
+  float cosine = dot(normal, uToSun.xyz);
+  float direct = max(cosine, 0.0) + translucency * max(-cosine, 0.0);
+  float skyLight = 0.6 + 0.4 * normal.y;
+  vec3 light = uSunColor.rgb * direct * shadowAt(worldPosition) + uAmbient.rgb * skyLight;
+  return applyFog(albedo * light, worldPosition);
+}
+
+// Screen-door cross-fade between two levels of detail: code in [0, 1] keeps the pixels whose
+// threshold is at least code (the finer level), code in (1, 2] keeps those below code - 1
+// (the coarser level). The two masks are complementary, so the sum covers every pixel once.
+#ifdef FRAGMENT_STAGE
+bool ditherKeeps(float code) {
+  // A white-noise threshold per pixel: no pattern for the eye to catch during a fade.
+  uvec2 p = uvec2(gl_FragCoord.xy);
+  uint h = p.x * 1973u + p.y * 9277u;
+  h = (h ^ (h >> 15)) * 0x2c1b3c6du;
+  h = (h ^ (h >> 12)) * 0x297a2d39u;
+  float threshold = float((h ^ (h >> 15)) & 0xffffu) / 65536.0;
+  return code <= 1.0 ? threshold >= code : threshold < code - 1.0;
+}
+#endif
+
+// Hemi-octahedral impostor frames (impostor.hpp): unit direction (y >= 0) <-> [0, 1]^2.
+vec2 hemiOctEncode(vec3 d) {
+  d /= abs(d.x) + abs(d.y) + abs(d.z);
+  return vec2(d.x + d.z, d.x - d.z) * 0.5 + 0.5;
+}
+vec3 hemiOctDecode(vec2 uv) {
+  vec2 e = uv * 2.0 - 1.0;
+  vec3 d = vec3((e.x + e.y) * 0.5, 0.0, (e.x - e.y) * 0.5);
+  d.y = 1.0 - abs(d.x) - abs(d.z);
+  return normalize(d);
+}
+// The axes of the orthographic camera that baked the frame seen from direction `f`.
+void frameAxes(vec3 f, out vec3 right, out vec3 up) {
+  vec3 reference = abs(f.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, -1.0);
+  right = normalize(cross(reference, f));
+  up = cross(f, right);
+}

@@ -1,0 +1,44 @@
+// Instanced tree meshes (LOD0-2): the model's vertices plus their wind bases, per-instance
+// placement, and the cross-fade code.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+layout(location = 3) in vec3 aSwaySin;
+layout(location = 4) in vec3 aSwayCos;
+layout(location = 5) in vec3 aBendEast;
+layout(location = 6) in vec3 aBendSouth;
+layout(location = 8) in vec4 iPositionYaw;  // world position of the stem base, yaw (radians)
+layout(location = 9) in vec4 iScale;        // horizontal scale, vertical scale, fade code, phase
+layout(location = 10) in vec4 iTint;        // rgb multiplier
+
+out vec3 vWorld;
+out vec3 vNormal;
+out vec2 vUv;
+flat out vec3 vTint;
+flat out float vFade;
+#ifdef FEEDBACK
+out vec3 fbLocal;  // the displaced vertex in its tree's frame, for the wind test
+#endif
+
+void main() {
+  float yaw = iPositionYaw.w;
+  float t = uCamera.w + iScale.w;
+  vec3 windWorld = vec3(uWind.x, 0.0, uWind.y);
+  vec3 windLocal = rotateYaw(windWorld, -yaw);
+  vec3 local = aPosition + windOffset(aSwaySin, aSwayCos, aBendEast, aBendSouth, t,
+                                      windLocal.xz, uWind.z, uWind.w);
+#ifdef FEEDBACK
+  fbLocal = local;
+#endif
+  vec3 scale = vec3(iScale.x, iScale.y, iScale.x);
+  vWorld = iPositionYaw.xyz + rotateYaw(local * scale, yaw);
+  vNormal = rotateYaw(normalize(aNormal / scale), yaw);
+  vUv = aUv;
+  vTint = iTint.rgb;
+  vFade = iScale.z;
+#ifdef SHADOW_PASS
+  gl_Position = uLightViewProj * vec4(vWorld, 1.0);
+#else
+  gl_Position = uViewProj * vec4(vWorld, 1.0);
+#endif
+}

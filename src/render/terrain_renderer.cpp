@@ -1,0 +1,98 @@
+#include "render/terrain_renderer.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/camera.hpp"
+#include "sim/condition_maps.hpp"
+
+namespace eco {
+namespace {
+
+struct TerrainVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 mapUv;
+};
+
+}  // namespace
+
+TerrainRenderer::TerrainRenderer(const Terrain& terrain)
+    : grid_(terrain.grid),
+      program_({{GL_VERTEX_SHADER, "terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain.frag"}}),
+      shadowProgram_({{GL_VERTEX_SHADER, "terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain.frag"}},
+                     {"SHADOW_PASS"}) {
+  const Grid& g = terrain.grid;
+  const FieldStats range = statsOf(terrain.height_m);
+  lowest_m_ = static_cast<float>(range.min);
+  highest_m_ = static_cast<float>(range.max);
+  std::vector<TerrainVertex> vertices(g.cellCount());
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      // Central differences, one-sided at the edges.
+      const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, g.width - 1);
+      const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, g.height - 1);
+      const float dEast = (terrain.heightAt(x1, y) - terrain.heightAt(x0, y)) /
+                          static_cast<float>((x1 - x0) * g.dx_m);
+      // Row y grows southward, world z grows southward too.
+      const float dSouth = (terrain.heightAt(x, y1) - terrain.heightAt(x, y0)) /
+                           static_cast<float>((y1 - y0) * g.dy_m);
+      TerrainVertex& v = vertices[g.index(x, y)];
+      v.position = worldFromMap(g.eastOf(x), g.northOf(y), terrain.heightAt(x, y));
+      v.normal = glm::normalize(glm::vec3(-dEast, 1.0f, -dSouth));
+      v.mapUv = {(x + 0.5f) / g.width, (y + 0.5f) / g.height};
+    }
+  std::vector<std::uint32_t> indices;
+  indices.reserve(static_cast<std::size_t>(g.width - 1) * (g.height - 1) * 6);
+  for (int y = 0; y + 1 < g.height; ++y)
+    for (int x = 0; x + 1 < g.width; ++x) {
+      const auto a = static_cast<std::uint32_t>(g.index(x, y)), b = a + 1,
+                 c = static_cast<std::uint32_t>(g.index(x, y + 1)), d = c + 1;
+      // Counter-clockwise seen from above (y up, z south).
+      indices.insert(indices.end(), {a, c, b, b, c, d});
+    }
+  indexCount_ = static_cast<GLsizei>(indices.size());
+  vertices_ = makeBuffer(std::span<const TerrainVertex>(vertices));
+  indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
+  vertexArray_ = makeVertexArray();
+  const GLuint vao = vertexArray_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(TerrainVertex));
+  glVertexArrayElementBuffer(vao, indices_.id());
+  const GLuint offsets[] = {offsetof(TerrainVertex, position), offsetof(TerrainVertex, normal),
+                            offsetof(TerrainVertex, mapUv)};
+  const GLint sizes[] = {3, 3, 2};
+  for (GLuint a = 0; a < 3; ++a) {
+    glEnableVertexArrayAttrib(vao, a);
+    glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+    glVertexArrayAttribBinding(vao, a, 0);
+  }
+  program_.set("uAltitudeRange", glm::vec2(lowest_m_, highest_m_));
+}
+
+void TerrainRenderer::setOverlay(const std::string& name, const Field& values) {
+  const FieldStats range = statsOf(values);
+  Image image(grid_.width, grid_.height);
+  for (int y = 0; y < grid_.height; ++y)
+    for (int x = 0; x < grid_.width; ++x) {
+      const double t = range.max > range.min
+                           ? (values[grid_.index(x, y)] - range.min) / (range.max - range.min)
+                           : 0.5;
+      image.set(x, y, glm::vec4(rampColor(name, t), 1.0f));
+    }
+  overlay_ = makeTexture(image, false);
+}
+
+void TerrainRenderer::draw(bool shadowPass) const {
+  const Program& program = shadowPass ? shadowProgram_ : program_;
+  program.use();
+  program.set("uHasOverlay", hasOverlay() ? 1 : 0);
+  if (hasOverlay()) glBindTextureUnit(3, overlay_.id());
+  glBindVertexArray(vertexArray_.id());
+  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace eco

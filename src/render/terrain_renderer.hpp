@@ -1,0 +1,36 @@
+// The ground: a triangle mesh through the heightmap's cell centres with smooth normals,
+// coloured by altitude and slope in the shader, or by a condition map as an overlay.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "render/gl_objects.hpp"
+#include "render/shader.hpp"
+#include "sim/grid.hpp"
+#include "sim/terrain.hpp"
+
+namespace eco {
+
+class TerrainRenderer {
+ public:
+  explicit TerrainRenderer(const Terrain& terrain);
+
+  // Colours the ground by a field on its colour ramp (condition_maps.hpp), stretched over
+  // the field's range; `name` picks the ramp.
+  void setOverlay(const std::string& name, const Field& values);
+  void clearOverlay() { overlay_ = GlName(); }
+  bool hasOverlay() const { return static_cast<bool>(overlay_); }
+
+  void draw(bool shadowPass) const;
+  std::size_t triangleCount() const { return indexCount_ / 3; }
+
+ private:
+  Grid grid_;
+  float lowest_m_ = 0.0f, highest_m_ = 0.0f;
+  Program program_, shadowProgram_;
+  GlName vertices_, indices_, vertexArray_, overlay_;
+  GLsizei indexCount_ = 0;
+};
+
+}  // namespace eco

@@ -1,0 +1,82 @@
+#include "render/tree_library.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
+
+#include "core/error.hpp"
+
+namespace eco {
+namespace {
+
+glm::vec4 boundingSphere(const WindLods& meshes) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const WindMesh& lod : meshes.lods)
+    for (const WindPart& part : lod.parts)
+      for (const TreeVertex& v : part.vertices) {
+        lo = glm::min(lo, v.position);
+        hi = glm::max(hi, v.position);
+      }
+  const glm::vec3 centre(0.0f, 0.5f * (lo.y + hi.y), 0.0f);  // on the stem axis
+  float radius = 0.0f;
+  for (const WindMesh& lod : meshes.lods)
+    for (const WindPart& part : lod.parts)
+      for (const TreeVertex& v : part.vertices)
+        radius = std::max(radius, glm::length(v.position - centre));
+  return {centre, radius};
+}
+
+}  // namespace
+
+TreeLibrary::TreeLibrary(std::vector<Species> species, const LibrarySettings& settings)
+    : species_(std::move(species)), settings_(settings) {
+  ECO_ASSERT(settings.variants >= 1 && !settings.ageClasses.empty(),
+             "variants=" << settings.variants);
+  for (int s = 0; s < static_cast<int>(species_.size()); ++s)
+    for (int v = 0; v < settings.variants; ++v)
+      for (int a = 0; a < static_cast<int>(settings.ageClasses.size()); ++a) {
+        TreeType& type = types_.emplace_back();
+        type.species = s;
+        type.variant = v;
+        type.ageClass = a;
+        type.seed = variantSeed(v);
+        type.age = settings.ageClasses[a];
+      }
+  tbb::parallel_for(std::size_t{0}, types_.size(), [&](std::size_t i) {
+    TreeType& type = types_[i];
+    const Species& s = species_[type.species];
+    type.meshes = buildWindLods(s, type.seed, type.age);
+    const SkeletonMeasures measures =
+        measure(buildStrandTree(s, {.seed = type.seed, .age = type.age}));
+    type.height_m = static_cast<float>(measures.height_m);
+    type.crownRadius_m = static_cast<float>(measures.crownRadius_m);
+    type.bounds = boundingSphere(type.meshes);
+  });
+}
+
+int TreeLibrary::typeIndex(int species, int variant, int ageClass) const {
+  const int classes = static_cast<int>(settings_.ageClasses.size());
+  return (species * settings_.variants + variant) * classes + ageClass;
+}
+
+int TreeLibrary::typeFor(int species, std::uint64_t variantSeed, float height_m,
+                         float speciesMaxHeight_m) const {
+  const int variant =
+      static_cast<int>(variantSeed % static_cast<std::uint64_t>(settings_.variants));
+  const int classes = static_cast<int>(settings_.ageClasses.size());
+  const float mature = types_[typeIndex(species, variant, classes - 1)].height_m;
+  const float relative = std::max(height_m, 1e-3f) / std::max(speciesMaxHeight_m, 1e-3f);
+  int best = 0;
+  float bestDistance = std::numeric_limits<float>::max();
+  for (int a = 0; a < classes; ++a) {
+    const float classRelative = types_[typeIndex(species, variant, a)].height_m / mature;
+    const float distance = std::abs(std::log(classRelative / relative));
+    if (distance < bestDistance) bestDistance = distance, best = a;
+  }
+  return typeIndex(species, variant, best);
+}
+
+}  // namespace eco

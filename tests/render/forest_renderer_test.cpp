@@ -1,0 +1,63 @@
+#include "render/forest_renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "render/scene_renderer.hpp"
+#include "render_support.hpp"
+
+namespace eco {
+namespace {
+
+// A row of mature maples northward from the camera, one every 20 m, and one behind it.
+Forest rowOfTrees(const TreeLibrary& library, int count) {
+  Forest forest;
+  const int type = library.typeIndex(1, 0, 1);
+  const float height = library.types()[type].height_m;
+  for (int i = 0; i < count; ++i)
+    forest.add(library, type, worldFromMap(160, 26 + 20 * i, 100), height, 0.0f, 1.0f, i);
+  forest.add(library, type, worldFromMap(160, 0, 100), height, 0.0f, 1.0f, 99);
+  return forest;
+}
+
+TEST(ForestRenderer, CullsTreesOutsideTheViewAndCoarsensWithDistance) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(65, 10.0);
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  const Forest forest = rowOfTrees(library, 30);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);  // looking north along the row
+  const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, {});
+  EXPECT_EQ(stats.culled, 1u);  // the tree behind
+  std::size_t drawn = 0;
+  for (std::size_t n : stats.instances) drawn += n;
+  EXPECT_GE(drawn, 30u);  // each tree at least once; cross-fading ones twice
+  EXPECT_GT(stats.instances[0], 0u);
+  EXPECT_GT(stats.instances[kLevelImpostor], 0u);
+  EXPECT_LT(stats.triangles, stats.lod0Triangles);
+
+  LodSettings allLod0;
+  allLod0.forcedLevel = 0;
+  const ForestStats lod0 = renderer.prepare(forest, camera, 640, 360, allLod0, {});
+  EXPECT_EQ(lod0.instances[0], 30u);
+  EXPECT_EQ(lod0.triangles, lod0.lod0Triangles);
+  EXPECT_EQ(lod0.triangles, 30u * library.types()[forest.type[0]].meshes.lods[0].triangleCount());
+}
+
+TEST(ForestRenderer, OnlyMeshTreesInTheShadowBoxCastShadows) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  const Forest forest = rowOfTrees(library, 30);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);
+  const ShadowBox box{worldFromMap(160, 60, 100), 50.0f};
+  const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, box);
+  EXPECT_GT(stats.shadowCasters, 0u);
+  EXPECT_LE(stats.shadowCasters, 6u);  // trees within 50 m (plus crown) of north 60
+}
+
+}  // namespace
+}  // namespace eco

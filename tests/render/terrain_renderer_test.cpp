@@ -1,0 +1,55 @@
+#include "render/terrain_renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "render/scene_renderer.hpp"
+#include "render_support.hpp"
+#include "sim/condition_maps.hpp"
+
+namespace eco {
+namespace {
+
+Image renderFromAbove(SceneRenderer& renderer, int size) {
+  Camera camera;
+  camera.position = worldFromMap(160, 160, 900);
+  camera.pitch_deg = -90.0f;
+  camera.fovY_deg = 30.0f;
+  RenderOptions options;
+  options.sun = {172.0, 12.0};
+  options.fogDensity = 0.0f;
+  const RenderTarget target = RenderTarget::create(size, size);
+  renderer.render(nullptr, camera, options, target);
+  return readPixels(size, size);
+}
+
+TEST(TerrainRenderer, IsOneTrianglePairPerGridSquare) {
+  test::useHeadlessGl();
+  TerrainRenderer terrain(test::flatTerrain(33, 10.0));
+  EXPECT_EQ(terrain.triangleCount(), 32u * 32u * 2u);
+}
+
+TEST(TerrainRenderer, AnOverlayColoursTheGroundByTheMapsRamp) {
+  test::useHeadlessGl();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer renderer(terrain, 46.0, nullptr);
+  const Image plain = renderFromAbove(renderer, 64);
+  // A field growing from west to east.
+  Field field(terrain.grid.cellCount());
+  for (int y = 0; y < 33; ++y)
+    for (int x = 0; x < 33; ++x) field[terrain.grid.index(x, y)] = static_cast<float>(x);
+  renderer.terrain().setOverlay("moisture", field);
+  const Image overlay = renderFromAbove(renderer, 64);
+  EXPECT_GT(test::compareImages(plain, overlay).mean, 10.0);
+  // The west edge takes the ramp's low end, the east edge its high end.
+  auto distance = [&](glm::vec4 c, double t) {
+    return glm::length(glm::normalize(glm::vec3(c)) - glm::normalize(rampColor("moisture", t)));
+  };
+  const glm::vec4 west = overlay.get(12, 32), east = overlay.get(51, 32);
+  EXPECT_LT(distance(west, 0.0), distance(east, 0.0));
+  EXPECT_LT(distance(east, 1.0), distance(west, 1.0));
+  renderer.terrain().clearOverlay();
+  EXPECT_EQ(test::compareImages(plain, renderFromAbove(renderer, 64)).max, 0);
+}
+
+}  // namespace
+}  // namespace eco

@@ -8,6 +8,7 @@
 #include "app/render_command.hpp"
 #include "app/run_command.hpp"
 #include "app/tree_command.hpp"
+#include "app/view_command.hpp"
 #include "core/error.hpp"
 
 int main(int argc, char** argv) {
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   eco::addTerrainCommand(app);
   eco::addRunCommand(app);
   eco::addRenderCommand(app);
+  eco::addViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

@@ -109,22 +109,33 @@ nlohmann::ordered_json statsJson(const FrameStats& s, double loadMs, double rend
           {"frame_ms", s.frameMs}};
 }
 
+// Fails before the slow work when the output cannot be written.
+void checkWritable(const std::filesystem::path& file) {
+  const std::filesystem::path folder =
+      file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+  if (!std::filesystem::is_directory(folder))
+    throw InputError({file.string(), 0, "--out"}, "its folder does not exist");
+  if (file.extension() != ".png")
+    throw InputError({file.string(), 0, "--out"}, "the still must be a .png file");
+}
+
 void runRender(const RenderArgs& args) {
   const auto size = parseSize(args.size);
   if (!size)
     throw InputError({"--size", 0, ""},
                      "expected WIDTHxHEIGHT, each 16..8192, got '" + args.size + "'");
   const auto start = std::chrono::steady_clock::now();
-  SceneSource source = openSceneSource(args.source, true, args.demoTrees > 0);
+  SceneSource source = openSceneSource(args.source);
   const int year = args.year.value_or(source.defaultYear());
-  Forest forest;
-  if (source.run)
-    forest = source.forestOf(year, 0);
-  else
-    forest = source.forestOf(0, args.demoTrees);
+  if (args.year && !source.run)
+    throw InputError({"--year", 0, ""}, "a scenario has no years: render a run folder");
+  source.requireSnapshot(year);
   std::optional<Field> overlay;
   if (!args.view.overlay.empty()) overlay = source.overlay(args.view.overlay);
   const Camera camera = cameraFrom(args.view, source.terrain);
+  checkWritable(args.out);
+  if (source.run || args.demoTrees > 0) source.buildLibrary();
+  const Forest forest = source.forestOf(year, args.demoTrees);
 
   const double loadMs = millisecondsSince(start);
 

@@ -48,8 +48,7 @@ Field SceneSource::overlay(const std::string& name) const {
                    fmt::format("no condition '{}' (there are: {})", name, names));
 }
 
-SceneSource openSceneSource(const std::string& runOrScenario, bool withTrees, bool demoTrees,
-                            const LibrarySettings& settings) {
+SceneSource openSceneSource(const std::string& runOrScenario) {
   SceneSource source;
   if (std::filesystem::is_directory(runOrScenario)) {
     source.run = openRunFolder(runOrScenario);
@@ -58,13 +57,18 @@ SceneSource openSceneSource(const std::string& runOrScenario, bool withTrees, bo
     source.scenario = loadScenario(resolveScenario(runOrScenario));
   }
   source.terrain = loadTerrain(source.scenario);
-  const bool trees = withTrees && (source.run || demoTrees) && !source.scenario.species.empty();
-  if (trees) {
-    std::vector<Species> species;
-    for (const ScenarioSpecies& s : source.scenario.species) species.push_back(loadSpecies(s.file));
-    source.library = std::make_unique<TreeLibrary>(std::move(species), settings);
-  }
   return source;
+}
+
+void SceneSource::requireSnapshot(int year) const {
+  if (run) readSnapshotYearCheck(*run, year);
+}
+
+void SceneSource::buildLibrary(const LibrarySettings& settings) {
+  if (scenario.species.empty()) return;
+  std::vector<Species> species;
+  for (const ScenarioSpecies& s : scenario.species) species.push_back(loadSpecies(s.file));
+  library = std::make_unique<TreeLibrary>(std::move(species), settings);
 }
 
 }  // namespace eco

@@ -24,6 +24,10 @@ struct SceneSource {
 
   // The year shown when none is asked for: the run's last snapshot.
   int defaultYear() const;
+  // An InputError listing the run's snapshot years unless `year` is one of them.
+  void requireSnapshot(int year) const;
+  // Builds the trees of the scenario's species (slow: every variant, age class and LOD).
+  void buildLibrary(const LibrarySettings& settings = {});
   // The trees of a snapshot year (run) or the demo planting (scenario, `demoTrees` > 0).
   Forest forestOf(int year, std::size_t demoTrees) const;
   // A map for the terrain overlay: a condition, "suitability_<species>" or "canopy_height"
@@ -32,8 +36,7 @@ struct SceneSource {
 };
 
 // A directory is a run folder; anything else a scenario name or file (resolveScenario).
-// Trees are built when the source has species and `withTrees` is set.
-SceneSource openSceneSource(const std::string& runOrScenario, bool withTrees, bool demoTrees,
-                            const LibrarySettings& settings = {});
+// The tree library is left to buildLibrary(), so that bad input fails fast.
+SceneSource openSceneSource(const std::string& runOrScenario);
 
 }  // namespace eco

@@ -65,7 +65,7 @@ RunFolder openRunFolder(const std::filesystem::path& dir) {
   return run;
 }
 
-TreeSnapshot readSnapshot(const RunFolder& run, int year) {
+void readSnapshotYearCheck(const RunFolder& run, int year) {
   if (!std::binary_search(run.snapshotYears.begin(), run.snapshotYears.end(), year)) {
     std::string years;
     for (int y : run.snapshotYears) years += (years.empty() ? "" : ", ") + std::to_string(y);
@@ -73,6 +73,10 @@ TreeSnapshot readSnapshot(const RunFolder& run, int year) {
                      fmt::format("the run has no snapshot of year {} (it has: {})", year,
                                  years.empty() ? "none" : years));
   }
+}
+
+TreeSnapshot readSnapshot(const RunFolder& run, int year) {
+  readSnapshotYearCheck(run, year);
   TreeSnapshot snapshot = readTreesCsv(run.dir / "trees" / fmt::format("year_{:04d}.csv", year));
   snapshot.year = year;
   return snapshot;

@@ -1,0 +1,98 @@
+// Runs `ecoforest render` and `ecoforest view` as a user would.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_files.hpp"
+
+namespace {
+
+using eco::test::CommandResult;
+
+CommandResult ecoforest(const std::string& arguments) {
+  return eco::test::runCommand(std::string(ECOFOREST_EXE) + " " + arguments);
+}
+
+std::pair<int, int> pngSize(const std::filesystem::path& file) {
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) return {0, 0};
+  return {in->spec().width, in->spec().height};
+}
+
+// A short run of the default scenario, made once for the tests of this file.
+const std::filesystem::path& defaultRun() {
+  static const std::filesystem::path dir = [] {
+    auto d = eco::test::freshDirectory("app_render_run");
+    CommandResult r = ecoforest("run --years 20 --out " + d.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return d;
+  }();
+  return dir;
+}
+
+TEST(RenderCommand, ARunFolderRendersAStillWithItsStatistics) {
+  const auto out = eco::test::freshDirectory("app_render") / "still.png";
+  CommandResult r = ecoforest("render " + defaultRun().string() +
+                              " --year 10 --size 320x180 --stats --out " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(pngSize(out), std::make_pair(320, 180));
+  const auto json = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+  std::size_t drawn = 0;
+  for (const char* level : {"lod0", "lod1", "lod2", "impostor"})
+    drawn += json["instances"][level].get<std::size_t>();
+  EXPECT_GT(drawn, 0u);
+  EXPECT_GT(json["tree_triangles_all_lod0"].get<double>(), json["tree_triangles"].get<double>());
+  EXPECT_GT(json["frame_ms"].get<double>(), 0.0);
+}
+
+TEST(RenderCommand, AScenarioRendersItsTerrainWithAnOverlay) {
+  const auto out = eco::test::freshDirectory("app_render_terrain") / "terrain.png";
+  CommandResult r = ecoforest(
+      "render default --size 200x120 --overlay altitude --camera 500,100,800,0,-30 --out " +
+      out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(pngSize(out), std::make_pair(200, 120));
+}
+
+TEST(RenderCommand, BadInputIsExitTwoWithAClearMessageAndNoFile) {
+  const auto dir = eco::test::freshDirectory("app_render_bad");
+  const std::string out = " --out " + (dir / "x.png").string();
+  CommandResult missing = ecoforest("render " + (dir / "no_such_run").string() + out);
+  EXPECT_EQ(missing.exitCode, 2) << missing.output;
+  CommandResult notRun = ecoforest("render " + dir.string() + out);
+  EXPECT_EQ(notRun.exitCode, 2);
+  EXPECT_NE(notRun.output.find("no run.json"), std::string::npos) << notRun.output;
+  CommandResult year = ecoforest("render " + defaultRun().string() + " --year 7" + out);
+  EXPECT_EQ(year.exitCode, 2);
+  EXPECT_NE(year.output.find("has: 10, 20"), std::string::npos) << year.output;
+  CommandResult camera = ecoforest("render default --camera 1,2,3" + out);
+  EXPECT_EQ(camera.exitCode, 2);
+  EXPECT_NE(camera.output.find("--camera"), std::string::npos) << camera.output;
+  CommandResult size = ecoforest("render default --size 12x9000" + out);
+  EXPECT_EQ(size.exitCode, 2);
+  CommandResult unwritable =
+      ecoforest("render default --out " + (dir / "missing" / "x.png").string());
+  EXPECT_EQ(unwritable.exitCode, 2);
+  EXPECT_NE(unwritable.output.find("folder does not exist"), std::string::npos);
+  CommandResult overlay =
+      ecoforest("render " + defaultRun().string() + " --overlay nonsense" + out);
+  EXPECT_EQ(overlay.exitCode, 2);
+  EXPECT_NE(overlay.output.find("moisture"), std::string::npos) << overlay.output;
+  EXPECT_EQ(eco::test::entriesIn(dir), 0u);
+}
+
+// The window under a virtual X server: it opens, draws a few frames, saves a screenshot
+// and exits. Skipped where Xvfb is not installed.
+TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
+  if (eco::test::runCommand("command -v xvfb-run").exitCode != 0)
+    GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb); the view window is not tested";
+  const auto shot = eco::test::freshDirectory("app_view") / "view.png";
+  CommandResult r = eco::test::runCommand(
+      "xvfb-run -a -s '-screen 0 800x600x24' " + std::string(ECOFOREST_EXE) + " view " +
+      defaultRun().string() + " --size 400x300 --frames 4 --view ground --screenshot " +
+      shot.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(pngSize(shot), std::make_pair(400, 300));
+}
+
+}  // namespace

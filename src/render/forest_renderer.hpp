@@ -105,6 +105,8 @@ class ForestRenderer {
   // Scratch of prepare(), kept to avoid reallocating every frame.
   std::vector<LodChoice> choices_;
   std::vector<std::uint8_t> casts_;
+  std::vector<float> distances_;
+  std::vector<std::uint32_t> order_;
   std::vector<Instance> staging_;
 };
 

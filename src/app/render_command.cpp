@@ -26,8 +26,8 @@ void addViewOptions(CLI::App& command, ViewOptions& o) {
   command.add_option(
       "--camera", o.camera,
       "Camera as X,Y,Z,YAW,PITCH: map east, north, altitude (m), bearing and pitch (degrees)");
-  command.add_option("--view", o.view, "Camera preset when no --camera: overview or ground")
-      ->check(CLI::IsMember({"overview", "ground"}));
+  command.add_option("--view", o.view, "Camera preset when no --camera: overview, low or ground")
+      ->check(CLI::IsMember({"overview", "low", "ground"}));
   command.add_option("--day", o.day, "Day of the year for the sun")->check(CLI::Range(1.0, 366.0));
   command.add_option("--hour", o.hour, "Solar time for the sun, hours")
       ->check(CLI::Range(0.0, 24.0));
@@ -58,7 +58,10 @@ Camera cameraFrom(const ViewOptions& o, const Terrain& terrain) {
           "expected five numbers X,Y,Z,YAW,PITCH with PITCH in -90..90, got '" + o.camera + "'");
     return *camera;
   }
-  return presetCamera(o.view == "ground" ? CameraPreset::Ground : CameraPreset::Overview, terrain);
+  const CameraPreset preset = o.view == "ground" ? CameraPreset::Ground
+                              : o.view == "low"  ? CameraPreset::Low
+                                                 : CameraPreset::Overview;
+  return presetCamera(preset, terrain);
 }
 
 RenderOptions renderOptionsFrom(const ViewOptions& o, const Scenario& scenario) {
@@ -149,11 +152,7 @@ void runRender(const RenderArgs& args) {
   const FrameStats stats =
       renderer.render(&forest, camera, renderOptionsFrom(args.view, source.scenario), target);
   const Image image = readPixels(target.width, target.height);
-  std::vector<std::uint8_t> rgb;
-  rgb.reserve(static_cast<std::size_t>(image.width) * image.height * 3);
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-    rgb.insert(rgb.end(), image.rgba.begin() + i, image.rgba.begin() + i + 3);
-  writeRgb8Image(args.out, image.width, image.height, rgb);
+  writeStill(args.out, image);
   if (args.stats) std::cout << statsJson(stats, loadMs, rendererMs).dump(2) << "\n";
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/image.hpp"
 #include "render/forest.hpp"
 #include "render/tree_library.hpp"
 #include "sim/grid.hpp"
@@ -34,6 +35,9 @@ struct SceneSource {
   // from the run's maps/, or a condition computed for a scenario.
   Field overlay(const std::string& name) const;
 };
+
+// Writes an RGBA image as an RGB PNG (under a temporary name, renamed when complete).
+void writeStill(const std::filesystem::path& file, const Image& image);
 
 // A directory is a run folder; anything else a scenario name or file (resolveScenario).
 // The tree library is left to buildLibrary(), so that bad input fails fast.

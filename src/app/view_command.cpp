@@ -54,11 +54,7 @@ Forest visibleTrees(const Forest& all, const TreeLibrary& library, const std::ve
 void saveScreenshot(const RenderTarget& target, const std::string& file) {
   target.bind();
   const Image image = readPixels(target.width, target.height);
-  std::vector<std::uint8_t> rgb;
-  rgb.reserve(static_cast<std::size_t>(image.width) * image.height * 3);
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-    rgb.insert(rgb.end(), image.rgba.begin() + i, image.rgba.begin() + i + 3);
-  writeRgb8Image(file, image.width, image.height, rgb);
+  writeStill(file, image);
   std::cerr << "ecoforest view: saved " << file << "\n";
 }
 

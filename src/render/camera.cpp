@@ -62,6 +62,12 @@ Camera presetCamera(CameraPreset preset, const Terrain& terrain) {
   const double east = g.eastOf(g.width - 1) * 0.5, north = g.northOf(0) * 0.5;
   const FieldStats heights = statsOf(terrain.height_m);
   Camera camera;
+  if (preset == CameraPreset::Low) {
+    const double south = g.northOf(0) / 6.0;
+    camera.position = worldFromMap(east, south, terrain.altitudeAt(east, south) + 60.0);
+    camera.pitch_deg = -12.0f;
+    return camera;
+  }
   if (preset == CameraPreset::Ground) {
     camera.position = worldFromMap(east, north, terrain.altitudeAt(east, north) + 1.7);
     camera.near_m = 0.1f;

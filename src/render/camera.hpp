@@ -36,9 +36,11 @@ struct Camera {
 // nullopt when the text is not five numbers.
 std::optional<Camera> parseCamera(const std::string& text);
 
-enum class CameraPreset { Overview, Ground };
+enum class CameraPreset { Overview, Ground, Low };
 // Overview: from the south, high enough to see the whole map, looking down at its centre.
 // Ground: eye height 1.7 m at the map centre, looking north.
+// Low: 60 m above the ground a sixth of the way up the map from its south edge, looking
+// north 12 degrees down: near trees to the horizon (the benchmark's view).
 Camera presetCamera(CameraPreset preset, const Terrain& terrain);
 
 }  // namespace eco

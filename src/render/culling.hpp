@@ -29,7 +29,7 @@ struct LodSettings {
   // Projected tree height (pixels) above which each level is used: LOD0, LOD1, LOD2;
   // smaller trees are impostors, and trees under minPixels are not drawn.
   // Impostor frames are 64 pixels (ImpostorSettings), so impostors are never magnified.
-  std::array<float, 3> switchPixels{450.0f, 200.0f, 90.0f};
+  std::array<float, 3> switchPixels{600.0f, 220.0f, 100.0f};
   float minPixels = 1.0f;
   float fadeBand = 0.15f;  // cross-fade over switch * (1 +- fadeBand)
   bool impostors = true;   // false: LOD2 all the way out

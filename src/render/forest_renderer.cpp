@@ -90,13 +90,7 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
   setTreeVertexLayout(meshArray_.id());
   setInstanceLayout(meshArray_.id());
 
-  const glm::vec2 corners[] = {{-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
-  quad_ = makeBuffer(std::span<const glm::vec2>(corners));
-  impostorArray_ = makeVertexArray();
-  glVertexArrayVertexBuffer(impostorArray_.id(), 0, quad_.id(), 0, sizeof(glm::vec2));
-  glEnableVertexArrayAttrib(impostorArray_.id(), 0);
-  glVertexArrayAttribFormat(impostorArray_.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(impostorArray_.id(), 0, 0);
+  impostorArray_ = makeVertexArray();  // instance attributes only: one sprite per tree
   setInstanceLayout(impostorArray_.id());
 
   // Materials of each species, textures generated as the exporters do.
@@ -110,7 +104,8 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
       m.baseColor = glm::vec4(linearFromSrgb(glm::vec3(source.baseColor)), source.baseColor.a);
       m.alphaMask = source.alphaMask;
       m.doubleSided = source.doubleSided;
-      m.translucency = kind == MaterialKind::Bark ? 0.0f : 0.35f;
+      // Thin leaves pass light; bark and the closed crown proxies do not.
+      m.translucency = kind == MaterialKind::Bark || kind == MaterialKind::Crown ? 0.0f : 0.35f;
     }
   }
   bakeImpostors(uniforms);
@@ -122,6 +117,7 @@ void ForestRenderer::bindMaterial(const Program& program, int species, MaterialK
   program.set("uHasTexture", m.texture ? 1 : 0);
   program.set("uAlphaMask", m.alphaMask ? 1 : 0);
   program.set("uTranslucency", m.translucency);
+  program.set("uLeafyNoise", kind == MaterialKind::Crown ? 1 : 0);
   if (m.texture) glBindTextureUnit(0, m.texture.id());
   if (m.doubleSided)
     glDisable(GL_CULL_FACE);
@@ -209,6 +205,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   const Frustum frustum =
       Frustum::fromMatrix(camera.projection(static_cast<float>(width) / height) * camera.view());
   const float pixelsPerRadian = camera.pixelsPerRadian(height);
+  pixelsPerUnit_ = pixelsPerRadian;
   const std::size_t n = forest.size();
   choices_.assign(n, LodChoice{});
   casts_.assign(n, 0);
@@ -305,18 +302,19 @@ void ForestRenderer::draw() const {
       drawRanges(ranges_[t][level], types[t].species, buckets_[t * kLevelCount + level],
                  meshProgram_);
 
-  glEnable(GL_CULL_FACE);  // quads face the viewer by construction
+  glEnable(GL_PROGRAM_POINT_SIZE);
   glBindVertexArray(impostorArray_.id());
   glVertexArrayVertexBuffer(impostorArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
   impostorProgram_.use();
   impostorProgram_.set("uFrames", impostorSettings_.frames);
+  impostorProgram_.set("uPixelsPerUnit", pixelsPerUnit_);
   for (std::size_t t = 0; t < types.size(); ++t) {
     const Bucket& bucket = buckets_[t * kLevelCount + kLevelImpostor];
     if (bucket.count == 0) continue;
     impostorProgram_.set("uBounds", types[t].bounds);
     glBindTextureUnit(1, atlases_[t].albedo.id());
     glBindTextureUnit(2, atlases_[t].normal.id());
-    glDrawArraysInstancedBaseInstance(GL_TRIANGLE_STRIP, 0, 4, bucket.count, bucket.first);
+    glDrawArraysInstancedBaseInstance(GL_POINTS, 0, 1, bucket.count, bucket.first);
   }
 }
 

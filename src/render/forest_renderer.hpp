@@ -94,8 +94,9 @@ class ForestRenderer {
   const TreeLibrary& library_;
   ImpostorSettings impostorSettings_;
   Program meshProgram_, meshShadowProgram_, bakeProgram_, impostorProgram_;
-  GlName vertices_, indices_, meshArray_, quad_, impostorArray_, instances_;
+  GlName vertices_, indices_, meshArray_, impostorArray_, instances_;
   std::size_t instanceCapacity_ = 0;
+  float pixelsPerUnit_ = 1.0f;  // of the prepared frame: sprite sizes
   std::vector<std::array<std::vector<DrawRange>, kLodCount>> ranges_;  // [type][lod]
   std::vector<std::array<std::size_t, kLodCount>> triangles_;
   std::vector<std::vector<Material>> materials_;  // [species][MaterialKind]

@@ -22,14 +22,15 @@ TEST(Frustum, KeepsSpheresInsideOrTouchingAndDropsThoseOutside) {
 
 TEST(LodChoice, FollowsProjectedSizeThroughEveryLevel) {
   LodSettings s;
-  EXPECT_EQ(chooseLevel(2000.0f, s).level, 0);
-  EXPECT_EQ(chooseLevel(200.0f, s).level, 1);
-  EXPECT_EQ(chooseLevel(80.0f, s).level, 2);
-  EXPECT_EQ(chooseLevel(20.0f, s).level, kLevelImpostor);
+  // Halfway between switches, in no fade band.
+  EXPECT_EQ(chooseLevel(2.0f * s.switchPixels[0], s).level, 0);
+  EXPECT_EQ(chooseLevel(0.5f * (s.switchPixels[0] + s.switchPixels[1]), s).level, 1);
+  EXPECT_EQ(chooseLevel(0.5f * (s.switchPixels[1] + s.switchPixels[2]), s).level, 2);
+  EXPECT_EQ(chooseLevel(0.5f * s.switchPixels[2], s).level, kLevelImpostor);
   EXPECT_EQ(chooseLevel(0.5f, s).level, -1);  // under a pixel: not drawn
   s.impostors = false;
   EXPECT_EQ(chooseLevel(20.0f, s).level, 2);
-  EXPECT_EQ(chooseLevel(60.0f, s).fadeTo, -1);
+  EXPECT_EQ(chooseLevel(s.switchPixels[2], s).fadeTo, -1);
   s.forcedLevel = 0;
   EXPECT_EQ(chooseLevel(3.0f, s).level, 0);
 }

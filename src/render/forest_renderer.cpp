@@ -7,6 +7,7 @@
 #include <tbb/parallel_sort.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include "model/textures.hpp"
 
@@ -21,16 +22,31 @@ glm::vec3 linearFromSrgb(glm::vec3 c) {
 
 }  // namespace
 
+PackedTreeVertex packVertex(const TreeVertex& v) {
+  PackedTreeVertex p;
+  p.position = v.position;
+  p.normal = glm::packSnorm3x10_1x2(glm::vec4(v.normal, 0.0f));
+  p.uv = v.uv;
+  const glm::vec3* bases[] = {&v.swaySin, &v.swayCos, &v.bendEast, &v.bendSouth};
+  for (int b = 0; b < 4; ++b)
+    for (int c = 0; c < 3; ++c) p.wind[b * 3 + c] = glm::packHalf1x16((*bases[b])[c]);
+  return p;
+}
+
 void setTreeVertexLayout(GLuint vao) {
-  const GLuint offsets[] = {offsetof(TreeVertex, position), offsetof(TreeVertex, normal),
-                            offsetof(TreeVertex, uv),       offsetof(TreeVertex, swaySin),
-                            offsetof(TreeVertex, swayCos),  offsetof(TreeVertex, bendEast),
-                            offsetof(TreeVertex, bendSouth)};
-  for (GLuint a = 0; a < 7; ++a) {
-    glEnableVertexArrayAttrib(vao, a);
-    glVertexArrayAttribFormat(vao, a, a == 2 ? 2 : 3, GL_FLOAT, GL_FALSE, offsets[a]);
-    glVertexArrayAttribBinding(vao, a, 0);
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(PackedTreeVertex, position));
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 1, 4, GL_INT_2_10_10_10_REV, GL_TRUE,
+                            offsetof(PackedTreeVertex, normal));
+  glEnableVertexArrayAttrib(vao, 2);
+  glVertexArrayAttribFormat(vao, 2, 2, GL_FLOAT, GL_FALSE, offsetof(PackedTreeVertex, uv));
+  for (GLuint b = 0; b < 4; ++b) {  // the wind bases, attributes 3-6
+    glEnableVertexArrayAttrib(vao, 3 + b);
+    glVertexArrayAttribFormat(vao, 3 + b, 3, GL_HALF_FLOAT, GL_FALSE,
+                              offsetof(PackedTreeVertex, wind) + b * 3 * sizeof(std::uint16_t));
   }
+  for (GLuint a = 0; a < 7; ++a) glVertexArrayAttribBinding(vao, a, 0);
 }
 
 // Instance attributes 8-10 come from binding 1, one element per instance.
@@ -54,7 +70,7 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
       impostorProgram_(
           {{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}}) {
   // Every mesh into one vertex and one index buffer.
-  std::vector<TreeVertex> vertices;
+  std::vector<PackedTreeVertex> vertices;
   std::vector<std::uint32_t> indices;
   const auto& types = library.types();
   std::size_t vertexCount = 0, indexCount = 0;
@@ -74,18 +90,18 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
         ranges_[t][lod].push_back({part.material, static_cast<GLsizei>(part.indices.size()),
                                    indices.size() * sizeof(std::uint32_t),
                                    static_cast<GLint>(vertices.size())});
-        vertices.insert(vertices.end(), part.vertices.begin(), part.vertices.end());
+        for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
         indices.insert(indices.end(), part.indices.begin(), part.indices.end());
       }
     }
-  vertices_ = makeBuffer(std::span<const TreeVertex>(vertices));
+  vertices_ = makeBuffer(std::span<const PackedTreeVertex>(vertices));
   indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
   GLuint id = 0;
   glCreateBuffers(1, &id);
   instances_ = GlName(GlKind::Buffer, id);
 
   meshArray_ = makeVertexArray();
-  glVertexArrayVertexBuffer(meshArray_.id(), 0, vertices_.id(), 0, sizeof(TreeVertex));
+  glVertexArrayVertexBuffer(meshArray_.id(), 0, vertices_.id(), 0, sizeof(PackedTreeVertex));
   glVertexArrayElementBuffer(meshArray_.id(), indices_.id());
   setTreeVertexLayout(meshArray_.id());
   setInstanceLayout(meshArray_.id());
@@ -93,12 +109,19 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
   impostorArray_ = makeVertexArray();  // instance attributes only: one sprite per tree
   setInstanceLayout(impostorArray_.id());
 
-  // Materials of each species, textures generated as the exporters do.
-  for (const Species& species : library.species()) {
+  // Materials of each species, textures generated as the exporters do (in parallel: the
+  // procedural textures take a moment each), then uploaded.
+  const std::size_t speciesCount = library.species().size();
+  std::vector<eco::Material> sources(speciesCount * kMaterialKinds);
+  tbb::parallel_for(std::size_t{0}, sources.size(), [&](std::size_t i) {
+    sources[i] = makeMaterial(static_cast<MaterialKind>(i % kMaterialKinds),
+                              library.species()[i / kMaterialKinds]);
+  });
+  for (std::size_t s = 0; s < speciesCount; ++s) {
     std::vector<Material>& kinds = materials_.emplace_back(kMaterialKinds);
     for (int k = 0; k < kMaterialKinds; ++k) {
       const auto kind = static_cast<MaterialKind>(k);
-      const eco::Material source = makeMaterial(kind, species);
+      const eco::Material& source = sources[s * kMaterialKinds + k];
       Material& m = kinds[k];
       if (source.texture) m.texture = makeTexture(*source.texture, source.repeat);
       m.baseColor = glm::vec4(linearFromSrgb(glm::vec3(source.baseColor)), source.baseColor.a);
@@ -136,6 +159,11 @@ void ForestRenderer::drawRanges(const std::vector<DrawRange>& ranges, int specie
   }
 }
 
+int ForestRenderer::impostorSource(int type) const {
+  const TreeType& t = library_.types()[type];
+  return library_.typeIndex(t.species, 0, t.ageClass);
+}
+
 void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;
@@ -150,8 +178,10 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
   glBindVertexArray(meshArray_.id());
   bakeProgram_.use();
   const auto& types = library_.types();
+  atlases_.resize(types.size());
   for (std::size_t t = 0; t < types.size(); ++t) {
     const TreeType& type = types[t];
+    if (impostorSource(static_cast<int>(t)) != static_cast<int>(t)) continue;
     const glm::vec3 centre(type.bounds);
     const float radius = type.bounds.w;
     target.bind();
@@ -177,7 +207,7 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
         glViewport(column * tile, row * tile, tile, tile);
         drawRanges(ranges_[t][impostorSettings_.bakeLod], type.species, {0, 1}, bakeProgram_);
       }
-    Atlas& atlas = atlases_.emplace_back();
+    Atlas& atlas = atlases_[t];
     // Copy the two attachments into mipmapped textures of their own.
     const int levels = 1 + static_cast<int>(std::log2(tile));  // mip down to 1 texel per tile
     for (int attachment = 0; attachment < 2; ++attachment) {
@@ -311,9 +341,10 @@ void ForestRenderer::draw() const {
   for (std::size_t t = 0; t < types.size(); ++t) {
     const Bucket& bucket = buckets_[t * kLevelCount + kLevelImpostor];
     if (bucket.count == 0) continue;
-    impostorProgram_.set("uBounds", types[t].bounds);
-    glBindTextureUnit(1, atlases_[t].albedo.id());
-    glBindTextureUnit(2, atlases_[t].normal.id());
+    const int source = impostorSource(static_cast<int>(t));
+    impostorProgram_.set("uBounds", types[source].bounds);
+    glBindTextureUnit(1, atlases_[source].albedo.id());
+    glBindTextureUnit(2, atlases_[source].normal.id());
     glDrawArraysInstancedBaseInstance(GL_POINTS, 0, 1, bucket.count, bucket.first);
   }
 }

@@ -43,7 +43,19 @@ struct InstanceAttributes {
   glm::vec4 scale;        // horizontal, vertical, fade code (ditherKeeps), wind phase
   glm::vec4 tint;
 };
-// Vertex layouts of the tree shaders: TreeVertex at binding 0, InstanceAttributes at
+// A TreeVertex as the GPU holds it, 48 bytes instead of 80: the normal in 10-bit signed
+// components, the four wind bases in half floats (millimetres at the metre scale of the
+// wind's reach).
+struct PackedTreeVertex {
+  glm::vec3 position;
+  std::uint32_t normal;  // GL_INT_2_10_10_10_REV
+  glm::vec2 uv;
+  std::uint16_t wind[12];  // swaySin, swayCos, bendEast, bendSouth as half floats
+};
+static_assert(sizeof(PackedTreeVertex) == 48);
+PackedTreeVertex packVertex(const TreeVertex& vertex);
+
+// Vertex layouts of the tree shaders: PackedTreeVertex at binding 0, InstanceAttributes at
 // binding 1 (one per instance).
 void setTreeVertexLayout(GLuint vertexArray);
 void setInstanceLayout(GLuint vertexArray);
@@ -60,8 +72,10 @@ class ForestRenderer {
   void drawShadows() const;  // the shadow casters into the bound depth target
 
   const TreeLibrary& library() const { return library_; }
-  // The albedo atlas of a type's impostor (tests look at it).
-  GLuint impostorAlbedo(int type) const { return atlases_[type].albedo.id(); }
+  // The type whose impostor draws `type`: the variants of a species and age class share
+  // the first one's. Below the impostor switch (100 px) the variants differ by a few pixels
+  // while each tree's own yaw already picks a different frame; sharing bakes a third.
+  int impostorSource(int type) const;
 
  private:
   struct DrawRange {
@@ -100,9 +114,9 @@ class ForestRenderer {
   std::vector<std::array<std::vector<DrawRange>, kLodCount>> ranges_;  // [type][lod]
   std::vector<std::array<std::size_t, kLodCount>> triangles_;
   std::vector<std::vector<Material>> materials_;  // [species][MaterialKind]
-  std::vector<Atlas> atlases_;
-  std::vector<Bucket> buckets_;        // [type * kLevelCount + level]
-  std::vector<Bucket> shadowBuckets_;  // [type]
+  std::vector<Atlas> atlases_;                    // [type]; baked for impostor sources only
+  std::vector<Bucket> buckets_;                   // [type * kLevelCount + level]
+  std::vector<Bucket> shadowBuckets_;             // [type]
   // Scratch of prepare(), kept to avoid reallocating every frame.
   std::vector<LodChoice> choices_;
   std::vector<std::uint8_t> casts_;

@@ -1,6 +1,7 @@
 #include "render/forest_renderer.hpp"
 
 #include <gtest/gtest.h>
+#include <glm/gtc/packing.hpp>
 
 #include "render/scene_renderer.hpp"
 #include "render_support.hpp"
@@ -57,6 +58,32 @@ TEST(ForestRenderer, OnlyMeshTreesInTheShadowBoxCastShadows) {
   const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, box);
   EXPECT_GT(stats.shadowCasters, 0u);
   EXPECT_LE(stats.shadowCasters, 6u);  // trees within 50 m (plus crown) of north 60
+}
+
+TEST(ForestRenderer, VariantsShareTheImpostorOfTheirSpeciesAndAgeClass) {
+  test::useHeadlessGl();
+  const TreeLibrary library({test::loadNamedSpecies("shrub")},
+                            LibrarySettings{.variants = 3, .ageClasses = {0.3, 1.0}});
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  for (int v = 0; v < 3; ++v)
+    for (int a = 0; a < 2; ++a)
+      EXPECT_EQ(renderer.impostorSource(library.typeIndex(0, v, a)), library.typeIndex(0, 0, a));
+}
+
+TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
+  TreeVertex v{{1.25f, 20.5f, -3.0f}, glm::normalize(glm::vec3(0.3f, 0.9f, -0.2f)),
+               {0.5f, 12.75f},        {0.01f, -0.2f, 0.3f},
+               {1.5f, 0.0f, -0.75f},  {0.002f, 0.0f, 0.0f},
+               {0.0f, 0.0f, 0.6f}};
+  const PackedTreeVertex p = packVertex(v);
+  EXPECT_EQ(p.position, v.position);
+  EXPECT_EQ(p.uv, v.uv);
+  const glm::vec4 normal = glm::unpackSnorm3x10_1x2(p.normal);
+  EXPECT_LT(glm::distance(glm::vec3(normal), v.normal), 2e-3f);
+  EXPECT_NEAR(glm::unpackHalf1x16(p.wind[1]), -0.2f, 1e-4f);
+  EXPECT_NEAR(glm::unpackHalf1x16(p.wind[3]), 1.5f, 1e-3f);
+  EXPECT_NEAR(glm::unpackHalf1x16(p.wind[11]), 0.6f, 1e-3f);
 }
 
 }  // namespace

@@ -131,9 +131,9 @@ TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
   const TreeWind wind{2.0, {0.0, 0.0}};
   const WindLods lods = buildWindLods(maple, 3, age);
   const WindMesh& mesh = lods.lods[0];
-  std::vector<TreeVertex> vertices;
+  std::vector<PackedTreeVertex> vertices;  // as the renderer uploads them
   for (const WindPart& part : mesh.parts)
-    vertices.insert(vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
 
   const Program program({{GL_VERTEX_SHADER, "tree.vert"}}, {"FEEDBACK"}, {"fbLocal"});
   FrameUniformBuffer uniforms;
@@ -141,7 +141,7 @@ TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
   u.camera.w = static_cast<float>(t);
   u.wind = glm::vec4(0.0f, 0.0f, 2.0f, 0.0f);
   uniforms.upload(u);
-  const GlName vertexBuffer = makeBuffer(std::span<const TreeVertex>(vertices));
+  const GlName vertexBuffer = makeBuffer(std::span<const PackedTreeVertex>(vertices));
   // Yaw 0, scale 1, phase 0: the tree frame is the world frame.
   const InstanceAttributes instance{glm::vec4(0.0f), glm::vec4(1, 1, 0, 0), glm::vec4(1.0f)};
   const GlName instanceBuffer = makeBuffer(&instance, sizeof(instance));
@@ -149,7 +149,7 @@ TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
   const GlName vao = makeVertexArray();
   setTreeVertexLayout(vao.id());
   setInstanceLayout(vao.id());
-  glVertexArrayVertexBuffer(vao.id(), 0, vertexBuffer.id(), 0, sizeof(TreeVertex));
+  glVertexArrayVertexBuffer(vao.id(), 0, vertexBuffer.id(), 0, sizeof(PackedTreeVertex));
   glVertexArrayVertexBuffer(vao.id(), 1, instanceBuffer.id(), 0, sizeof(InstanceAttributes));
 
   program.use();

@@ -11,6 +11,9 @@
 namespace eco {
 namespace {
 
+// Clear air: a meteorological visibility of 100 km (Koschmieder: 3.9 / density).
+constexpr float kClearAirFogDensity = 3.9f / 100000.0f;
+
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
@@ -21,16 +24,14 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
                              const TreeLibrary* library, const ImpostorSettings& impostors)
     : latitude_deg_(latitude_deg),
-      mapSize_m_(static_cast<float>(
-          std::hypot(terrain.grid.eastOf(terrain.grid.width - 1), terrain.grid.northOf(0)))),
       terrain_(terrain),
       sky_({{GL_VERTEX_SHADER, "sky.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}),
       skyArray_(makeVertexArray()) {
   if (library) forest_ = std::make_unique<ForestRenderer>(*library, impostors, uniforms_);
 }
 
-void SceneRenderer::renderShadowMap(const Camera& camera, const RenderOptions& options,
-                                    FrameUniforms& u, bool forestCasts) {
+void SceneRenderer::renderShadowMap(const RenderOptions& options, const FrameUniforms& u,
+                                    bool forestCasts) {
   if (shadowSize_ != options.shadowMapSize) {
     shadowSize_ = options.shadowMapSize;
     GLuint texture = 0, framebuffer = 0;
@@ -55,7 +56,6 @@ void SceneRenderer::renderShadowMap(const Camera& camera, const RenderOptions& o
   terrain_.draw(true);
   if (forestCasts) forest_->drawShadows();
   glDisable(GL_POLYGON_OFFSET_FILL);
-  (void)camera;
 }
 
 FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
@@ -90,7 +90,7 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   }
   u.camera = glm::vec4(camera.position, static_cast<float>(options.wind.time));
   u.toSun = glm::vec4(light.toSun, shadows ? 1.0f : 0.0f);
-  u.sunColor = glm::vec4(light.sunColor, options.fogDensity.value_or(0.12f / mapSize_m_));
+  u.sunColor = glm::vec4(light.sunColor, options.fogDensity.value_or(kClearAirFogDensity));
   u.skyZenith = glm::vec4(light.skyZenith, 0.0f);
   u.skyHorizon = glm::vec4(light.skyHorizon, 0.0f);
   u.ambient = glm::vec4(light.ambient, 0.0f);
@@ -109,7 +109,7 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glEnable(GL_CULL_FACE);
-  if (shadows) renderShadowMap(camera, options, u, forest_ && forest && stats.forest.shadowCasters);
+  if (shadows) renderShadowMap(options, u, forest_ && forest && stats.forest.shadowCasters);
   glBindTextureUnit(4, shadowDepth_.id());
 
   target.bind();

@@ -35,7 +35,7 @@ struct RenderOptions {
   bool shadows = true;
   float shadowRange_m = 150.0f;  // half the side of the shadowed square ahead of the camera
   int shadowMapSize = 2048;
-  std::optional<float> fogDensity;  // per metre; default from the terrain size
+  std::optional<float> fogDensity;  // per metre; default clear air (100 km visibility)
 };
 
 struct FrameStats {
@@ -59,11 +59,9 @@ class SceneRenderer {
   ForestRenderer* forest() { return forest_.get(); }
 
  private:
-  void renderShadowMap(const Camera& camera, const RenderOptions& options, FrameUniforms& u,
-                       bool forestCasts);
+  void renderShadowMap(const RenderOptions& options, const FrameUniforms& u, bool forestCasts);
 
   double latitude_deg_;
-  float mapSize_m_;
   FrameUniformBuffer uniforms_;
   TerrainRenderer terrain_;
   std::unique_ptr<ForestRenderer> forest_;

@@ -1,6 +1,6 @@
 // The light of a frame: the sun's direction from the scenario's latitude and a chosen day and
-// solar time (the same solar geometry as the sunniness condition), its colour, the sky's
-// colours and the distance fog.
+// solar time (the same solar geometry as the sunniness condition), its colour and the sky's
+// colours.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -17,8 +17,7 @@ struct Lighting {
   glm::vec3 sunColor{1.0f};           // linear RGB irradiance of the beam
   glm::vec3 skyZenith{0.25f, 0.45f, 0.85f};
   glm::vec3 skyHorizon{0.70f, 0.80f, 0.92f};
-  glm::vec3 ambient{0.3f};            // linear RGB from the sky hemisphere
-  float fogDensity = 1.0f / 9000.0f;  // per metre: exp(-density * distance) stays visible
+  glm::vec3 ambient{0.3f};  // linear RGB from the sky hemisphere
 };
 
 // Direction toward the sun in the world frame; below the horizon when y < 0.

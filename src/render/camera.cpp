@@ -1,14 +1,11 @@
 #include "render/camera.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
-
-#include "core/error.hpp"
 
 namespace eco {
 

@@ -53,7 +53,7 @@ void SceneRenderer::renderShadowMap(const RenderOptions& options, const FrameUni
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
   uniforms_.upload(u);
-  terrain_.draw(true);
+  terrain_.draw(Frustum::fromMatrix(u.lightViewProj), true);
   if (forestCasts) forest_->drawShadows();
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
@@ -123,8 +123,7 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDepthMask(GL_TRUE);
   glEnable(GL_DEPTH_TEST);
-  terrain_.draw(false);
-  stats.terrainTriangles = terrain_.triangleCount();
+  stats.terrainTriangles = terrain_.draw(Frustum::fromMatrix(viewProj), false);
   if (forest_ && forest) forest_->draw();
   glFinish();
   checkGl("SceneRenderer::render");

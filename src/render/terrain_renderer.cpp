@@ -1,6 +1,7 @@
 #include "render/terrain_renderer.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -46,14 +47,29 @@ TerrainRenderer::TerrainRenderer(const Terrain& terrain)
       v.normal = glm::normalize(glm::vec3(-dEast, 1.0f, -dSouth));
       v.mapUv = {(x + 0.5f) / g.width, (y + 0.5f) / g.height};
     }
+  // Triangles in square chunks of kChunkCells, each with a bounding sphere for culling.
   std::vector<std::uint32_t> indices;
   indices.reserve(static_cast<std::size_t>(g.width - 1) * (g.height - 1) * 6);
-  for (int y = 0; y + 1 < g.height; ++y)
-    for (int x = 0; x + 1 < g.width; ++x) {
-      const auto a = static_cast<std::uint32_t>(g.index(x, y)), b = a + 1,
-                 c = static_cast<std::uint32_t>(g.index(x, y + 1)), d = c + 1;
-      // Counter-clockwise seen from above (y up, z south).
-      indices.insert(indices.end(), {a, c, b, b, c, d});
+  for (int cy = 0; cy + 1 < g.height; cy += kChunkCells)
+    for (int cx = 0; cx + 1 < g.width; cx += kChunkCells) {
+      Chunk chunk;
+      chunk.firstIndex = indices.size();
+      glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+      for (int y = cy; y + 1 < g.height && y < cy + kChunkCells; ++y)
+        for (int x = cx; x + 1 < g.width && x < cx + kChunkCells; ++x) {
+          const auto a = static_cast<std::uint32_t>(g.index(x, y)), b = a + 1,
+                     c = static_cast<std::uint32_t>(g.index(x, y + 1)), d = c + 1;
+          // Counter-clockwise seen from above (y up, z south).
+          indices.insert(indices.end(), {a, c, b, b, c, d});
+          for (std::uint32_t corner : {a, b, c, d}) {
+            lo = glm::min(lo, vertices[corner].position);
+            hi = glm::max(hi, vertices[corner].position);
+          }
+        }
+      chunk.indexCount = static_cast<GLsizei>(indices.size() - chunk.firstIndex);
+      chunk.centre = 0.5f * (lo + hi);
+      chunk.radius = 0.5f * glm::length(hi - lo);
+      chunks_.push_back(chunk);
     }
   indexCount_ = static_cast<GLsizei>(indices.size());
   vertices_ = makeBuffer(std::span<const TerrainVertex>(vertices));
@@ -86,13 +102,25 @@ void TerrainRenderer::setOverlay(const std::string& name, const Field& values) {
   overlay_ = makeTexture(image, false);
 }
 
-void TerrainRenderer::draw(bool shadowPass) const {
+std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass) const {
+  counts_.clear();
+  offsets_.clear();
+  std::size_t triangles = 0;
+  for (const Chunk& chunk : chunks_)
+    if (frustum.intersectsSphere(chunk.centre, chunk.radius)) {
+      counts_.push_back(chunk.indexCount);
+      offsets_.push_back(reinterpret_cast<const void*>(chunk.firstIndex * sizeof(std::uint32_t)));
+      triangles += chunk.indexCount / 3;
+    }
+  if (counts_.empty()) return 0;
   const Program& program = shadowPass ? shadowProgram_ : program_;
   program.use();
   program.set("uHasOverlay", hasOverlay() ? 1 : 0);
   if (hasOverlay()) glBindTextureUnit(3, overlay_.id());
   glBindVertexArray(vertexArray_.id());
-  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+  glMultiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(),
+                      static_cast<GLsizei>(counts_.size()));
+  return triangles;
 }
 
 }  // namespace eco

@@ -4,7 +4,11 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include <glm/vec3.hpp>
+
+#include "render/culling.hpp"
 #include "render/gl_objects.hpp"
 #include "render/shader.hpp"
 #include "sim/grid.hpp"
@@ -22,8 +26,11 @@ class TerrainRenderer {
   void clearOverlay() { overlay_ = GlName(); }
   bool hasOverlay() const { return static_cast<bool>(overlay_); }
 
-  void draw(bool shadowPass) const;
+  // Draws the chunks in the frustum; returns the triangles drawn.
+  std::size_t draw(const Frustum& frustum, bool shadowPass) const;
   std::size_t triangleCount() const { return indexCount_ / 3; }
+
+  static constexpr int kChunkCells = 32;  // grid squares per chunk side
 
  private:
   Grid grid_;
@@ -31,6 +38,16 @@ class TerrainRenderer {
   Program program_, shadowProgram_;
   GlName vertices_, indices_, vertexArray_, overlay_;
   GLsizei indexCount_ = 0;
+  struct Chunk {
+    std::size_t firstIndex = 0;
+    GLsizei indexCount = 0;
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+  };
+  std::vector<Chunk> chunks_;
+  // Scratch of draw(): the visible chunks' index counts and offsets.
+  mutable std::vector<GLsizei> counts_;
+  mutable std::vector<const void*> offsets_;
 };
 
 }  // namespace eco

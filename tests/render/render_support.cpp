@@ -73,10 +73,6 @@ double maxBlockDifference(const Image& a, const Image& b, int block) {
   return worst;
 }
 
-double coverage(const Image& image, const Image& background) {
-  return compareImages(image, background).differingShare;
-}
-
 Image readPng(const std::filesystem::path& file) {
   auto in = OIIO::ImageInput::open(file.string());
   if (!in) return {};

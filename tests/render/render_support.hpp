@@ -36,9 +36,6 @@ ImageDifference compareImages(const Image& a, const Image& b);
 glm::vec3 meanColor(const Image& image);
 // The largest mean absolute difference (per channel, 0..255) over any block x block tile.
 double maxBlockDifference(const Image& a, const Image& b, int block);
-// Fraction of pixels whose colour differs from the background pixel at (0, 0) by more than 8
-// in some channel: how much of the image the objects cover.
-double coverage(const Image& image, const Image& background);
 
 // Reads and writes reference PNGs in tests/render/reference/. Set ECOFOREST_UPDATE_REFERENCES=1
 // to rewrite them from the current output.

@@ -28,6 +28,29 @@ TEST(TerrainRenderer, IsOneTrianglePairPerGridSquare) {
   EXPECT_EQ(terrain.triangleCount(), 32u * 32u * 2u);
 }
 
+TEST(TerrainRenderer, DrawsOnlyTheChunksInTheFrustum) {
+  test::useHeadlessGl();
+  TerrainRenderer terrain(test::flatTerrain(129, 10.0));  // 4 x 4 chunks of 32 squares
+  Camera camera;
+  camera.position = worldFromMap(640, 640, 5000);
+  camera.pitch_deg = -90.0f;
+  const RenderTarget target = RenderTarget::create(16, 16);
+  target.bind();
+  EXPECT_EQ(terrain.draw(Frustum::fromMatrix(camera.projection(1.0f) * camera.view()), false),
+            terrain.triangleCount());
+  camera.pitch_deg = 90.0f;  // looking up at the sky
+  EXPECT_EQ(terrain.draw(Frustum::fromMatrix(camera.projection(1.0f) * camera.view()), false), 0u);
+  // Low over the south-west corner looking south-west: only the chunks there.
+  camera.position = worldFromMap(100, 100, 120);
+  camera.yaw_deg = 225.0f;
+  camera.pitch_deg = -30.0f;
+  camera.fovY_deg = 30.0f;
+  const std::size_t corner =
+      terrain.draw(Frustum::fromMatrix(camera.projection(1.0f) * camera.view()), false);
+  EXPECT_GT(corner, 0u);
+  EXPECT_LE(corner, terrain.triangleCount() / 4);
+}
+
 TEST(TerrainRenderer, AnOverlayColoursTheGroundByTheMapsRamp) {
   test::useHeadlessGl();
   const Terrain terrain = test::flatTerrain(33, 10.0);

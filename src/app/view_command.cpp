@@ -52,6 +52,7 @@ Forest visibleTrees(const Forest& all, const TreeLibrary& library, const std::ve
 }
 
 void saveScreenshot(const RenderTarget& target, const std::string& file) {
+  if (target.width == 0) return;  // nothing drawn yet
   target.bind();
   const Image image = readPixels(target.width, target.height);
   writeStill(file, image);
@@ -62,7 +63,9 @@ class GlfwSession {
  public:
   GlfwSession() {
     if (!glfwInit())
-      throw std::runtime_error("view needs a display: GLFW could not start (is DISPLAY set?)");
+      throw InputError({"DISPLAY", 0, ""},
+                       "`view` needs a display and none could be opened; `ecoforest render` "
+                       "draws stills without one");
   }
   ~GlfwSession() { glfwTerminate(); }
 };

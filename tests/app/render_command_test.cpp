@@ -95,4 +95,11 @@ TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
   EXPECT_EQ(pngSize(shot), std::make_pair(400, 300));
 }
 
+TEST(ViewCommand, WithoutADisplayItSaysSoAndExitsTwo) {
+  CommandResult r = eco::test::runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " +
+                                          std::string(ECOFOREST_EXE) + " view default");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("needs a display"), std::string::npos) << r.output;
+}
+
 }  // namespace

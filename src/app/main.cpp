@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/conditions_command.hpp"
+#include "app/export_command.hpp"
 #include "app/render_command.hpp"
 #include "app/run_command.hpp"
 #include "app/tree_command.hpp"
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   eco::addRunCommand(app);
   eco::addRenderCommand(app);
   eco::addViewCommand(app);
+  eco::addExportCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

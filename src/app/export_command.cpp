@@ -1,0 +1,62 @@
+#include "app/export_command.hpp"
+
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "app/scene_source.hpp"
+#include "core/error.hpp"
+#include "render/forest_gltf.hpp"
+
+namespace eco {
+namespace {
+
+struct ExportArgs {
+  std::string run;
+  std::optional<int> year;
+  std::string out;
+  int lod = 1;
+};
+
+void runExport(const ExportArgs& args) {
+  const std::filesystem::path out(args.out);
+  if (out.extension() != ".glb" && out.extension() != ".gltf")
+    throw InputError({args.out, 0, "--out"}, "the forest is written as .glb or .gltf");
+  const std::filesystem::path folder = out.parent_path().empty() ? "." : out.parent_path();
+  if (!std::filesystem::is_directory(folder))
+    throw InputError({args.out, 0, "--out"}, "its folder does not exist");
+  if (!std::filesystem::is_directory(args.run))
+    throw InputError({args.run, 0, ""},
+                     "no such run folder (export reads a run of `ecoforest run`)");
+  SceneSource source = openSceneSource(args.run);
+  const int year = args.year.value_or(source.defaultYear());
+  source.requireSnapshot(year);
+  source.buildLibrary();
+  const Forest forest = source.forestOf(year, 0);
+  const ForestGltfSummary summary =
+      writeForestGltf(source.terrain, *source.library, forest, out, args.lod);
+  std::cout << fmt::format(
+      "{}: year {}, {} trees as instances of {} meshes (LOD{}), terrain of {} triangles\n",
+      args.out, year, summary.instances, summary.treeMeshes, args.lod, summary.terrainTriangles);
+}
+
+}  // namespace
+
+void addExportCommand(CLI::App& app) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* command = app.add_subcommand(
+      "export", "Write a run's forest of one year as glTF: terrain mesh and instanced trees");
+  command->add_option("run", args->run, "A run folder of `ecoforest run`")->required();
+  command->add_option("--year", args->year, "Snapshot year (default: the run's last)");
+  command->add_option("--out", args->out, "forest.glb or forest.gltf")->required();
+  command
+      ->add_option(
+          "--lod", args->lod,
+          "Level of detail of the tree meshes: 0 full, 1 clustered leaves, 2 crown proxies")
+      ->check(CLI::Range(0, 2));
+  command->callback([args] { runExport(*args); });
+}
+
+}  // namespace eco

@@ -1,0 +1,127 @@
+#include "render/forest_gltf.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include "model/gltf_builder.hpp"
+#include "render/camera.hpp"
+
+namespace eco {
+namespace {
+
+// The terrain as one mesh part: vertices at the cell centres, smooth normals.
+MeshPart terrainPart(const Terrain& terrain) {
+  const Grid& g = terrain.grid;
+  MeshPart part;
+  part.material = MaterialKind::Bark;  // unused: the terrain has its own material
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, g.width - 1);
+      const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, g.height - 1);
+      const float dEast = (terrain.heightAt(x1, y) - terrain.heightAt(x0, y)) /
+                          static_cast<float>((x1 - x0) * g.dx_m);
+      const float dSouth = (terrain.heightAt(x, y1) - terrain.heightAt(x, y0)) /
+                           static_cast<float>((y1 - y0) * g.dy_m);
+      part.addVertex(worldFromMap(g.eastOf(x), g.northOf(y), terrain.heightAt(x, y)),
+                     glm::normalize(glm::vec3(-dEast, 1.0f, -dSouth)),
+                     {(x + 0.5f) / g.width, (y + 0.5f) / g.height});
+    }
+  for (int y = 0; y + 1 < g.height; ++y)
+    for (int x = 0; x + 1 < g.width; ++x) {
+      const auto a = static_cast<std::uint32_t>(g.index(x, y)), b = a + 1,
+                 c = static_cast<std::uint32_t>(g.index(x, y + 1)), d = c + 1;
+      part.addTriangle(a, c, b);
+      part.addTriangle(b, c, d);
+    }
+  return part;
+}
+
+MeshPart meshPart(const WindPart& wind) {
+  MeshPart part;
+  part.material = wind.material;
+  part.reserve(wind.vertices.size(), wind.indices.size() / 3);
+  for (const TreeVertex& v : wind.vertices) part.addVertex(v.position, v.normal, v.uv);
+  part.indices.assign(wind.indices.begin(), wind.indices.end());
+  return part;
+}
+
+}  // namespace
+
+ForestGltfSummary writeForestGltf(const Terrain& terrain, const TreeLibrary& library,
+                                  const Forest& forest, const std::filesystem::path& file,
+                                  int lod) {
+  ForestGltfSummary summary;
+  GltfBuilder builder;
+  builder.useExtension("EXT_mesh_gpu_instancing", true);
+  std::vector<int> roots;
+
+  Material ground;
+  ground.name = "terrain";
+  ground.baseColor = glm::vec4(0.30f, 0.36f, 0.18f, 1.0f);
+  ground.roughness = 0.95f;
+  const MeshPart groundPart = terrainPart(terrain);
+  summary.terrainTriangles = groundPart.triangleCount();
+  tinygltf::Mesh terrainMesh;
+  terrainMesh.name = "terrain";
+  builder.addPrimitive(terrainMesh, groundPart, builder.addMaterial(ground));
+  tinygltf::Node terrainNode;
+  terrainNode.name = "terrain";
+  terrainNode.mesh = builder.addMesh(std::move(terrainMesh));
+  roots.push_back(builder.addNode(std::move(terrainNode)));
+
+  // The trees of each type, in forest order.
+  const auto& types = library.types();
+  std::vector<std::vector<std::size_t>> members(types.size());
+  for (std::size_t i = 0; i < forest.size(); ++i) members[forest.type[i]].push_back(i);
+
+  // Materials per species and kind, added when first used.
+  std::vector<std::vector<int>> materials(library.species().size(), std::vector<int>(5, -1));
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    if (members[t].empty()) continue;
+    const TreeType& type = types[t];
+    const Species& species = library.species()[type.species];
+    tinygltf::Mesh mesh;
+    mesh.name = species.name + "_variant" + std::to_string(type.variant) + "_age" +
+                std::to_string(type.ageClass);
+    for (const WindPart& part : type.meshes.lods[lod].parts) {
+      int& material = materials[type.species][static_cast<int>(part.material)];
+      if (material < 0) material = builder.addMaterial(makeMaterial(part.material, species));
+      builder.addPrimitive(mesh, meshPart(part), material);
+    }
+
+    std::vector<glm::vec3> translations, scales;
+    std::vector<glm::vec4> rotations;  // unit quaternions (x, y, z, w)
+    for (std::size_t i : members[t]) {
+      translations.push_back(forest.position[i]);
+      // The renderer turns x toward z by yaw: a rotation of -yaw about y.
+      const float half = -0.5f * forest.yaw[i];
+      rotations.emplace_back(0.0f, std::sin(half), 0.0f, std::cos(half));
+      scales.emplace_back(forest.scaleXZ[i], forest.scaleY[i], forest.scaleXZ[i]);
+    }
+    tinygltf::Value::Object attributes;
+    attributes["TRANSLATION"] = tinygltf::Value(builder.addAccessor(
+        translations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 0, false));
+    attributes["ROTATION"] = tinygltf::Value(builder.addAccessor(
+        rotations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, 0, false));
+    attributes["SCALE"] = tinygltf::Value(
+        builder.addAccessor(scales, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 0, false));
+    tinygltf::Value::Object instancing;
+    instancing["attributes"] = tinygltf::Value(attributes);
+
+    tinygltf::Node node;
+    node.name = mesh.name;
+    node.mesh = builder.addMesh(std::move(mesh));
+    node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(instancing);
+    roots.push_back(builder.addNode(std::move(node)));
+    summary.instances += members[t].size();
+    ++summary.treeMeshes;
+  }
+  builder.setScene(std::move(roots));
+  builder.write(file);
+  return summary;
+}
+
+}  // namespace eco

@@ -8,6 +8,7 @@
 
 #include "model/gltf_builder.hpp"
 #include "render/camera.hpp"
+#include "render/terrain_renderer.hpp"
 
 namespace eco {
 namespace {
@@ -18,17 +19,9 @@ MeshPart terrainPart(const Terrain& terrain) {
   MeshPart part;
   part.material = MaterialKind::Bark;  // unused: the terrain has its own material
   for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x) {
-      const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, g.width - 1);
-      const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, g.height - 1);
-      const float dEast = (terrain.heightAt(x1, y) - terrain.heightAt(x0, y)) /
-                          static_cast<float>((x1 - x0) * g.dx_m);
-      const float dSouth = (terrain.heightAt(x, y1) - terrain.heightAt(x, y0)) /
-                           static_cast<float>((y1 - y0) * g.dy_m);
+    for (int x = 0; x < g.width; ++x)
       part.addVertex(worldFromMap(g.eastOf(x), g.northOf(y), terrain.heightAt(x, y)),
-                     glm::normalize(glm::vec3(-dEast, 1.0f, -dSouth)),
-                     {(x + 0.5f) / g.width, (y + 0.5f) / g.height});
-    }
+                     terrainNormal(terrain, x, y), {(x + 0.5f) / g.width, (y + 0.5f) / g.height});
   for (int y = 0; y + 1 < g.height; ++y)
     for (int x = 0; x + 1 < g.width; ++x) {
       const auto a = static_cast<std::uint32_t>(g.index(x, y)), b = a + 1,

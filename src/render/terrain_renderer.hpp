@@ -16,6 +16,10 @@
 
 namespace eco {
 
+// The smooth normal (world frame) at a cell centre: central differences of the heights, one
+// sided at the edges. The renderer and the glTF export share it.
+glm::vec3 terrainNormal(const Terrain& terrain, int x, int y);
+
 class TerrainRenderer {
  public:
   explicit TerrainRenderer(const Terrain& terrain);

@@ -17,7 +17,7 @@ struct ExportArgs {
   std::string run;
   std::optional<int> year;
   std::string out;
-  int lod = 1;
+  std::string lod = "1";
 };
 
 void runExport(const ExportArgs& args) {
@@ -36,9 +36,10 @@ void runExport(const ExportArgs& args) {
   source.buildLibrary();
   const Forest forest = source.forestOf(year, 0);
   const ForestGltfSummary summary =
-      writeForestGltf(source.terrain, *source.library, forest, out, args.lod);
+      writeForestGltf(source.terrain, *source.library, forest, out,
+                      args.lod == "all" ? kAllLods : std::stoi(args.lod));
   std::cout << fmt::format(
-      "{}: year {}, {} trees as instances of {} meshes (LOD{}), terrain of {} triangles\n",
+      "{}: year {}, {} trees as instances of {} tree types (LOD {}), terrain of {} triangles\n",
       args.out, year, summary.instances, summary.treeMeshes, args.lod, summary.terrainTriangles);
 }
 
@@ -54,8 +55,9 @@ void addExportCommand(CLI::App& app) {
   command
       ->add_option(
           "--lod", args->lod,
-          "Level of detail of the tree meshes: 0 full, 1 clustered leaves, 2 crown proxies")
-      ->check(CLI::Range(0, 2));
+          "Level of detail of the tree meshes: 0 full, 1 clustered leaves, 2 crown proxies, "
+          "all (LOD0 with LOD1 and LOD2 through MSFT_lod)")
+      ->check(CLI::IsMember({"0", "1", "2", "all"}));
   command->callback([args] { runExport(*args); });
 }
 

@@ -8,6 +8,7 @@
 
 #include "model/gltf_builder.hpp"
 #include "render/camera.hpp"
+#include "render/culling.hpp"
 #include "render/terrain_renderer.hpp"
 
 namespace eco {
@@ -49,6 +50,7 @@ ForestGltfSummary writeForestGltf(const Terrain& terrain, const TreeLibrary& lib
   ForestGltfSummary summary;
   GltfBuilder builder;
   builder.useExtension("EXT_mesh_gpu_instancing", true);
+  if (lod == kAllLods) builder.useExtension("MSFT_lod", false);
   std::vector<int> roots;
 
   Material ground;
@@ -76,14 +78,18 @@ ForestGltfSummary writeForestGltf(const Terrain& terrain, const TreeLibrary& lib
     if (members[t].empty()) continue;
     const TreeType& type = types[t];
     const Species& species = library.species()[type.species];
-    tinygltf::Mesh mesh;
-    mesh.name = species.name + "_variant" + std::to_string(type.variant) + "_age" +
-                std::to_string(type.ageClass);
-    for (const WindPart& part : type.meshes.lods[lod].parts) {
-      int& material = materials[type.species][static_cast<int>(part.material)];
-      if (material < 0) material = builder.addMaterial(makeMaterial(part.material, species));
-      builder.addPrimitive(mesh, meshPart(part), material);
-    }
+    const std::string name = species.name + "_variant" + std::to_string(type.variant) + "_age" +
+                             std::to_string(type.ageClass);
+    auto meshOfLevel = [&](int level) {
+      tinygltf::Mesh mesh;
+      mesh.name = name + "_lod" + std::to_string(level);
+      for (const WindPart& part : type.meshes.lods[level].parts) {
+        int& material = materials[type.species][static_cast<int>(part.material)];
+        if (material < 0) material = builder.addMaterial(makeMaterial(part.material, species));
+        builder.addPrimitive(mesh, meshPart(part), material);
+      }
+      return builder.addMesh(std::move(mesh));
+    };
 
     std::vector<glm::vec3> translations, scales;
     std::vector<glm::vec4> rotations;  // unit quaternions (x, y, z, w)
@@ -104,11 +110,30 @@ ForestGltfSummary writeForestGltf(const Terrain& terrain, const TreeLibrary& lib
     tinygltf::Value::Object instancing;
     instancing["attributes"] = tinygltf::Value(attributes);
 
-    tinygltf::Node node;
-    node.name = mesh.name;
-    node.mesh = builder.addMesh(std::move(mesh));
-    node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(instancing);
-    roots.push_back(builder.addNode(std::move(node)));
+    auto instancedNode = [&](int level) {
+      tinygltf::Node node;
+      node.name = name + "_lod" + std::to_string(level);
+      node.mesh = meshOfLevel(level);
+      node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(instancing);
+      return node;
+    };
+    if (lod == kAllLods) {
+      tinygltf::Node base = instancedNode(0);
+      tinygltf::Value::Array ids;
+      for (int level = 1; level < kLodCount; ++level)
+        ids.emplace_back(builder.addNode(instancedNode(level)));
+      tinygltf::Value::Object msftLod;
+      msftLod["ids"] = tinygltf::Value(ids);
+      base.extensions["MSFT_lod"] = tinygltf::Value(msftLod);
+      tinygltf::Value::Array coverage;
+      for (float pixels : LodSettings{}.switchPixels) coverage.emplace_back(pixels / 720.0);
+      tinygltf::Value::Object extras;
+      extras["MSFT_screencoverage"] = tinygltf::Value(coverage);
+      base.extras = tinygltf::Value(extras);
+      roots.push_back(builder.addNode(std::move(base)));
+    } else {
+      roots.push_back(builder.addNode(instancedNode(lod)));
+    }
     summary.instances += members[t].size();
     ++summary.treeMeshes;
   }

@@ -20,7 +20,14 @@ struct ForestGltfSummary {
   std::size_t terrainTriangles = 0;
 };
 
-// `lod` picks the level each type's mesh is exported at (0 full detail).
+// Every level of detail: LOD0 as each type's mesh, LOD1 and LOD2 through MSFT_lod.
+inline constexpr int kAllLods = -1;
+
+// `lod` picks the level each type's mesh is exported at (0 full detail), or kAllLods for
+// MSFT_lod: the type's node shows LOD0 and names two sibling nodes with LOD1 and LOD2 (the
+// same instances), with the screen coverages at which the renderer switches
+// (MSFT_screencoverage, fractions of a 720-pixel-high screen). Viewers without MSFT_lod
+// show LOD0.
 ForestGltfSummary writeForestGltf(const Terrain& terrain, const TreeLibrary& library,
                                   const Forest& forest, const std::filesystem::path& file,
                                   int lod = 1);

@@ -96,6 +96,48 @@ TEST(ForestGltf, TheTerrainsBoundingBoxIsTheHeightmaps) {
   EXPECT_NEAR(positions.maxValues[2], 0.0, 1e-4);
 }
 
+// With every LOD, a type's node shows LOD0 and names its LOD1 and LOD2 nodes through
+// MSFT_lod, each with the same instances and fewer triangles.
+TEST(ForestGltf, AllLevelsOfDetailThroughMsftLod) {
+  const Scene scene = smallScene();
+  const auto file = test::freshDirectory("forest_gltf_lods") / "forest.glb";
+  const ForestGltfSummary summary =
+      writeForestGltf(scene.terrain, test::smallLibrary(), scene.forest, file, kAllLods);
+  const tinygltf::Model model = readBack(file);
+  EXPECT_EQ(model.extensionsUsed,
+            (std::vector<std::string>{"EXT_mesh_gpu_instancing", "MSFT_lod"}));
+  auto triangles = [&](int node) {
+    std::size_t count = 0;
+    for (const tinygltf::Primitive& p : model.meshes[model.nodes[node].mesh].primitives)
+      count += model.accessors[p.indices].count / 3;
+    return count;
+  };
+  auto translations = [&](int node) {
+    return model.nodes[node]
+        .extensions.at("EXT_mesh_gpu_instancing")
+        .Get("attributes")
+        .Get("TRANSLATION")
+        .GetNumberAsInt();
+  };
+  std::size_t withLods = 0;
+  for (int root : model.scenes[0].nodes) {
+    const tinygltf::Node& node = model.nodes[root];
+    if (!node.extensions.count("MSFT_lod")) continue;
+    ++withLods;
+    const tinygltf::Value& ids = node.extensions.at("MSFT_lod").Get("ids");
+    ASSERT_EQ(ids.ArrayLen(), 2u);
+    int previous = root;
+    for (std::size_t i = 0; i < 2; ++i) {
+      const int lodNode = ids.Get(static_cast<int>(i)).GetNumberAsInt();
+      EXPECT_LT(triangles(lodNode), triangles(previous));
+      EXPECT_EQ(translations(lodNode), translations(root));
+      previous = lodNode;
+    }
+    EXPECT_EQ(node.extras.Get("MSFT_screencoverage").ArrayLen(), 3u);
+  }
+  EXPECT_EQ(withLods, summary.treeMeshes);
+}
+
 // The instance rotation turns a tree as the renderer does (rotateYaw in common.glsl).
 TEST(ForestGltf, InstanceRotationMatchesTheRenderersYaw) {
   Scene scene = smallScene();

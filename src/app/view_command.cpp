@@ -47,6 +47,9 @@ Forest visibleTrees(const Forest& all, const TreeLibrary& library, const std::ve
     forest.scaleY.push_back(all.scaleY[i]);
     forest.tint.push_back(all.tint[i]);
     forest.phase.push_back(all.phase[i]);
+    forest.presence.push_back(all.presence[i]);
+    forest.blendType.push_back(all.blendType[i]);
+    forest.blendWeight.push_back(all.blendWeight[i]);
   }
   return forest;
 }

@@ -20,6 +20,9 @@ void Forest::reserve(std::size_t n) {
   scaleY.reserve(n);
   tint.reserve(n);
   phase.reserve(n);
+  presence.reserve(n);
+  blendType.reserve(n);
+  blendWeight.reserve(n);
 }
 
 void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
@@ -42,6 +45,9 @@ void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, floa
   const glm::vec3 stressed(1.15f, 1.05f, 0.6f);
   tint.push_back(brightness * glm::mix(stressed, glm::vec3(1.0f), std::clamp(vigor, 0.0f, 1.0f)));
   phase.push_back(static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)));
+  presence.push_back(1.0f);
+  blendType.push_back(-1);
+  blendWeight.push_back(0.0f);
 }
 
 float speciesMaxHeight(const TreeLibrary& library, int species) {

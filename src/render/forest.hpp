@@ -22,6 +22,12 @@ struct Forest {
   std::vector<float> scaleY;        // vertical scale
   std::vector<glm::vec3> tint;      // multiplies the albedo
   std::vector<float> phase;         // wind time offset, so that trees sway out of step
+  // Growth between snapshots (time-lapse): the share of the tree's pixels drawn (a seedling
+  // appearing, a dead tree fading), and a second type it is cross-fading into (the next age
+  // class) with that type's share. add() sets 1, -1, 0: a whole tree of one type.
+  std::vector<float> presence;
+  std::vector<std::int32_t> blendType;
+  std::vector<float> blendWeight;
 
   std::size_t size() const { return type.size(); }
   void reserve(std::size_t n);

@@ -270,15 +270,31 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   // trees. A total order, so the frame does not depend on the thread count.
   buckets_.assign(types.size() * kLevelCount, Bucket{});
   shadowBuckets_.assign(types.size(), Bucket{});
-  for (std::size_t i = 0; i < n; ++i) {
+  // Every draw of tree i: its type (and the type it blends into) split its presence range,
+  // and a level cross-fade splits each type's range again.
+  auto forEachDraw = [&](std::size_t i, auto&& draw) {
     const LodChoice& c = choices_[i];
+    const float presence = forest.presence[i];
+    const float split = presence * (forest.blendType[i] >= 0 ? 1.0f - forest.blendWeight[i] : 1.0f);
+    auto levels = [&](int type, float lo, float hi) {
+      if (hi <= lo) return;
+      if (c.fadeTo < 0) return draw(type, c.level, lo, hi);
+      const float cut = lo + c.fade * (hi - lo);  // the coarser level takes the lower share
+      if (hi > cut) draw(type, c.level, cut, hi);
+      if (cut > lo) draw(type, c.fadeTo, lo, cut);
+    };
+    levels(forest.type[i], 0.0f, split);
+    if (forest.blendType[i] >= 0) levels(forest.blendType[i], split, presence);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
     if (outside[i])
       ++stats.culled;
-    else if (c.level < 0)
+    else if (choices_[i].level < 0)
       ++stats.tooSmall;
-    if (c.level < 0) continue;
-    ++buckets_[forest.type[i] * kLevelCount + c.level].count;
-    if (c.fadeTo >= 0) ++buckets_[forest.type[i] * kLevelCount + c.fadeTo].count;
+    if (choices_[i].level < 0) continue;
+    forEachDraw(i, [&](int type, int level, float, float) {
+      ++buckets_[type * kLevelCount + level].count;
+    });
     if (casts_[i]) ++shadowBuckets_[forest.type[i]].count;
   }
   GLuint next = 0;
@@ -292,17 +308,16 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     return distances_[a] < distances_[b] || (distances_[a] == distances_[b] && a < b);
   });
   for (const std::uint32_t i : order_) {
-    const LodChoice& c = choices_[i];
-    const int type = forest.type[i];
-    auto put = [&](Bucket& bucket, float fadeCode) {
+    auto put = [&](Bucket& bucket, float lo, float hi) {
       staging_[bucket.first + bucket.count++] = {
           glm::vec4(forest.position[i], forest.yaw[i]),
-          glm::vec4(forest.scaleXZ[i], forest.scaleY[i], fadeCode, forest.phase[i]),
-          glm::vec4(forest.tint[i], 1.0f)};
+          glm::vec4(forest.scaleXZ[i], forest.scaleY[i], lo, forest.phase[i]),
+          glm::vec4(forest.tint[i], hi)};
     };
-    put(buckets_[type * kLevelCount + c.level], c.fade);
-    if (c.fadeTo >= 0) put(buckets_[type * kLevelCount + c.fadeTo], 1.0f + c.fade);
-    if (casts_[i]) put(shadowBuckets_[type], 0.0f);
+    forEachDraw(i, [&](int type, int level, float lo, float hi) {
+      put(buckets_[type * kLevelCount + level], lo, hi);
+    });
+    if (casts_[i]) put(shadowBuckets_[forest.type[i]], 0.0f, forest.presence[i]);
   }
   if (staging_.size() > instanceCapacity_) {
     instanceCapacity_ = std::max<std::size_t>(staging_.size() + staging_.size() / 2, 1024);

@@ -60,6 +60,57 @@ TEST(ForestRenderer, OnlyMeshTreesInTheShadowBoxCastShadows) {
   EXPECT_LE(stats.shadowCasters, 6u);  // trees within 50 m (plus crown) of north 60
 }
 
+TEST(ForestRenderer, BlendingTreesDrawBothTypesAndAbsentTreesNothing) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  Forest forest = rowOfTrees(library, 3);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);
+  LodSettings lod;
+  lod.forcedLevel = 1;
+  const auto drawn = [&] {
+    const ForestStats stats = renderer.prepare(forest, camera, 640, 360, lod, {});
+    return stats.instances[1];
+  };
+  EXPECT_EQ(drawn(), 3u);
+  forest.blendType[0] = library.typeIndex(1, 0, 0);
+  forest.blendWeight[0] = 0.4f;
+  EXPECT_EQ(drawn(), 4u);  // the first tree as both age classes
+  forest.presence[1] = 0.0f;
+  EXPECT_EQ(drawn(), 3u);  // the second not at all
+}
+
+// A tree at presence p keeps about p of its pixels (dithered), whichever level draws it.
+TEST(ForestRenderer, PresenceKeepsThatShareOfTheTreesPixels) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer scene(terrain, 46.0, &library);
+  Forest forest;
+  const int type = library.typeIndex(1, 0, 1);
+  forest.add(library, type, worldFromMap(160, 160, 100), library.types()[type].height_m, 0.0f, 1.0f,
+             1);
+  Camera camera;
+  camera.position = worldFromMap(160, 140, 100 + 0.5 * library.types()[type].height_m);
+  RenderOptions options;
+  options.shadows = false;
+  const RenderTarget target = RenderTarget::create(96, 96);
+  auto treePixels = [&](float presence) {
+    Forest empty;
+    scene.render(&empty, camera, options, target);
+    const Image background = readPixels(96, 96);
+    forest.presence[0] = presence;
+    scene.render(&forest, camera, options, target);
+    return test::compareImages(readPixels(96, 96), background).differingShare;
+  };
+  const double full = treePixels(1.0f);
+  ASSERT_GT(full, 0.05);
+  EXPECT_NEAR(treePixels(0.5f) / full, 0.5, 0.1);
+  EXPECT_EQ(treePixels(0.0f), 0.0);
+}
+
 TEST(ForestRenderer, VariantsShareTheImpostorOfTheirSpeciesAndAgeClass) {
   test::useHeadlessGl();
   const TreeLibrary library({test::loadNamedSpecies("shrub")},

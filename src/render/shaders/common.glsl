@@ -73,18 +73,19 @@ vec3 shade(vec3 albedo, vec3 normal, vec3 worldPosition, float translucency) {
   return applyFog(albedo * light, worldPosition);
 }
 
-// Screen-door cross-fade between two levels of detail: code in [0, 1] keeps the pixels whose
-// threshold is at least code (the finer level), code in (1, 2] keeps those below code - 1
-// (the coarser level). The two masks are complementary, so the sum covers every pixel once.
+// Screen-door dithering: every pixel has a threshold in [0, 1), and a draw keeps the pixels
+// whose threshold lies in its range [lo, hi). A tree cross-fading between two levels of
+// detail (or two age classes) is drawn twice with adjacent ranges, so together the draws
+// cover each of its pixels once; a tree appearing or dying keeps a range shorter than 1.
 #ifdef FRAGMENT_STAGE
-bool ditherKeeps(float code) {
+bool ditherKeeps(vec2 range) {
   // A white-noise threshold per pixel: no pattern for the eye to catch during a fade.
   uvec2 p = uvec2(gl_FragCoord.xy);
   uint h = p.x * 1973u + p.y * 9277u;
   h = (h ^ (h >> 15)) * 0x2c1b3c6du;
   h = (h ^ (h >> 12)) * 0x297a2d39u;
   float threshold = float((h ^ (h >> 15)) & 0xffffu) / 65536.0;
-  return code <= 1.0 ? threshold >= code : threshold < code - 1.0;
+  return threshold >= range.x && threshold < range.y;
 }
 #endif
 

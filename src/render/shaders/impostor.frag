@@ -1,7 +1,7 @@
 in vec3 vWorld;
 flat in vec2 vCell;
 flat in vec3 vTint;
-flat in float vFade;
+flat in vec2 vKeep;
 flat in float vYaw;
 
 layout(binding = 1) uniform sampler2D uAlbedoAtlas;
@@ -11,7 +11,7 @@ uniform int uFrames;
 out vec4 outColor;
 
 void main() {
-  if (!ditherKeeps(vFade)) discard;
+  if (!ditherKeeps(vKeep)) discard;
   // gl_PointCoord runs downward; the atlas (OpenGL's convention) upward.
   vec2 uv = (vCell + vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y)) / float(uFrames);
   vec4 albedo = texture(uAlbedoAtlas, uv);

@@ -12,7 +12,7 @@ uniform float uPixelsPerUnit;  // viewport height / 2 times projection[1][1]
 out vec3 vWorld;
 flat out vec2 vCell;
 flat out vec3 vTint;
-flat out float vFade;
+flat out vec2 vKeep;  // the dither thresholds this draw keeps: [lo, hi)
 flat out float vYaw;
 
 void main() {
@@ -24,7 +24,7 @@ void main() {
   vCell = clamp(floor(hemiOctEncode(local) * float(uFrames)), 0.0, float(uFrames - 1));
   vWorld = centreWorld;
   vTint = iTint.rgb;
-  vFade = iScale.z;
+  vKeep = vec2(iScale.z, iTint.w);
   vYaw = yaw;
   gl_Position = uViewProj * vec4(centreWorld, 1.0);
   // The sphere's diameter on screen; the sprite is a screen-aligned square, which for a tree

@@ -3,7 +3,7 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vUv;
 flat in vec3 vTint;
-flat in float vFade;
+flat in vec2 vKeep;
 
 layout(binding = 0) uniform sampler2D uTexture;
 uniform vec4 uBaseColor;
@@ -31,7 +31,7 @@ out vec4 outColor;
 
 void main() {
 #ifndef BAKE
-  if (!ditherKeeps(vFade)) discard;
+  if (!ditherKeeps(vKeep)) discard;
 #endif
   vec4 albedo = uBaseColor;
   if (uHasTexture != 0) albedo *= texture(uTexture, vUv);

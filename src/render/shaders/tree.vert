@@ -8,14 +8,14 @@ layout(location = 4) in vec3 aSwayCos;
 layout(location = 5) in vec3 aBendEast;
 layout(location = 6) in vec3 aBendSouth;
 layout(location = 8) in vec4 iPositionYaw;  // world position of the stem base, yaw (radians)
-layout(location = 9) in vec4 iScale;        // horizontal scale, vertical scale, fade code, phase
-layout(location = 10) in vec4 iTint;        // rgb multiplier
+layout(location = 9) in vec4 iScale;        // horizontal scale, vertical scale, keep from, phase
+layout(location = 10) in vec4 iTint;        // rgb multiplier, keep up to
 
 out vec3 vWorld;
 out vec3 vNormal;
 out vec2 vUv;
 flat out vec3 vTint;
-flat out float vFade;
+flat out vec2 vKeep;  // the dither thresholds this draw keeps: [lo, hi)
 #ifdef FEEDBACK
 out vec3 fbLocal;  // the displaced vertex in its tree's frame, for the wind test
 #endif
@@ -35,7 +35,7 @@ void main() {
   vNormal = rotateYaw(normalize(aNormal / scale), yaw);
   vUv = aUv;
   vTint = iTint.rgb;
-  vFade = iScale.z;
+  vKeep = vec2(iScale.z, iTint.w);
 #ifdef SHADOW_PASS
   gl_Position = uLightViewProj * vec4(vWorld, 1.0);
 #else

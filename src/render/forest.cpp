@@ -57,8 +57,8 @@ float speciesMaxHeight(const TreeLibrary& library, int species) {
   return library.types()[library.typeIndex(species, 0, classes - 1)].height_m;
 }
 
-Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
-                          const std::string& where) {
+std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
+                                  const std::string& where) {
   std::vector<int> librarySpecies;
   for (const std::string& name : snapshot.speciesNames) {
     const auto& all = library.species();
@@ -69,6 +69,12 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
                        "the trees name species '" + name + "', which the scenario does not have");
     librarySpecies.push_back(static_cast<int>(found - all.begin()));
   }
+  return librarySpecies;
+}
+
+Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
+                          const std::string& where) {
+  const std::vector<int> librarySpecies = librarySpeciesOf(snapshot, library, where);
   std::vector<float> maxHeights;
   for (int s = 0; s < static_cast<int>(library.species().size()); ++s)
     maxHeights.push_back(speciesMaxHeight(library, s));

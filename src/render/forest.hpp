@@ -39,6 +39,11 @@ struct Forest {
 // The largest height the species reaches (its growth curve's maximum, or its mature tree).
 float speciesMaxHeight(const TreeLibrary& library, int species);
 
+// The library's species index of each of the snapshot's species names; an InputError
+// (at `where`) names a species the library does not have.
+std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
+                                  const std::string& where);
+
 // Every plant of a snapshot; species are matched to the library by name. An InputError
 // names a species the library does not have.
 Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,

@@ -276,15 +276,18 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     const LodChoice& c = choices_[i];
     const float presence = forest.presence[i];
     const float split = presence * (forest.blendType[i] >= 0 ? 1.0f - forest.blendWeight[i] : 1.0f);
-    auto levels = [&](int type, float lo, float hi) {
+    // `scale` turns the tree's scales, meant for its own type's mesh, to another type's.
+    auto levels = [&](int type, float scale, float lo, float hi) {
       if (hi <= lo) return;
-      if (c.fadeTo < 0) return draw(type, c.level, lo, hi);
+      if (c.fadeTo < 0) return draw(type, c.level, scale, lo, hi);
       const float cut = lo + c.fade * (hi - lo);  // the coarser level takes the lower share
-      if (hi > cut) draw(type, c.level, cut, hi);
-      if (cut > lo) draw(type, c.fadeTo, lo, cut);
+      if (hi > cut) draw(type, c.level, scale, cut, hi);
+      if (cut > lo) draw(type, c.fadeTo, scale, lo, cut);
     };
-    levels(forest.type[i], 0.0f, split);
-    if (forest.blendType[i] >= 0) levels(forest.blendType[i], split, presence);
+    levels(forest.type[i], 1.0f, 0.0f, split);
+    if (forest.blendType[i] >= 0)
+      levels(forest.blendType[i],
+             types[forest.type[i]].height_m / types[forest.blendType[i]].height_m, split, presence);
   };
   for (std::size_t i = 0; i < n; ++i) {
     if (outside[i])
@@ -292,7 +295,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     else if (choices_[i].level < 0)
       ++stats.tooSmall;
     if (choices_[i].level < 0) continue;
-    forEachDraw(i, [&](int type, int level, float, float) {
+    forEachDraw(i, [&](int type, int level, float, float, float) {
       ++buckets_[type * kLevelCount + level].count;
     });
     if (casts_[i]) ++shadowBuckets_[forest.type[i]].count;
@@ -308,16 +311,16 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     return distances_[a] < distances_[b] || (distances_[a] == distances_[b] && a < b);
   });
   for (const std::uint32_t i : order_) {
-    auto put = [&](Bucket& bucket, float lo, float hi) {
+    auto put = [&](Bucket& bucket, float scale, float lo, float hi) {
       staging_[bucket.first + bucket.count++] = {
           glm::vec4(forest.position[i], forest.yaw[i]),
-          glm::vec4(forest.scaleXZ[i], forest.scaleY[i], lo, forest.phase[i]),
+          glm::vec4(scale * forest.scaleXZ[i], scale * forest.scaleY[i], lo, forest.phase[i]),
           glm::vec4(forest.tint[i], hi)};
     };
-    forEachDraw(i, [&](int type, int level, float lo, float hi) {
-      put(buckets_[type * kLevelCount + level], lo, hi);
+    forEachDraw(i, [&](int type, int level, float scale, float lo, float hi) {
+      put(buckets_[type * kLevelCount + level], scale, lo, hi);
     });
-    if (casts_[i]) put(shadowBuckets_[forest.type[i]], 0.0f, forest.presence[i]);
+    if (casts_[i]) put(shadowBuckets_[forest.type[i]], 1.0f, 0.0f, forest.presence[i]);
   }
   if (staging_.size() > instanceCapacity_) {
     instanceCapacity_ = std::max<std::size_t>(staging_.size() + staging_.size() / 2, 1024);

@@ -79,4 +79,23 @@ int TreeLibrary::typeFor(int species, std::uint64_t variantSeed, float height_m,
   return typeIndex(species, variant, best);
 }
 
+TreeLibrary::Blend TreeLibrary::blendFor(int species, std::uint64_t variantSeed, float height_m,
+                                         float speciesMaxHeight_m) const {
+  const int variant =
+      static_cast<int>(variantSeed % static_cast<std::uint64_t>(settings_.variants));
+  const int classes = static_cast<int>(settings_.ageClasses.size());
+  const float mature = types_[typeIndex(species, variant, classes - 1)].height_m;
+  const float relative = std::max(height_m, 1e-3f) / std::max(speciesMaxHeight_m, 1e-3f);
+  auto classRelative = [&](int a) {
+    return types_[typeIndex(species, variant, a)].height_m / mature;
+  };
+  if (relative <= classRelative(0)) return {typeIndex(species, variant, 0)};
+  for (int a = 0; a + 1 < classes; ++a)
+    if (relative < classRelative(a + 1))
+      return {typeIndex(species, variant, a), typeIndex(species, variant, a + 1),
+              std::log(relative / classRelative(a)) /
+                  std::log(classRelative(a + 1) / classRelative(a))};
+  return {typeIndex(species, variant, classes - 1)};
+}
+
 }  // namespace eco

@@ -44,6 +44,16 @@ class TreeLibrary {
   // relative to the species' largest (compared in logarithms).
   int typeFor(int species, std::uint64_t variantSeed, float height_m,
               float speciesMaxHeight_m) const;
+  // The same as two neighbouring age classes blended by relative height (in logarithms), for
+  // growth that changes class without a jump: `type` is the younger class, `blendType` the
+  // older (or -1 outside the classes' range) and `blendWeight` the older's share.
+  struct Blend {
+    int type = 0;
+    int blendType = -1;
+    float blendWeight = 0.0f;
+  };
+  Blend blendFor(int species, std::uint64_t variantSeed, float height_m,
+                 float speciesMaxHeight_m) const;
   // The seed of a variant: the model's individual of that variant.
   static std::uint64_t variantSeed(int variant) {
     return 1 + 7919 * static_cast<std::uint64_t>(variant);

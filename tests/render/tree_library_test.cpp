@@ -44,5 +44,24 @@ TEST(TreeLibrary, PlantsTakeTheAgeClassNearestInRelativeHeight) {
   EXPECT_EQ(library.typeFor(1, 7, 0.1f, maxHeight), library.typeIndex(1, 0, 0));
 }
 
+TEST(TreeLibrary, BlendsMoveSmoothlyFromOneAgeClassToTheNext) {
+  const TreeLibrary& library = test::smallLibrary();
+  const float young = library.types()[library.typeIndex(0, 0, 0)].height_m;
+  const float mature = library.types()[library.typeIndex(0, 0, 1)].height_m;
+  const float maxHeight = 40.0f;
+  const float youngHeight = maxHeight * young / mature;
+  EXPECT_EQ(library.blendFor(0, 7, 0.5f * youngHeight, maxHeight).blendType, -1);
+  EXPECT_EQ(library.blendFor(0, 7, 1.1f * maxHeight, maxHeight).type, library.typeIndex(0, 0, 1));
+  float previous = -1.0f;
+  for (float h = youngHeight * 1.01f; h < maxHeight * 0.99f; h *= 1.05f) {
+    const TreeLibrary::Blend b = library.blendFor(0, 7, h, maxHeight);
+    EXPECT_EQ(b.type, library.typeIndex(0, 0, 0));
+    EXPECT_EQ(b.blendType, library.typeIndex(0, 0, 1));
+    EXPECT_GT(b.blendWeight, previous);
+    previous = b.blendWeight;
+  }
+  EXPECT_GT(previous, 0.9f);  // the last step stops 5 % short of the mature class
+}
+
 }  // namespace
 }  // namespace eco

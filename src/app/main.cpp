@@ -8,6 +8,7 @@
 #include "app/export_command.hpp"
 #include "app/render_command.hpp"
 #include "app/run_command.hpp"
+#include "app/timelapse_command.hpp"
 #include "app/tree_command.hpp"
 #include "app/view_command.hpp"
 #include "core/error.hpp"
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
   eco::addRenderCommand(app);
   eco::addViewCommand(app);
   eco::addExportCommand(app);
+  eco::addTimelapseCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

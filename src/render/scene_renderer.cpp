@@ -23,7 +23,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
                              const TreeLibrary* library, const ImpostorSettings& impostors)
-    : latitude_deg_(latitude_deg),
+    : terrainData_(terrain),
+      latitude_deg_(latitude_deg),
       terrain_(terrain),
       sky_({{GL_VERTEX_SHADER, "sky.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}),
       skyArray_(makeVertexArray()) {

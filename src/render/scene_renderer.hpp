@@ -48,7 +48,7 @@ struct FrameStats {
 
 class SceneRenderer {
  public:
-  // `library` may be null (terrain only); it must outlive the renderer.
+  // `library` may be null (terrain only); it and the terrain must outlive the renderer.
   SceneRenderer(const Terrain& terrain, double latitude_deg, const TreeLibrary* library,
                 const ImpostorSettings& impostors = {});
 
@@ -56,11 +56,13 @@ class SceneRenderer {
                     const RenderTarget& target);
 
   TerrainRenderer& terrain() { return terrain_; }
+  const Terrain& terrainData() const { return terrainData_; }
   ForestRenderer* forest() { return forest_.get(); }
 
  private:
   void renderShadowMap(const RenderOptions& options, const FrameUniforms& u, bool forestCasts);
 
+  const Terrain& terrainData_;  // the caller's, as for the library
   double latitude_deg_;
   FrameUniformBuffer uniforms_;
   TerrainRenderer terrain_;

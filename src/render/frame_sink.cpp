@@ -1,0 +1,121 @@
+#include "render/frame_sink.hpp"
+
+#include <unistd.h>
+#include <csignal>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "sim/image_io.hpp"
+
+namespace eco {
+namespace {
+
+std::vector<std::uint8_t> rgbOf(const Image& image) {
+  std::vector<std::uint8_t> rgb;
+  rgb.reserve(static_cast<std::size_t>(image.width) * image.height * 3);
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+    rgb.insert(rgb.end(), image.rgba.begin() + i, image.rgba.begin() + i + 3);
+  return rgb;
+}
+
+class PngFolderSink : public FrameSink {
+ public:
+  explicit PngFolderSink(std::filesystem::path folder)
+      : folder_(std::move(folder)), partial_(folder_.string() + ".partial") {
+    if (std::filesystem::exists(folder_) && !std::filesystem::is_empty(folder_))
+      throw InputError({folder_.string(), 0, "--out"}, "the frame folder exists and is not empty");
+    std::filesystem::remove_all(partial_);
+    std::filesystem::create_directories(partial_);
+  }
+  ~PngFolderSink() override {
+    if (!finished_) std::filesystem::remove_all(partial_);
+  }
+  void add(const Image& frame) override {
+    writeRgb8Image(partial_ / fmt::format("frame_{:05d}.png", count_++), frame.width, frame.height,
+                   rgbOf(frame));
+  }
+  void finish() override {
+    std::filesystem::remove(folder_);  // an empty folder the user made
+    std::filesystem::rename(partial_, folder_);
+    finished_ = true;
+  }
+
+ private:
+  std::filesystem::path folder_, partial_;
+  int count_ = 0;
+  bool finished_ = false;
+};
+
+class Mp4Sink : public FrameSink {
+ public:
+  Mp4Sink(const std::filesystem::path& file, int width, int height, int fps)
+      : file_(file), partial_(file.parent_path() / (".partial_" + file.filename().string())) {
+    if (!programOnPath("ffmpeg"))
+      throw InputError({"ffmpeg", 0, ""},
+                       "MP4 output needs ffmpeg (Debian: apt-get install ffmpeg); or write PNG "
+                       "frames into a folder");
+    // Raw RGB frames in; H.264 in yuv420p, which needs even sizes: pad by a pixel if odd.
+    const std::string command = fmt::format(
+        "ffmpeg -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s {}x{} -r {} -i - "
+        "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset fast -crf 20 -pix_fmt yuv420p "
+        "-movflags +faststart -f mp4 '{}'",
+        width, height, fps, partial_.string());
+    std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give an error, not kill us
+    pipe_ = popen(command.c_str(), "w");
+    if (!pipe_) throw std::runtime_error("could not start ffmpeg");
+  }
+  ~Mp4Sink() override {
+    if (pipe_) pclose(pipe_);
+    if (!finished_) std::filesystem::remove(partial_);
+  }
+  void add(const Image& frame) override {
+    const std::vector<std::uint8_t> rgb = rgbOf(frame);
+    if (std::fwrite(rgb.data(), 1, rgb.size(), pipe_) != rgb.size()) fail();
+  }
+  void finish() override {
+    const int status = pclose(pipe_);
+    pipe_ = nullptr;
+    if (status != 0) fail();
+    std::filesystem::rename(partial_, file_);
+    finished_ = true;
+  }
+
+ private:
+  [[noreturn]] void fail() {
+    if (pipe_) pclose(pipe_);
+    pipe_ = nullptr;
+    throw InputError({file_.string(), 0, ""},
+                     "ffmpeg failed to encode it (its messages are above)");
+  }
+
+  std::filesystem::path file_, partial_;
+  FILE* pipe_ = nullptr;
+  bool finished_ = false;
+};
+
+}  // namespace
+
+bool programOnPath(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  std::stringstream folders(path);
+  for (std::string folder; std::getline(folders, folder, ':');)
+    if (!folder.empty() && access((std::filesystem::path(folder) / name).c_str(), X_OK) == 0)
+      return true;
+  return false;
+}
+
+std::unique_ptr<FrameSink> pngFolderSink(const std::filesystem::path& folder) {
+  return std::make_unique<PngFolderSink>(folder);
+}
+
+std::unique_ptr<FrameSink> mp4Sink(const std::filesystem::path& file, int width, int height,
+                                   int fps) {
+  return std::make_unique<Mp4Sink>(file, width, height, fps);
+}
+
+}  // namespace eco

@@ -1,0 +1,80 @@
+// Runs `ecoforest timelapse` as a user would.
+#include <gtest/gtest.h>
+
+#include "test_files.hpp"
+
+namespace {
+
+using eco::test::CommandResult;
+
+CommandResult ecoforest(const std::string& arguments) {
+  return eco::test::runCommand(std::string(ECOFOREST_EXE) + " " + arguments);
+}
+
+const std::filesystem::path& timelapseRun() {
+  static const std::filesystem::path dir = [] {
+    auto d = eco::test::freshDirectory("app_timelapse_run");
+    CommandResult r = ecoforest("run --years 20 --out " + d.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return d;
+  }();
+  return dir;
+}
+
+TEST(TimelapseCommand, AnMp4HasFpsTimesSecondsFramesAtTheRequestedSize) {
+  if (eco::test::runCommand("command -v ffprobe").exitCode != 0)
+    GTEST_SKIP() << "ffmpeg is not installed (scripts/setup installs it)";
+  const auto out = eco::test::freshDirectory("app_timelapse_mp4") / "growth.mp4";
+  CommandResult r =
+      ecoforest("timelapse " + timelapseRun().string() +
+                " --seconds 1.5 --fps 8 --size 160x96 --overlay --out " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  CommandResult probe = eco::test::runCommand(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=nb_read_frames,width,height,pix_fmt,codec_name -of csv=p=0 " +
+      out.string());
+  EXPECT_EQ(probe.output, "h264,160,96,yuv420p,12\n");
+}
+
+TEST(TimelapseCommand, PngFramesAreCountedAndIdenticalForTheSameRunAndOptions) {
+  const auto dir = eco::test::freshDirectory("app_timelapse_png");
+  const std::string options =
+      " --kind wind --seconds 0.5 --fps 10 --size 128x80 --camera-path flyover";
+  for (const char* name : {"a", "b"}) {
+    CommandResult r = ecoforest("timelapse " + timelapseRun().string() + options + " --out " +
+                                (dir / name).string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+  }
+  ASSERT_EQ(eco::test::entriesIn(dir / "a"), 5u);
+  for (int f = 0; f < 5; ++f) {
+    const std::string frame = "frame_0000" + std::to_string(f) + ".png";
+    EXPECT_EQ(eco::test::readFile(dir / "a" / frame), eco::test::readFile(dir / "b" / frame))
+        << frame;
+  }
+}
+
+TEST(TimelapseCommand, BadInputIsExitTwoAndLeavesNoFile) {
+  const auto dir = eco::test::freshDirectory("app_timelapse_bad");
+  const std::string run = timelapseRun().string();
+  const std::string out = " --out " + (dir / "t.mp4").string();
+  auto expectError = [&](const std::string& arguments, const std::string& message) {
+    CommandResult r = ecoforest("timelapse " + arguments);
+    EXPECT_EQ(r.exitCode, 2) << arguments << ": " << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << arguments << ": " << r.output;
+  };
+  expectError((dir / "none").string() + out, "no such run folder");
+  expectError(run + " --years 0:90" + out, "0 <= A < B <= 20");
+  expectError(run + " --years soon" + out, "expected A:B");
+  expectError(run + " --kind wind --years 15" + out, "no snapshot of year 15");
+  expectError(run + " --out " + (dir / "x.avi").string(), "FILE.mp4");
+  expectError(run + " --out " + (dir / "missing" / "t.mp4").string(), "folder does not exist");
+  expectError(run + " --camera-path " + (dir / "nope.toml").string() + out, "nope.toml");
+  // Without ffmpeg on PATH an MP4 cannot be made; ecoforest says so.
+  CommandResult noFfmpeg = eco::test::runCommand(
+      "env PATH=/nonexistent " + std::string(ECOFOREST_EXE) + " timelapse " + run + out);
+  EXPECT_EQ(noFfmpeg.exitCode, 2) << noFfmpeg.output;
+  EXPECT_NE(noFfmpeg.output.find("needs ffmpeg"), std::string::npos) << noFfmpeg.output;
+  EXPECT_EQ(eco::test::entriesIn(dir), 0u);
+}
+
+}  // namespace

@@ -44,11 +44,14 @@ CameraPath orbitPath(const Terrain& terrain) {
   const glm::vec3 centre = mapCentre(terrain);
   const float radius = 0.45f * static_cast<float>(std::hypot(g.eastOf(g.width - 1), g.northOf(0)));
   const float height = radius * std::tan(glm::radians(35.0f));
-  return [=](double u) {
+  return [=, &terrain](double u) {
     const double angle = 2.0 * std::numbers::pi * u;
-    // From the south (+z), turning counter-clockwise seen from above.
-    const glm::vec3 position =
+    // From the south (+z), turning counter-clockwise seen from above; over a hill higher than
+    // the orbit the camera rises above it.
+    glm::vec3 position =
         centre + glm::vec3(radius * std::sin(angle), height, radius * std::cos(angle));
+    position.y = std::max(position.y,
+                          groundUnder(terrain, position) + static_cast<float>(kCameraClearance_m));
     return lookingAt(position, centre);
   };
 }

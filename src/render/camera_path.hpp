@@ -19,7 +19,8 @@ using CameraPath = std::function<Camera(double u)>;
 
 inline constexpr double kCameraClearance_m = 2.0;  // least height above the ground
 
-// Once around the map's centre, looking at it from 35 degrees above, starting from the south.
+// Once around the map's centre, looking at it from 35 degrees above, starting from the south
+// (never lower than kCameraClearance_m above the ground under it).
 CameraPath orbitPath(const Terrain& terrain);
 // From the map's south edge to its north edge along its middle, 80 m above the highest
 // ground within 200 m ahead, looking north 15 degrees down.

@@ -1,0 +1,60 @@
+// Frames per second of a growth time-lapse of the default run at 640x360 (orbit, years 0 to
+// 60), and how the time splits between building the instances (reading snapshots and
+// interpolating), rendering (with read-back) and encoding (H.264 through ffmpeg when it is
+// installed, else PNG frames).
+// Usage: timelapse_bench [SCENARIO = default] [SECONDS = 4] [FPS = 30] [SIZE = 640x360]
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "render/gl_context.hpp"
+#include "render/timelapse.hpp"
+#include "sim/simulation.hpp"
+
+int main(int argc, char** argv) {
+  const std::filesystem::path scenario =
+      argc > 1 ? std::filesystem::path(argv[1])
+               : std::filesystem::path(ECOFOREST_DATA_DIR) / "default.toml";
+  const auto work = std::filesystem::temp_directory_path() / "ecoforest_timelapse_bench";
+  std::filesystem::remove_all(work);
+  std::filesystem::create_directories(work);
+
+  eco::RunOptions run;
+  run.scenarioFile = scenario;
+  run.out = work / "run";
+  eco::runSimulation(run);
+  const eco::RunFolder folder = eco::openRunFolder(work / "run");
+  const eco::Terrain terrain = eco::loadTerrain(folder.scenario);
+  std::vector<eco::Species> species;
+  for (const auto& s : folder.scenario.species) species.push_back(eco::loadSpecies(s.file));
+  const eco::TreeLibrary library(std::move(species), {});
+  eco::HeadlessGl gl;
+  eco::SceneRenderer renderer(terrain, folder.scenario.climate.latitude_deg, &library);
+
+  eco::TimelapseSettings settings;
+  settings.toYear = folder.snapshotYears.back();
+  settings.seconds = argc > 2 ? std::atof(argv[2]) : 4.0;
+  settings.fps = argc > 3 ? std::atoi(argv[3]) : 30;
+  if (argc > 4)
+    std::sscanf(argv[4], "%dx%d", &settings.width, &settings.height);
+  else
+    settings.width = 640, settings.height = 360;
+  settings.camera = eco::orbitPath(terrain);
+  settings.overlay = true;
+  const bool mp4 = eco::programOnPath("ffmpeg");
+  auto sink = mp4 ? eco::mp4Sink(work / "growth.mp4", settings.width, settings.height, settings.fps)
+                  : eco::pngFolderSink(work / "frames");
+  const eco::TimelapseTimings t =
+      eco::renderTimelapse(folder, library, renderer, settings, *sink, {});
+  std::printf("%s, growth 0-%d of %s, %dx%d, %d frames into %s\n", eco::glDescription().c_str(),
+              folder.snapshotYears.back(), folder.scenario.name.c_str(), settings.width,
+              settings.height, t.frames, mp4 ? "H.264 MP4" : "PNG frames");
+  std::printf(
+      "%.1f frames/s: %.1f s in all; instances %.2f s (%.1f ms a frame), rendering %.2f s "
+      "(%.1f ms), encoding %.2f s (%.1f ms)\n",
+      t.frames / t.total_s, t.total_s, t.instances_s, 1000.0 * t.instances_s / t.frames, t.render_s,
+      1000.0 * t.render_s / t.frames, t.encode_s, 1000.0 * t.encode_s / t.frames);
+  std::filesystem::remove_all(work);
+  return 0;
+}

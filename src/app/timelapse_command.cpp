@@ -44,7 +44,8 @@ std::optional<std::pair<double, double>> parseYears(const std::string& text) {
 void runTimelapse(const TimelapseArgs& args) {
   const auto size = parseSize(args.size);
   if (!size) throw InputError({"--size", 0, ""}, "expected WIDTHxHEIGHT, each 16..8192");
-  const std::filesystem::path out(args.out);
+  std::filesystem::path out(args.out);
+  if (!out.has_filename()) out = out.parent_path();  // "frames/" is the folder "frames"
   const bool mp4 = out.extension() == ".mp4";
   if (!mp4 && out.has_extension())
     throw InputError({args.out, 0, "--out"}, "write FILE.mp4, or a folder for PNG frames");

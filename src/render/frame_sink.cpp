@@ -22,10 +22,15 @@ std::vector<std::uint8_t> rgbOf(const Image& image) {
   return rgb;
 }
 
+// "frames/" names the folder "frames".
+std::filesystem::path withoutTrailingSeparator(const std::filesystem::path& folder) {
+  return folder.has_filename() ? folder : folder.parent_path();
+}
+
 class PngFolderSink : public FrameSink {
  public:
-  explicit PngFolderSink(std::filesystem::path folder)
-      : folder_(std::move(folder)), partial_(folder_.string() + ".partial") {
+  explicit PngFolderSink(const std::filesystem::path& folder)
+      : folder_(withoutTrailingSeparator(folder)), partial_(folder_.string() + ".partial") {
     if (std::filesystem::exists(folder_) && !std::filesystem::is_empty(folder_))
       throw InputError({folder_.string(), 0, "--out"}, "the frame folder exists and is not empty");
     std::filesystem::remove_all(partial_);

@@ -40,7 +40,7 @@ TEST(TimelapseCommand, PngFramesAreCountedAndIdenticalForTheSameRunAndOptions) {
   const auto dir = eco::test::freshDirectory("app_timelapse_png");
   const std::string options =
       " --kind wind --seconds 0.5 --fps 10 --size 128x80 --camera-path flyover";
-  for (const char* name : {"a", "b"}) {
+  for (const char* name : {"a", "b/"}) {  // a folder may be given with its slash
     CommandResult r = ecoforest("timelapse " + timelapseRun().string() + options + " --out " +
                                 (dir / name).string());
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -25,10 +25,10 @@ double secondsSince(Clock::time_point start) {
 class SnapshotCache {
  public:
   explicit SnapshotCache(const RunFolder& run) : run_(run) {}
+  // The snapshot of a year. References stay valid until forgetBefore() drops that year.
   const TreeSnapshot& at(int year) {
     auto it = cache_.find(year);
     if (it != cache_.end()) return it->second;
-    if (cache_.size() > 4) cache_.clear();  // frames move forward: keep memory bounded
     TreeSnapshot snapshot;
     if (year == 0)
       snapshot.year = 0;
@@ -36,6 +36,8 @@ class SnapshotCache {
       snapshot = readSnapshot(run_, year);
     return cache_.emplace(year, std::move(snapshot)).first->second;
   }
+  // Frames move forward through the years: snapshots before `year` are not needed again.
+  void forgetBefore(int year) { cache_.erase(cache_.begin(), cache_.lower_bound(year)); }
 
  private:
   const RunFolder& run_;
@@ -118,6 +120,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
       // The snapshots around the year (the last pair at the end of the run).
       std::size_t after = 1;
       while (after + 1 < years.size() && years[after] < year) ++after;
+      snapshots.forgetBefore(years[after - 1]);
       forest = forestBetween(snapshots.at(years[after - 1]), snapshots.at(years[after]), year,
                              library, run.dir.string());
     }

@@ -24,13 +24,8 @@ void runExport(const ExportArgs& args) {
   const std::filesystem::path out(args.out);
   if (out.extension() != ".glb" && out.extension() != ".gltf")
     throw InputError({args.out, 0, "--out"}, "the forest is written as .glb or .gltf");
-  const std::filesystem::path folder = out.parent_path().empty() ? "." : out.parent_path();
-  if (!std::filesystem::is_directory(folder))
-    throw InputError({args.out, 0, "--out"}, "its folder does not exist");
-  if (!std::filesystem::is_directory(args.run))
-    throw InputError({args.run, 0, ""},
-                     "no such run folder (export reads a run of `ecoforest run`)");
-  SceneSource source = openSceneSource(args.run);
+  requireOutputFolder(out);
+  SceneSource source = openRunSource(args.run);
   const int year = args.year.value_or(source.defaultYear());
   source.requireSnapshot(year);
   source.buildLibrary();

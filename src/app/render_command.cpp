@@ -114,10 +114,7 @@ nlohmann::ordered_json statsJson(const FrameStats& s, double loadMs, double rend
 
 // Fails before the slow work when the output cannot be written.
 void checkWritable(const std::filesystem::path& file) {
-  const std::filesystem::path folder =
-      file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-  if (!std::filesystem::is_directory(folder))
-    throw InputError({file.string(), 0, "--out"}, "its folder does not exist");
+  requireOutputFolder(file);
   if (file.extension() != ".png")
     throw InputError({file.string(), 0, "--out"}, "the still must be a .png file");
 }

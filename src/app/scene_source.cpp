@@ -56,6 +56,19 @@ void writeStill(const std::filesystem::path& file, const Image& image) {
   writeRgb8Image(file, image.width, image.height, rgb);
 }
 
+void requireOutputFolder(const std::filesystem::path& out) {
+  const std::filesystem::path folder =
+      out.parent_path().empty() ? std::filesystem::path(".") : out.parent_path();
+  if (!std::filesystem::is_directory(folder))
+    throw InputError({out.string(), 0, "--out"}, "its folder does not exist");
+}
+
+SceneSource openRunSource(const std::string& run) {
+  if (!std::filesystem::is_directory(run))
+    throw InputError({run, 0, ""}, "no such run folder (make one with `ecoforest run`)");
+  return openSceneSource(run);
+}
+
 SceneSource openSceneSource(const std::string& runOrScenario) {
   SceneSource source;
   if (std::filesystem::is_directory(runOrScenario)) {

@@ -39,6 +39,13 @@ struct SceneSource {
 // Writes an RGBA image as an RGB PNG (under a temporary name, renamed when complete).
 void writeStill(const std::filesystem::path& file, const Image& image);
 
+// InputError at --out unless the folder the file (or frame folder) goes into exists.
+void requireOutputFolder(const std::filesystem::path& out);
+
+// The run folder of a run-only command (export, timelapse): an InputError when `run` is not
+// a folder, before it could be taken for a scenario name.
+SceneSource openRunSource(const std::string& run);
+
 // A directory is a run folder; anything else a scenario name or file (resolveScenario).
 // The tree library is left to buildLibrary(), so that bad input fails fast.
 SceneSource openSceneSource(const std::string& runOrScenario);

@@ -49,15 +49,8 @@ void runTimelapse(const TimelapseArgs& args) {
   const bool mp4 = out.extension() == ".mp4";
   if (!mp4 && out.has_extension())
     throw InputError({args.out, 0, "--out"}, "write FILE.mp4, or a folder for PNG frames");
-  const std::filesystem::path folder =
-      out.parent_path().empty() ? std::filesystem::path(".") : out.parent_path();
-  if (!std::filesystem::is_directory(folder))
-    throw InputError({args.out, 0, "--out"}, "its folder does not exist");
-  if (!std::filesystem::is_directory(args.run))
-    throw InputError({args.run, 0, ""},
-                     "no such run folder (a time-lapse shows a run of `ecoforest run`)");
-
-  SceneSource source = openSceneSource(args.run);
+  requireOutputFolder(out);
+  SceneSource source = openRunSource(args.run);
   const RunFolder& run = *source.run;
   if (run.snapshotYears.empty())
     throw InputError({args.run, 0, ""}, "the run has no snapshots yet");

@@ -149,7 +149,7 @@ void runRender(const RenderArgs& args) {
   const FrameStats stats =
       renderer.render(&forest, camera, renderOptionsFrom(args.view, source.scenario), target);
   const Image image = readPixels(target.width, target.height);
-  writeStill(args.out, image);
+  writeRgb8Image(args.out, image);
   if (args.stats) std::cout << statsJson(stats, loadMs, rendererMs).dump(2) << "\n";
 }
 

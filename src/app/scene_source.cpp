@@ -48,14 +48,6 @@ Field SceneSource::overlay(const std::string& name) const {
                    fmt::format("no condition '{}' (there are: {})", name, names));
 }
 
-void writeStill(const std::filesystem::path& file, const Image& image) {
-  std::vector<std::uint8_t> rgb;
-  rgb.reserve(static_cast<std::size_t>(image.width) * image.height * 3);
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-    rgb.insert(rgb.end(), image.rgba.begin() + i, image.rgba.begin() + i + 3);
-  writeRgb8Image(file, image.width, image.height, rgb);
-}
-
 void requireOutputFolder(const std::filesystem::path& out) {
   const std::filesystem::path folder =
       out.parent_path().empty() ? std::filesystem::path(".") : out.parent_path();

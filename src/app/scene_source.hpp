@@ -7,7 +7,6 @@
 #include <optional>
 #include <string>
 
-#include "core/image.hpp"
 #include "render/forest.hpp"
 #include "render/tree_library.hpp"
 #include "sim/grid.hpp"
@@ -35,9 +34,6 @@ struct SceneSource {
   // from the run's maps/, or a condition computed for a scenario.
   Field overlay(const std::string& name) const;
 };
-
-// Writes an RGBA image as an RGB PNG (under a temporary name, renamed when complete).
-void writeStill(const std::filesystem::path& file, const Image& image);
 
 // InputError at --out unless the folder the file (or frame folder) goes into exists.
 void requireOutputFolder(const std::filesystem::path& out);

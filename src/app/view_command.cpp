@@ -58,7 +58,7 @@ void saveScreenshot(const RenderTarget& target, const std::string& file) {
   if (target.width == 0) return;  // nothing drawn yet
   target.bind();
   const Image image = readPixels(target.width, target.height);
-  writeStill(file, image);
+  writeRgb8Image(file, image);
   std::cerr << "ecoforest view: saved " << file << "\n";
 }
 

@@ -21,6 +21,14 @@ glm::vec4 Image::get(int x, int y) const {
   return glm::vec4(pixel[0], pixel[1], pixel[2], pixel[3]) / 255.0f;
 }
 
+std::vector<std::uint8_t> Image::rgb() const {
+  std::vector<std::uint8_t> out;
+  out.reserve(static_cast<std::size_t>(width) * height * 3);
+  for (std::size_t i = 0; i < rgba.size(); i += 4)
+    out.insert(out.end(), rgba.begin() + i, rgba.begin() + i + 3);
+  return out;
+}
+
 glm::vec4 Image::meanOpaqueColor() const {
   glm::dvec4 sum(0.0);
   std::size_t count = 0;

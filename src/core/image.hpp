@@ -20,6 +20,8 @@ struct Image {
   glm::vec4 get(int x, int y) const;
   // Mean colour over pixels whose alpha is at least half.
   glm::vec4 meanOpaqueColor() const;
+  // The pixels without alpha, 3 bytes each, row 0 first (for RGB files and video encoders).
+  std::vector<std::uint8_t> rgb() const;
 };
 
 std::vector<std::uint8_t> encodePng(const Image& image);

@@ -14,14 +14,6 @@
 namespace eco {
 namespace {
 
-std::vector<std::uint8_t> rgbOf(const Image& image) {
-  std::vector<std::uint8_t> rgb;
-  rgb.reserve(static_cast<std::size_t>(image.width) * image.height * 3);
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-    rgb.insert(rgb.end(), image.rgba.begin() + i, image.rgba.begin() + i + 3);
-  return rgb;
-}
-
 // "frames/" names the folder "frames".
 std::filesystem::path withoutTrailingSeparator(const std::filesystem::path& folder) {
   return folder.has_filename() ? folder : folder.parent_path();
@@ -40,8 +32,7 @@ class PngFolderSink : public FrameSink {
     if (!finished_) std::filesystem::remove_all(partial_);
   }
   void add(const Image& frame) override {
-    writeRgb8Image(partial_ / fmt::format("frame_{:05d}.png", count_++), frame.width, frame.height,
-                   rgbOf(frame));
+    writeRgb8Image(partial_ / fmt::format("frame_{:05d}.png", count_++), frame);
   }
   void finish() override {
     std::filesystem::remove(folder_);  // an empty folder the user made
@@ -78,7 +69,7 @@ class Mp4Sink : public FrameSink {
     if (!finished_) std::filesystem::remove(partial_);
   }
   void add(const Image& frame) override {
-    const std::vector<std::uint8_t> rgb = rgbOf(frame);
+    const std::vector<std::uint8_t> rgb = frame.rgb();
     if (std::fwrite(rgb.data(), 1, rgb.size(), pipe_) != rgb.size()) fail();
   }
   void finish() override {

@@ -101,4 +101,8 @@ void writeRgb8Image(const std::filesystem::path& file, int width, int height,
   writeAtomically(file, spec, OIIO::TypeDesc::UINT8, rgb.data());
 }
 
+void writeRgb8Image(const std::filesystem::path& file, const Image& image) {
+  writeRgb8Image(file, image.width, image.height, image.rgb());
+}
+
 }  // namespace eco

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/image.hpp"
+
 namespace eco {
 
 struct SingleChannelImage {
@@ -27,5 +29,7 @@ void writeUint16Image(const std::filesystem::path& file, int width, int height,
                       const std::vector<std::uint16_t>& values);
 void writeRgb8Image(const std::filesystem::path& file, int width, int height,
                     const std::vector<std::uint8_t>& rgb);
+// An RGBA image's colour (alpha dropped), e.g. a rendered frame as PNG.
+void writeRgb8Image(const std::filesystem::path& file, const Image& image);
 
 }  // namespace eco

@@ -34,4 +34,15 @@ TEST(Image, EncodesAValidPng) {
   EXPECT_EQ(png[23], 8);
 }
 
+TEST(Image, RgbDropsAlphaAndKeepsRowOrder) {
+  Image image(2, 2);
+  image.set(1, 0, {1.0f, 0.0f, 0.0f, 0.0f});
+  image.set(0, 1, {0.0f, 0.0f, 1.0f, 1.0f});
+  const std::vector<std::uint8_t> rgb = image.rgb();
+  ASSERT_EQ(rgb.size(), 12u);
+  EXPECT_EQ(rgb[3], 255);  // (1, 0) red, although transparent
+  EXPECT_EQ(rgb[8], 255);  // (0, 1) blue
+  EXPECT_EQ(rgb[0] + rgb[1] + rgb[2], 0);
+}
+
 }  // namespace eco

@@ -40,16 +40,7 @@ Forest visibleTrees(const Forest& all, const TreeLibrary& library, const std::ve
   forest.reserve(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (!shown[library.types()[all.type[i]].species]) continue;
-    forest.type.push_back(all.type[i]);
-    forest.position.push_back(all.position[i]);
-    forest.yaw.push_back(all.yaw[i]);
-    forest.scaleXZ.push_back(all.scaleXZ[i]);
-    forest.scaleY.push_back(all.scaleY[i]);
-    forest.tint.push_back(all.tint[i]);
-    forest.phase.push_back(all.phase[i]);
-    forest.presence.push_back(all.presence[i]);
-    forest.blendType.push_back(all.blendType[i]);
-    forest.blendWeight.push_back(all.blendWeight[i]);
+    forest.append(all, i);
   }
   return forest;
 }

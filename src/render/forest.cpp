@@ -25,6 +25,19 @@ void Forest::reserve(std::size_t n) {
   blendWeight.reserve(n);
 }
 
+void Forest::append(const Forest& from, std::size_t i) {
+  type.push_back(from.type[i]);
+  position.push_back(from.position[i]);
+  yaw.push_back(from.yaw[i]);
+  scaleXZ.push_back(from.scaleXZ[i]);
+  scaleY.push_back(from.scaleY[i]);
+  tint.push_back(from.tint[i]);
+  phase.push_back(from.phase[i]);
+  presence.push_back(from.presence[i]);
+  blendType.push_back(from.blendType[i]);
+  blendWeight.push_back(from.blendWeight[i]);
+}
+
 void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
                  float crownRadius_m, float vigor, std::uint64_t individual) {
   const TreeType& t = library.types()[typeIndex];

@@ -31,6 +31,8 @@ struct Forest {
 
   std::size_t size() const { return type.size(); }
   void reserve(std::size_t n);
+  // Appends tree i of `from`, every array alike (a subset of a forest: species shown).
+  void append(const Forest& from, std::size_t i);
   // One plant, drawn by `typeIndex` at its height and crown radius.
   void add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
            float crownRadius_m, float vigor, std::uint64_t individual);

@@ -45,6 +45,30 @@ TEST(Forest, ASnapshotPlantStandsAtItsPlaceAtItsHeight) {
   }
 }
 
+TEST(Forest, AppendCopiesEveryArrayOfATree) {
+  const TreeLibrary& library = test::smallLibrary();
+  Forest all;
+  for (int i = 0; i < 3; ++i)
+    all.add(library, library.typeIndex(i % 2, 0, 1), worldFromMap(10.0 * i, 5, 100), 5.0f + i, 0.0f,
+            0.5f, static_cast<std::uint64_t>(i));
+  all.presence[2] = 0.3f;
+  all.blendType[2] = library.typeIndex(0, 0, 0);
+  all.blendWeight[2] = 0.6f;
+  Forest some;
+  some.append(all, 2);
+  ASSERT_EQ(some.size(), 1u);
+  EXPECT_EQ(some.type[0], all.type[2]);
+  EXPECT_EQ(some.position[0], all.position[2]);
+  EXPECT_EQ(some.yaw[0], all.yaw[2]);
+  EXPECT_EQ(some.scaleXZ[0], all.scaleXZ[2]);
+  EXPECT_EQ(some.scaleY[0], all.scaleY[2]);
+  EXPECT_EQ(some.tint[0], all.tint[2]);
+  EXPECT_EQ(some.phase[0], all.phase[2]);
+  EXPECT_EQ(some.presence[0], 0.3f);
+  EXPECT_EQ(some.blendType[0], all.blendType[2]);
+  EXPECT_EQ(some.blendWeight[0], 0.6f);
+}
+
 TEST(Forest, AnUnknownSpeciesIsAnInputError) {
   TreeSnapshot snapshot;
   snapshot.speciesNames = {"baobab"};

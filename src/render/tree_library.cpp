@@ -62,23 +62,6 @@ int TreeLibrary::typeIndex(int species, int variant, int ageClass) const {
   return (species * settings_.variants + variant) * classes + ageClass;
 }
 
-int TreeLibrary::typeFor(int species, std::uint64_t variantSeed, float height_m,
-                         float speciesMaxHeight_m) const {
-  const int variant =
-      static_cast<int>(variantSeed % static_cast<std::uint64_t>(settings_.variants));
-  const int classes = static_cast<int>(settings_.ageClasses.size());
-  const float mature = types_[typeIndex(species, variant, classes - 1)].height_m;
-  const float relative = std::max(height_m, 1e-3f) / std::max(speciesMaxHeight_m, 1e-3f);
-  int best = 0;
-  float bestDistance = std::numeric_limits<float>::max();
-  for (int a = 0; a < classes; ++a) {
-    const float classRelative = types_[typeIndex(species, variant, a)].height_m / mature;
-    const float distance = std::abs(std::log(classRelative / relative));
-    if (distance < bestDistance) bestDistance = distance, best = a;
-  }
-  return typeIndex(species, variant, best);
-}
-
 TreeLibrary::Blend TreeLibrary::blendFor(int species, std::uint64_t variantSeed, float height_m,
                                          float speciesMaxHeight_m) const {
   const int variant =
@@ -96,6 +79,14 @@ TreeLibrary::Blend TreeLibrary::blendFor(int species, std::uint64_t variantSeed,
               std::log(relative / classRelative(a)) /
                   std::log(classRelative(a + 1) / classRelative(a))};
   return {typeIndex(species, variant, classes - 1)};
+}
+
+int TreeLibrary::typeFor(int species, std::uint64_t variantSeed, float height_m,
+                         float speciesMaxHeight_m) const {
+  // The nearer of the two classes around the plant (class heights grow with age), in
+  // logarithms: the blend's weight rounded.
+  const Blend blend = blendFor(species, variantSeed, height_m, speciesMaxHeight_m);
+  return blend.blendType >= 0 && blend.blendWeight > 0.5f ? blend.blendType : blend.type;
 }
 
 }  // namespace eco

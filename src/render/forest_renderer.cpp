@@ -211,18 +211,13 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
     // Copy the two attachments into mipmapped textures of their own.
     const int levels = 1 + static_cast<int>(std::log2(tile));  // mip down to 1 texel per tile
     for (int attachment = 0; attachment < 2; ++attachment) {
-      GLuint texture = 0;
-      glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-      glTextureStorage2D(texture, levels, attachment == 0 ? GL_SRGB8_ALPHA8 : GL_RGBA8, size, size);
+      GlName texture =
+          makeTextureStorage(attachment == 0 ? GL_SRGB8_ALPHA8 : GL_RGBA8, size, size, levels);
       glCopyImageSubData(attachment == 0 ? target.color.id() : target.extraColor.id(),
-                         GL_TEXTURE_2D, 0, 0, 0, 0, texture, GL_TEXTURE_2D, 0, 0, 0, 0, size, size,
-                         1);
-      glGenerateTextureMipmap(texture);
-      glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-      glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-      (attachment == 0 ? atlas.albedo : atlas.normal) = GlName(GlKind::Texture, texture);
+                         GL_TEXTURE_2D, 0, 0, 0, 0, texture.id(), GL_TEXTURE_2D, 0, 0, 0, 0, size,
+                         size, 1);
+      glGenerateTextureMipmap(texture.id());
+      (attachment == 0 ? atlas.albedo : atlas.normal) = std::move(texture);
     }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -46,21 +46,26 @@ GlName makeVertexArray() {
   return {GlKind::VertexArray, id};
 }
 
-GlName makeTexture(const Image& image, bool repeat) {
+GlName makeTextureStorage(GLenum format, int width, int height, int levels, bool repeat) {
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
-  int levels = 1;
-  for (int size = std::max(image.width, image.height); size > 1; size /= 2) ++levels;
-  glTextureStorage2D(id, levels, GL_SRGB8_ALPHA8, image.width, image.height);
-  glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                      image.rgba.data());
-  glGenerateTextureMipmap(id);
+  glTextureStorage2D(id, levels, format, width, height);
   const GLint wrap = repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
   glTextureParameteri(id, GL_TEXTURE_WRAP_S, wrap);
   glTextureParameteri(id, GL_TEXTURE_WRAP_T, wrap);
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   return {GlKind::Texture, id};
+}
+
+GlName makeTexture(const Image& image, bool repeat) {
+  int levels = 1;
+  for (int size = std::max(image.width, image.height); size > 1; size /= 2) ++levels;
+  GlName texture = makeTextureStorage(GL_SRGB8_ALPHA8, image.width, image.height, levels, repeat);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                      image.rgba.data());
+  glGenerateTextureMipmap(texture.id());
+  return texture;
 }
 
 RenderTarget RenderTarget::create(int width, int height, bool extraColor, GLenum colorFormat) {
@@ -71,15 +76,9 @@ RenderTarget RenderTarget::create(int width, int height, bool extraColor, GLenum
   glCreateFramebuffers(1, &id);
   t.framebuffer = GlName(GlKind::Framebuffer, id);
   auto attach = [&](GLenum format, GLenum attachment) {
-    GLuint texture = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-    glTextureStorage2D(texture, 1, format, width, height);
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glNamedFramebufferTexture(id, attachment, texture, 0);
-    return GlName(GlKind::Texture, texture);
+    GlName texture = makeTextureStorage(format, width, height);
+    glNamedFramebufferTexture(id, attachment, texture.id(), 0);
+    return texture;
   };
   t.color = attach(colorFormat, GL_COLOR_ATTACHMENT0);
   if (extraColor) {

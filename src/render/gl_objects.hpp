@@ -47,6 +47,10 @@ GlName makeBuffer(std::span<const T> data, GLbitfield flags = 0) {
 }
 GlName makeVertexArray();
 
+// An empty 2D texture of `levels` mip levels, filtered linearly (trilinearly when
+// mipmapped), clamped at the edges or repeating.
+GlName makeTextureStorage(GLenum format, int width, int height, int levels = 1,
+                          bool repeat = false);
 // An RGBA8 texture with mipmaps from an image (row 0 at the top, as glTF's uv expects).
 GlName makeTexture(const Image& image, bool repeat);
 

@@ -35,17 +35,13 @@ void SceneRenderer::renderShadowMap(const RenderOptions& options, const FrameUni
                                     bool forestCasts) {
   if (shadowSize_ != options.shadowMapSize) {
     shadowSize_ = options.shadowMapSize;
-    GLuint texture = 0, framebuffer = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-    glTextureStorage2D(texture, 1, GL_DEPTH_COMPONENT32F, shadowSize_, shadowSize_);
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(texture, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    shadowDepth_ = makeTextureStorage(GL_DEPTH_COMPONENT32F, shadowSize_, shadowSize_);
+    glTextureParameteri(shadowDepth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(shadowDepth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    GLuint framebuffer = 0;
     glCreateFramebuffers(1, &framebuffer);
-    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, texture, 0);
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, shadowDepth_.id(), 0);
     glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
-    shadowDepth_ = GlName(GlKind::Texture, texture);
     shadowFramebuffer_ = GlName(GlKind::Framebuffer, framebuffer);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_.id());

@@ -3,25 +3,13 @@
 
 #include <gtest/gtest.h>
 
-#include "test_files.hpp"
+#include "app_support.hpp"
 
 namespace {
 
 using eco::test::CommandResult;
-
-CommandResult ecoforest(const std::string& arguments) {
-  return eco::test::runCommand(std::string(ECOFOREST_EXE) + " " + arguments);
-}
-
-const std::filesystem::path& exportRun() {
-  static const std::filesystem::path dir = [] {
-    auto d = eco::test::freshDirectory("app_export_run");
-    CommandResult r = ecoforest("run --years 20 --out " + d.string());
-    EXPECT_EQ(r.exitCode, 0) << r.output;
-    return d;
-  }();
-  return dir;
-}
+using eco::test::ecoforest;
+using eco::test::shortDefaultRun;
 
 std::size_t treeRows(const std::filesystem::path& csv) {
   std::ifstream in(csv);
@@ -35,9 +23,9 @@ TEST(ExportCommand, WritesAValidGltfWithOneInstancePerLivingTree) {
   for (const char* name : {"forest.glb", "forest.gltf"}) {
     const auto out = dir / name;
     CommandResult r =
-        ecoforest("export " + exportRun().string() + " --year 10 --out " + out.string());
+        ecoforest("export " + shortDefaultRun().string() + " --year 10 --out " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const std::size_t trees = treeRows(exportRun() / "trees" / "year_0010.csv");
+    const std::size_t trees = treeRows(shortDefaultRun() / "trees" / "year_0010.csv");
     EXPECT_GT(trees, 0u);
     EXPECT_NE(r.output.find("year 10, " + std::to_string(trees) + " trees"), std::string::npos)
         << r.output;
@@ -56,14 +44,14 @@ TEST(ExportCommand, BadInputIsExitTwoAndWritesNothing) {
   CommandResult missing = ecoforest("export " + (dir / "nothing").string() + out);
   EXPECT_EQ(missing.exitCode, 2);
   EXPECT_NE(missing.output.find("no such run folder"), std::string::npos) << missing.output;
-  CommandResult year = ecoforest("export " + exportRun().string() + " --year 3" + out);
+  CommandResult year = ecoforest("export " + shortDefaultRun().string() + " --year 3" + out);
   EXPECT_EQ(year.exitCode, 2);
   EXPECT_NE(year.output.find("has: 10, 20"), std::string::npos) << year.output;
   CommandResult format =
-      ecoforest("export " + exportRun().string() + " --out " + (dir / "f.obj").string());
+      ecoforest("export " + shortDefaultRun().string() + " --out " + (dir / "f.obj").string());
   EXPECT_EQ(format.exitCode, 2);
-  CommandResult folder =
-      ecoforest("export " + exportRun().string() + " --out " + (dir / "no" / "f.glb").string());
+  CommandResult folder = ecoforest("export " + shortDefaultRun().string() + " --out " +
+                                   (dir / "no" / "f.glb").string());
   EXPECT_EQ(folder.exitCode, 2);
   EXPECT_EQ(eco::test::entriesIn(dir), 0u);
 }

@@ -3,15 +3,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "test_files.hpp"
+#include "app_support.hpp"
 
 namespace {
 
 using eco::test::CommandResult;
-
-CommandResult ecoforest(const std::string& arguments) {
-  return eco::test::runCommand(std::string(ECOFOREST_EXE) + " " + arguments);
-}
+using eco::test::ecoforest;
+using eco::test::shortDefaultRun;
 
 std::pair<int, int> pngSize(const std::filesystem::path& file) {
   auto in = OIIO::ImageInput::open(file.string());
@@ -19,20 +17,9 @@ std::pair<int, int> pngSize(const std::filesystem::path& file) {
   return {in->spec().width, in->spec().height};
 }
 
-// A short run of the default scenario, made once for the tests of this file.
-const std::filesystem::path& defaultRun() {
-  static const std::filesystem::path dir = [] {
-    auto d = eco::test::freshDirectory("app_render_run");
-    CommandResult r = ecoforest("run --years 20 --out " + d.string());
-    EXPECT_EQ(r.exitCode, 0) << r.output;
-    return d;
-  }();
-  return dir;
-}
-
 TEST(RenderCommand, ARunFolderRendersAStillWithItsStatistics) {
   const auto out = eco::test::freshDirectory("app_render") / "still.png";
-  CommandResult r = ecoforest("render " + defaultRun().string() +
+  CommandResult r = ecoforest("render " + shortDefaultRun().string() +
                               " --year 10 --size 320x180 --stats --out " + out.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(pngSize(out), std::make_pair(320, 180));
@@ -62,7 +49,7 @@ TEST(RenderCommand, BadInputIsExitTwoWithAClearMessageAndNoFile) {
   CommandResult notRun = ecoforest("render " + dir.string() + out);
   EXPECT_EQ(notRun.exitCode, 2);
   EXPECT_NE(notRun.output.find("no run.json"), std::string::npos) << notRun.output;
-  CommandResult year = ecoforest("render " + defaultRun().string() + " --year 7" + out);
+  CommandResult year = ecoforest("render " + shortDefaultRun().string() + " --year 7" + out);
   EXPECT_EQ(year.exitCode, 2);
   EXPECT_NE(year.output.find("has: 10, 20"), std::string::npos) << year.output;
   CommandResult camera = ecoforest("render default --camera 1,2,3" + out);
@@ -75,7 +62,7 @@ TEST(RenderCommand, BadInputIsExitTwoWithAClearMessageAndNoFile) {
   EXPECT_EQ(unwritable.exitCode, 2);
   EXPECT_NE(unwritable.output.find("folder does not exist"), std::string::npos);
   CommandResult overlay =
-      ecoforest("render " + defaultRun().string() + " --overlay nonsense" + out);
+      ecoforest("render " + shortDefaultRun().string() + " --overlay nonsense" + out);
   EXPECT_EQ(overlay.exitCode, 2);
   EXPECT_NE(overlay.output.find("moisture"), std::string::npos) << overlay.output;
   EXPECT_EQ(eco::test::entriesIn(dir), 0u);
@@ -89,7 +76,7 @@ TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
   const auto shot = eco::test::freshDirectory("app_view") / "view.png";
   CommandResult r = eco::test::runCommand(
       "xvfb-run -a -s '-screen 0 800x600x24' " + std::string(ECOFOREST_EXE) + " view " +
-      defaultRun().string() + " --size 400x300 --frames 4 --view ground --screenshot " +
+      shortDefaultRun().string() + " --size 400x300 --frames 4 --view ground --screenshot " +
       shot.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(pngSize(shot), std::make_pair(400, 300));

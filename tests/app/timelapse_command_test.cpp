@@ -1,32 +1,20 @@
 // Runs `ecoforest timelapse` as a user would.
 #include <gtest/gtest.h>
 
-#include "test_files.hpp"
+#include "app_support.hpp"
 
 namespace {
 
 using eco::test::CommandResult;
-
-CommandResult ecoforest(const std::string& arguments) {
-  return eco::test::runCommand(std::string(ECOFOREST_EXE) + " " + arguments);
-}
-
-const std::filesystem::path& timelapseRun() {
-  static const std::filesystem::path dir = [] {
-    auto d = eco::test::freshDirectory("app_timelapse_run");
-    CommandResult r = ecoforest("run --years 20 --out " + d.string());
-    EXPECT_EQ(r.exitCode, 0) << r.output;
-    return d;
-  }();
-  return dir;
-}
+using eco::test::ecoforest;
+using eco::test::shortDefaultRun;
 
 TEST(TimelapseCommand, AnMp4HasFpsTimesSecondsFramesAtTheRequestedSize) {
   if (eco::test::runCommand("command -v ffprobe").exitCode != 0)
     GTEST_SKIP() << "ffmpeg is not installed (scripts/setup installs it)";
   const auto out = eco::test::freshDirectory("app_timelapse_mp4") / "growth.mp4";
   CommandResult r =
-      ecoforest("timelapse " + timelapseRun().string() +
+      ecoforest("timelapse " + shortDefaultRun().string() +
                 " --seconds 1.5 --fps 8 --size 160x96 --overlay --out " + out.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   CommandResult probe = eco::test::runCommand(
@@ -41,7 +29,7 @@ TEST(TimelapseCommand, PngFramesAreCountedAndIdenticalForTheSameRunAndOptions) {
   const std::string options =
       " --kind wind --seconds 0.5 --fps 10 --size 128x80 --camera-path flyover";
   for (const char* name : {"a", "b/"}) {  // a folder may be given with its slash
-    CommandResult r = ecoforest("timelapse " + timelapseRun().string() + options + " --out " +
+    CommandResult r = ecoforest("timelapse " + shortDefaultRun().string() + options + " --out " +
                                 (dir / name).string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
   }
@@ -55,7 +43,7 @@ TEST(TimelapseCommand, PngFramesAreCountedAndIdenticalForTheSameRunAndOptions) {
 
 TEST(TimelapseCommand, BadInputIsExitTwoAndLeavesNoFile) {
   const auto dir = eco::test::freshDirectory("app_timelapse_bad");
-  const std::string run = timelapseRun().string();
+  const std::string run = shortDefaultRun().string();
   const std::string out = " --out " + (dir / "t.mp4").string();
   auto expectError = [&](const std::string& arguments, const std::string& message) {
     CommandResult r = ecoforest("timelapse " + arguments);

@@ -71,7 +71,6 @@ class ForestRenderer {
   void draw() const;         // the colour pass of what prepare() chose
   void drawShadows() const;  // the shadow casters into the bound depth target
 
-  const TreeLibrary& library() const { return library_; }
   // The type whose impostor draws `type`: the variants of a species and age class share
   // the first one's. Below the impostor switch (100 px) the variants differ by a few pixels
   // while each tree's own yaw already picks a different frame; sharing bakes a third.

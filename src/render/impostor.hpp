@@ -1,9 +1,10 @@
 // Hemi-octahedral impostors (an octahedral impostor over the upper hemisphere; Tankard's
-// billboards, 000_...txt section 3.5, taken to many directions). Each tree type is rendered
-// from frames x frames directions spread over the hemisphere by the hemi-octahedral map into
-// an atlas of albedo and normal tiles; a far tree is a quad facing the frame direction
-// nearest to the direction it is seen from, lit per pixel from the baked normals, so it
-// agrees with the mesh under any sun. The same functions exist in shaders/common.glsl.
+// billboards, 000_...txt section 3.5, taken to many directions). Each species and age class
+// is rendered from frames x frames directions spread over the hemisphere by the
+// hemi-octahedral map into an atlas of albedo and normal tiles; a far tree is a point sprite
+// showing the frame whose direction is nearest to the direction it is seen from, lit per
+// pixel from the baked normals, so it agrees with the mesh under any sun. hemiOctEncode
+// exists in shaders/common.glsl too.
 #pragma once
 
 #include <glm/vec2.hpp>

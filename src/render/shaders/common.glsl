@@ -89,20 +89,8 @@ bool ditherKeeps(vec2 range) {
 }
 #endif
 
-// Hemi-octahedral impostor frames (impostor.hpp): unit direction (y >= 0) <-> [0, 1]^2.
+// Hemi-octahedral impostor frames (impostor.hpp): unit direction (y >= 0) -> [0, 1]^2.
 vec2 hemiOctEncode(vec3 d) {
   d /= abs(d.x) + abs(d.y) + abs(d.z);
   return vec2(d.x + d.z, d.x - d.z) * 0.5 + 0.5;
-}
-vec3 hemiOctDecode(vec2 uv) {
-  vec2 e = uv * 2.0 - 1.0;
-  vec3 d = vec3((e.x + e.y) * 0.5, 0.0, (e.x - e.y) * 0.5);
-  d.y = 1.0 - abs(d.x) - abs(d.z);
-  return normalize(d);
-}
-// The axes of the orthographic camera that baked the frame seen from direction `f`.
-void frameAxes(vec3 f, out vec3 right, out vec3 up) {
-  vec3 reference = abs(f.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, -1.0);
-  right = normalize(cross(reference, f));
-  up = cross(f, right);
 }

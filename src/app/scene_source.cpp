@@ -74,7 +74,7 @@ SceneSource openSceneSource(const std::string& runOrScenario) {
 }
 
 void SceneSource::requireSnapshot(int year) const {
-  if (run) readSnapshotYearCheck(*run, year);
+  if (run) requireSnapshotYear(*run, year);
 }
 
 void SceneSource::buildLibrary(const LibrarySettings& settings) {

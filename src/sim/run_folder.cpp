@@ -65,7 +65,7 @@ RunFolder openRunFolder(const std::filesystem::path& dir) {
   return run;
 }
 
-void readSnapshotYearCheck(const RunFolder& run, int year) {
+void requireSnapshotYear(const RunFolder& run, int year) {
   if (!std::binary_search(run.snapshotYears.begin(), run.snapshotYears.end(), year)) {
     std::string years;
     for (int y : run.snapshotYears) years += (years.empty() ? "" : ", ") + std::to_string(y);
@@ -76,7 +76,7 @@ void readSnapshotYearCheck(const RunFolder& run, int year) {
 }
 
 TreeSnapshot readSnapshot(const RunFolder& run, int year) {
-  readSnapshotYearCheck(run, year);
+  requireSnapshotYear(run, year);
   TreeSnapshot snapshot = readTreesCsv(run.dir / "trees" / fmt::format("year_{:04d}.csv", year));
   snapshot.year = year;
   return snapshot;

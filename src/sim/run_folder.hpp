@@ -37,7 +37,7 @@ struct TreeSnapshot {
 };
 
 // An InputError listing the years there are unless the run has a snapshot of `year`.
-void readSnapshotYearCheck(const RunFolder& run, int year);
+void requireSnapshotYear(const RunFolder& run, int year);
 // The snapshot of `year`; an InputError lists the years there are when it is not one.
 TreeSnapshot readSnapshot(const RunFolder& run, int year);
 // Parses one trees CSV (the header writeTreesCsv writes); errors give the file and line.

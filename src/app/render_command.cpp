@@ -130,10 +130,10 @@ void runRender(const RenderArgs& args) {
   if (args.year && !source.run)
     throw InputError({"--year", 0, ""}, "a scenario has no years: render a run folder");
   source.requireSnapshot(year);
+  checkWritable(args.out);
   std::optional<Field> overlay;
   if (!args.view.overlay.empty()) overlay = source.overlay(args.view.overlay);
   const Camera camera = cameraFrom(args.view, source.terrain);
-  checkWritable(args.out);
   if (source.run || args.demoTrees > 0) source.buildLibrary();
   const Forest forest = source.forestOf(year, args.demoTrees);
 
@@ -144,7 +144,7 @@ void runRender(const RenderArgs& args) {
   SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
                          source.library.get());
   if (overlay) renderer.terrain().setOverlay(args.view.overlay, *overlay);
-  RenderTarget target = RenderTarget::create(size->first, size->second, false, GL_SRGB8_ALPHA8);
+  RenderTarget target = RenderTarget::create(size->first, size->second);
   const double rendererMs = millisecondsSince(rendererStart);
   const FrameStats stats =
       renderer.render(&forest, camera, renderOptionsFrom(args.view, source.scenario), target);

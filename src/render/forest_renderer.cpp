@@ -167,7 +167,7 @@ int ForestRenderer::impostorSource(int type) const {
 void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;
-  RenderTarget target = RenderTarget::create(size, size, true, GL_SRGB8_ALPHA8);
+  RenderTarget target = RenderTarget::create(size, size, true);
   const Instance identity{glm::vec4(0.0f), glm::vec4(1.0f, 1.0f, 0.0f, 0.0f), glm::vec4(1.0f)};
   glNamedBufferData(instances_.id(), sizeof(Instance), &identity, GL_DYNAMIC_DRAW);
   instanceCapacity_ = 1;

@@ -68,7 +68,7 @@ GlName makeTexture(const Image& image, bool repeat) {
   return texture;
 }
 
-RenderTarget RenderTarget::create(int width, int height, bool extraColor, GLenum colorFormat) {
+RenderTarget RenderTarget::create(int width, int height, bool extraColor) {
   RenderTarget t;
   t.width = width;
   t.height = height;
@@ -80,7 +80,7 @@ RenderTarget RenderTarget::create(int width, int height, bool extraColor, GLenum
     glNamedFramebufferTexture(id, attachment, texture.id(), 0);
     return texture;
   };
-  t.color = attach(colorFormat, GL_COLOR_ATTACHMENT0);
+  t.color = attach(GL_SRGB8_ALPHA8, GL_COLOR_ATTACHMENT0);
   if (extraColor) {
     t.extraColor = attach(GL_RGBA8, GL_COLOR_ATTACHMENT1);
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};

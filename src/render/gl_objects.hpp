@@ -54,7 +54,8 @@ GlName makeTextureStorage(GLenum format, int width, int height, int levels = 1,
 // An RGBA8 texture with mipmaps from an image (row 0 at the top, as glTF's uv expects).
 GlName makeTexture(const Image& image, bool repeat);
 
-// Colour (RGBA8, or RGBA16F when hdr) plus depth, multisampled when samples > 1.
+// sRGB colour plus depth. The shaders write linear colour, which OpenGL encodes as sRGB
+// (GL_FRAMEBUFFER_SRGB), so every target holds what a PNG or a screen expects.
 struct RenderTarget {
   int width = 0, height = 0;
   GlName framebuffer;
@@ -62,8 +63,8 @@ struct RenderTarget {
   GlName extraColor;  // second colour attachment, present when asked for (impostor normals)
   GlName depth;
 
-  static RenderTarget create(int width, int height, bool extraColor = false,
-                             GLenum colorFormat = GL_RGBA8);
+  // extraColor: a linear RGBA8 second attachment (the impostors' normals).
+  static RenderTarget create(int width, int height, bool extraColor = false);
   void bind() const;
 };
 

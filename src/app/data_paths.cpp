@@ -18,15 +18,16 @@ std::filesystem::path dataDirectory() {
 namespace {
 
 std::filesystem::path resolveNamed(const std::string& nameOrPath,
-                                   const std::filesystem::path& folder, const char* what) {
+                                   const std::filesystem::path& folder, const char* what,
+                                   const std::string& extension = ".toml") {
   std::filesystem::path given(nameOrPath);
-  if (nameOrPath.find('/') != std::string::npos || given.extension() == ".toml") return given;
-  std::filesystem::path file = folder / (nameOrPath + ".toml");
+  if (nameOrPath.find('/') != std::string::npos || given.extension() == extension) return given;
+  std::filesystem::path file = folder / (nameOrPath + extension);
   if (std::filesystem::exists(file)) return file;
   std::vector<std::string> known;
   std::error_code ignored;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ignored))
-    if (entry.path().extension() == ".toml") known.push_back(entry.path().stem().string());
+    if (entry.path().extension() == extension) known.push_back(entry.path().stem().string());
   std::sort(known.begin(), known.end());
   std::string list;
   for (const std::string& name : known) list += (list.empty() ? "" : ", ") + name;
@@ -43,6 +44,10 @@ std::filesystem::path resolveSpecies(const std::string& nameOrPath) {
 
 std::filesystem::path resolveScenario(const std::string& nameOrPath) {
   return resolveNamed(nameOrPath, dataDirectory(), "scenario");
+}
+
+std::filesystem::path resolveLSystem(const std::string& nameOrPath) {
+  return resolveNamed(nameOrPath, dataDirectory() / "lsystems", "L-system", ".lsys");
 }
 
 }  // namespace eco

@@ -14,5 +14,7 @@ std::filesystem::path dataDirectory();
 std::filesystem::path resolveSpecies(const std::string& nameOrPath);
 // "valley" -> <data>/valley.toml, likewise.
 std::filesystem::path resolveScenario(const std::string& nameOrPath);
+// "abop_1_24a" -> <data>/lsystems/abop_1_24a.lsys, likewise.
+std::filesystem::path resolveLSystem(const std::string& nameOrPath);
 
 }  // namespace eco

@@ -6,6 +6,7 @@
 
 #include "app/conditions_command.hpp"
 #include "app/export_command.hpp"
+#include "app/lsystem_command.hpp"
 #include "app/render_command.hpp"
 #include "app/run_command.hpp"
 #include "app/timelapse_command.hpp"
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("ecoforest ") + ECOFOREST_VERSION);
   app.require_subcommand(1);
   eco::addTreeCommand(app);
+  eco::addLSystemCommand(app);
   eco::addConditionsCommand(app);
   eco::addTerrainCommand(app);
   eco::addRunCommand(app);

@@ -9,8 +9,8 @@
 
 #include "app/data_paths.hpp"
 #include "model/lod.hpp"
-#include "model/strand_model.hpp"
 #include "model/tree_export.hpp"
+#include "model/tree_generator.hpp"
 
 namespace eco {
 namespace {
@@ -42,7 +42,7 @@ void runTree(const TreeArguments& args) {
   const int lod = args.lod.value_or(species.strand.lod);
 
   auto start = Clock::now();
-  TreeSkeleton skeleton = buildStrandTree(species, options);
+  TreeSkeleton skeleton = buildTree(species, options);
   TreeMesh mesh = buildLod(skeleton, species, lod, args.sides);
   double buildMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 
@@ -55,10 +55,13 @@ void runTree(const TreeArguments& args) {
       triangles["lod" + std::to_string(level)] =
           level == lod ? mesh.triangleCount()
                        : buildLod(skeleton, species, level, args.sides).triangleCount();
+    const bool strand = species.generator == TreeGenerator::Strand;
     nlohmann::ordered_json json{{"species", species.name},
+                                {"generator", strand ? "strand" : "lsystem"},
                                 {"seed", args.seed},
                                 {"age", args.age},
-                                {"strands", species.strand.strands},
+                                {"strands", strand ? nlohmann::ordered_json(species.strand.strands)
+                                                   : nlohmann::ordered_json(nullptr)},
                                 {"segments", m.segments},
                                 {"terminal_segments", m.terminalSegments},
                                 {"leaves", skeleton.leaves.size()},

@@ -7,6 +7,7 @@ std::string formatInputError(const SourceLocation& where, const std::string& mes
   std::ostringstream text;
   text << (where.file.empty() ? "<input>" : where.file);
   if (where.line > 0) text << ":" << where.line;
+  if (where.line > 0 && where.column > 0) text << ":" << where.column;
   text << ": ";
   if (!where.key.empty()) text << where.key << ": ";
   text << message;

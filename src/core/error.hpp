@@ -5,18 +5,25 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace eco {
 
 // Where in a user's file something is. line 0 means "the file as a whole".
 struct SourceLocation {
+  SourceLocation() = default;
+  SourceLocation(std::string file, int line = 0, std::string key = {}, int column = 0)
+      : file(std::move(file)), line(line), key(std::move(key)), column(column) {}
+
   std::string file;
   int line = 0;
   std::string key;  // dotted key path, e.g. "strand.local.ks_g"; may be empty
+  int column = 0;   // 1-based character in the line (grammar files); 0 when not known
 };
 
 // Bad input: a missing or malformed file, an unknown key, a value out of range.
-// what() reads "FILE:LINE: KEY: message"; the command line prints it and exits with code 2.
+// what() reads "FILE:LINE[:COLUMN]: KEY: message"; the command line prints it and exits with
+// code 2.
 class InputError : public std::runtime_error {
  public:
   InputError(SourceLocation where, const std::string& message);

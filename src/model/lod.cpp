@@ -215,7 +215,9 @@ void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod,
   }
   if (lod == 1) {
     MeshOptions options = lod0Options(species, std::min(5, maxSides));
-    options.minStrands = kLod1MinStrands;
+    // The strand model's thin twigs go; an L-system's segments are whole internodes that
+    // carry its leaves, so dropping them would leave the leaves floating.
+    options.minStrands = species.generator == TreeGenerator::Strand ? kLod1MinStrands : 1;
     options.leaves = false;
     mesh = meshTree(skeleton, options);
     MeshPart clusters{MaterialKind::LeafCluster, {}, {}, {}, {}};

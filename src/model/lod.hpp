@@ -1,8 +1,9 @@
 // Levels of detail of one tree (billboards and impostors come with the renderer):
 //   LOD0  the full mesh: every segment, every leaf;
-//   LOD1  fewer ring sides, twigs of fewer than 4 strands dropped, leaves gathered into
-//         clusters of crossed cards textured with many small leaves, keeping the visible
-//         leaf area (card area times the opaque fraction of its texture);
+//   LOD1  fewer ring sides, twigs of fewer than 4 strands dropped (strand model only),
+//         leaves gathered into clusters of crossed cards textured with many small leaves,
+//         keeping the visible leaf area (card area times the opaque fraction of its
+//         texture);
 //   LOD2  a crown-volume proxy of a few hundred triangles, a star-shaped hull around the
 //         leaves that keeps the silhouette, on a low-poly stem.
 #pragma once

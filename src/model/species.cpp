@@ -1,6 +1,7 @@
 #include "model/species.hpp"
 
 #include "core/toml_reader.hpp"
+#include "model/lsystem_parser.hpp"
 
 namespace eco {
 namespace {
@@ -40,6 +41,46 @@ LocalGraphs parseGraphs(TomlTable& local) {
   return g;
 }
 
+void parseStrand(TomlTable& root, StrandParams& p) {
+  std::optional<TomlTable> strand = root.table("strand");
+  if (!strand) root.fail("strand", "missing required table [strand]");
+
+  // The paper's slider stops at 5000, yet its own pine has S = 6000: the slider bound is
+  // not a validity limit. 100000 keeps a typo from exhausting memory.
+  p.strands = static_cast<int>(strand->integer("strands", {}, {1, 100000}));
+  p.trunkLength_m = strand->number("trunk_length_m", {}, {0.0, 10.0});
+  p.kd = strand->number("kd", {}, {0.0, 0.05});
+  p.phyllotaxis_deg = strand->number("phyllotaxis_deg", {}, {0.0, 360.0});
+  p.kc = strand->number("kc", {}, {0.0, 1.0});
+  p.leafSize_m = strand->number("leaf_size_m", {}, {0.0, 0.3});
+  p.leafDensity = strand->number("leaf_density", {}, {0.0, 30.0});
+  p.leafDistribution = parseDistribution(*strand, "leaf_distribution");
+  p.windDirected = strand->number("wind_directed_wg", 0.0, {0.0, 10.0});
+  p.windUndirected = strand->number("wind_undirected_ws", 0.0, {0.0, 10.0});
+  auto w = strand->numbers("wind_direction", 3, std::vector<double>{0.0, 1.0, 0.0});
+  p.windDirection = glm::dvec3(w[0], w[1], w[2]);
+  p.flexibility = strand->number("flexibility_kf", 1.0, {0.0, 1.0});
+  p.lod = static_cast<int>(strand->integer("lod", 0, {0, 2}));
+  std::optional<TomlTable> local = strand->table("local");
+  if (!local) strand->fail("local", "missing required table [strand.local]");
+  p.graphs = parseGraphs(*local);
+  strand->finish();
+}
+
+LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& speciesFile) {
+  LSystemTree tree;
+  tree.grammarFile = speciesFile.parent_path() / table.string("file");
+  if (!std::filesystem::is_regular_file(tree.grammarFile))
+    table.fail("file", "grammar file '" + tree.grammarFile.string() + "' not found");
+  auto grammar = std::make_shared<LSystem>(loadLSystem(tree.grammarFile));
+  tree.iterations =
+      static_cast<int>(table.integer("iterations", grammar->iterations, {1, kMaxIterations}));
+  tree.unit_m = table.number("unit_m", grammar->turtle.unit_m, {1e-6, 1e6});
+  tree.grammar = std::move(grammar);
+  table.finish();
+  return tree;
+}
+
 }  // namespace
 
 const char* toString(LeafDistribution distribution) {
@@ -66,29 +107,17 @@ Species loadSpecies(const std::filesystem::path& file) {
   species.name = root.string("name");
   species.latinName = root.string("latin_name", "");
 
-  std::optional<TomlTable> strand = root.table("strand");
-  if (!strand) root.fail("strand", "missing required table [strand]");
-  StrandParams& p = species.strand;
-  // The paper's slider stops at 5000, yet its own pine has S = 6000: the slider bound is
-  // not a validity limit. 100000 keeps a typo from exhausting memory.
-  p.strands = static_cast<int>(strand->integer("strands", {}, {1, 100000}));
-  p.trunkLength_m = strand->number("trunk_length_m", {}, {0.0, 10.0});
-  p.kd = strand->number("kd", {}, {0.0, 0.05});
-  p.phyllotaxis_deg = strand->number("phyllotaxis_deg", {}, {0.0, 360.0});
-  p.kc = strand->number("kc", {}, {0.0, 1.0});
-  p.leafSize_m = strand->number("leaf_size_m", {}, {0.0, 0.3});
-  p.leafDensity = strand->number("leaf_density", {}, {0.0, 30.0});
-  p.leafDistribution = parseDistribution(*strand, "leaf_distribution");
-  p.windDirected = strand->number("wind_directed_wg", 0.0, {0.0, 10.0});
-  p.windUndirected = strand->number("wind_undirected_ws", 0.0, {0.0, 10.0});
-  auto w = strand->numbers("wind_direction", 3, std::vector<double>{0.0, 1.0, 0.0});
-  p.windDirection = glm::dvec3(w[0], w[1], w[2]);
-  p.flexibility = strand->number("flexibility_kf", 1.0, {0.0, 1.0});
-  p.lod = static_cast<int>(strand->integer("lod", 0, {0, 2}));
-  std::optional<TomlTable> local = strand->table("local");
-  if (!local) strand->fail("local", "missing required table [strand.local]");
-  p.graphs = parseGraphs(*local);
-  strand->finish();
+  const std::string generator = root.string("generator", "strand");
+  if (generator == "lsystem") {
+    species.generator = TreeGenerator::LSystem;
+    std::optional<TomlTable> table = root.table("lsystem");
+    if (!table) root.fail("lsystem", "generator = \"lsystem\" needs a table [lsystem]");
+    species.lsystem = parseLSystemTree(*table, file);
+  } else if (generator != "strand") {
+    root.fail("generator", "unknown generator '" + generator + "' (expected strand or lsystem)");
+  } else {
+    parseStrand(root, species.strand);
+  }
 
   if (std::optional<TomlTable> variation = root.table("variation")) {
     Variation& v = species.variation;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -63,11 +64,27 @@ struct Appearance {
   double barkRoughness = 0.5;  // 0 smooth (beech) .. 1 deeply furrowed (old pine)
 };
 
+// Which generator builds the species' trees (DESIGN.md: every generator makes a
+// TreeSkeleton).
+enum class TreeGenerator { Strand, LSystem };
+
+struct LSystem;
+
+// generator = "lsystem": an RL-system grammar (docs/lsystems.md) instead of [strand].
+struct LSystemTree {
+  std::filesystem::path grammarFile;
+  std::shared_ptr<const LSystem> grammar;  // read with the species, so errors come early
+  int iterations = 5;                      // derivation steps of a mature tree (age 1)
+  double unit_m = 1.0;                     // metres per turtle unit
+};
+
 struct Species {
   std::string name;
   std::string latinName;
   std::filesystem::path file;
-  StrandParams strand;
+  TreeGenerator generator = TreeGenerator::Strand;
+  StrandParams strand;  // the strand model's parameters; defaults for L-system species
+  LSystemTree lsystem;
   Variation variation;
   Appearance appearance;
   std::optional<Ecology> ecology;  // [ecology]: needed to plant the species in an ecosystem

@@ -34,25 +34,34 @@ Bounds boundsOf(const TreeMesh& mesh) {
   return b;
 }
 
-void exportTree(const TreeMesh& mesh, const Species& species, const std::filesystem::path& file) {
+namespace {
+
+using TreeWriter = void (*)(const TreeMesh&, const std::vector<Material>&,
+                            const std::filesystem::path&);
+
+TreeWriter writerFor(const std::filesystem::path& file) {
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  using Writer =
-      void (*)(const TreeMesh&, const std::vector<Material>&, const std::filesystem::path&);
-  Writer writer = nullptr;
-  if (extension == ".obj")
-    writer = writeObj;
-  else if (extension == ".gltf" || extension == ".glb")
-    writer = writeGltf;
-  else if (extension == ".pov")
-    writer = writePov;
-  else if (extension == ".wrl")
-    writer = writeVrml;
-  else
-    throw InputError({file.string(), 0, ""}, "unknown output format '" + extension +
-                                                 "' (expected .obj, .gltf, .glb, .pov or .wrl)");
-  writer(mesh, materialsFor(mesh, species), file);
+  if (extension == ".obj") return writeObj;
+  if (extension == ".gltf" || extension == ".glb") return writeGltf;
+  if (extension == ".pov") return writePov;
+  if (extension == ".wrl") return writeVrml;
+  throw InputError({file.string(), 0, ""}, "unknown output format '" + extension +
+                                               "' (expected .obj, .gltf, .glb, .pov or .wrl)");
+}
+
+}  // namespace
+
+void checkTreeExportPath(const std::filesystem::path& file) {
+  writerFor(file);
+  const std::filesystem::path folder = file.parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder))
+    throw InputError({file.string(), 0, ""}, "the output folder does not exist");
+}
+
+void exportTree(const TreeMesh& mesh, const Species& species, const std::filesystem::path& file) {
+  writerFor(file)(mesh, materialsFor(mesh, species), file);
 }
 
 }  // namespace eco

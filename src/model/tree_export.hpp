@@ -27,6 +27,9 @@ void writeVrml(const TreeMesh& mesh, const std::vector<Material>& materials,
 // Chooses the writer by extension (.obj .gltf .glb .pov .wrl); another extension is an
 // InputError naming the file.
 void exportTree(const TreeMesh& mesh, const Species& species, const std::filesystem::path& file);
+// The checks exportTree would fail on (format, output folder), for commands to run before
+// any slow work.
+void checkTreeExportPath(const std::filesystem::path& file);
 
 // STEM_MATERIAL.png beside `file`, for formats that reference textures by name.
 std::filesystem::path textureFileFor(const std::filesystem::path& file, const Material& material);

@@ -50,7 +50,7 @@ TreeLibrary::TreeLibrary(std::vector<Species> species, const LibrarySettings& se
     const Species& s = species_[type.species];
     type.meshes = buildWindLods(s, type.seed, type.age);
     const SkeletonMeasures measures =
-        measure(buildStrandTree(s, windBuildOptions(s, type.seed, type.age, {}, 0.0)));
+        measure(buildTree(s, windBuildOptions(s, type.seed, type.age, {}, 0.0)));
     type.height_m = static_cast<float>(measures.height_m);
     type.crownRadius_m = static_cast<float>(measures.crownRadius_m);
     type.bounds = boundingSphere(type.meshes);

@@ -21,7 +21,7 @@
 #include "model/lod.hpp"
 #include "model/mesh.hpp"
 #include "model/species.hpp"
-#include "model/strand_model.hpp"
+#include "model/tree_generator.hpp"
 
 namespace eco {
 

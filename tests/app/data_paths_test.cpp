@@ -24,8 +24,15 @@ TEST(DataPaths, UnknownNameListsTheKnownOnes) {
   } catch (const InputError& error) {
     std::string text = error.what();
     EXPECT_NE(text.find("baobab: unknown species"), std::string::npos) << text;
-    EXPECT_NE(text.find("beech, maple, pine, shrub"), std::string::npos) << text;
+    EXPECT_NE(text.find("beech, birch, maple, pine, shrub"), std::string::npos) << text;
   }
+}
+
+TEST(DataPaths, LSystemNamesFindTheShippedGrammars) {
+  unsetenv("ECOFOREST_DATA_DIR");
+  EXPECT_EQ(resolveLSystem("abop_1_24a"), dataDirectory() / "lsystems" / "abop_1_24a.lsys");
+  EXPECT_EQ(resolveLSystem("mine.lsys"), std::filesystem::path("mine.lsys"));
+  EXPECT_THROW(resolveLSystem("no_such_grammar"), InputError);
 }
 
 TEST(DataPaths, EnvironmentOverridesTheDataFolder) {

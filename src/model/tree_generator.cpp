@@ -1,0 +1,53 @@
+#include "model/tree_generator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "model/lsystem_deriver.hpp"
+#include "model/lsystem_turtle.hpp"
+
+namespace eco {
+
+int lsystemIterationsForAge(int matureIterations, double age) {
+  const double scaled = std::clamp(age, 0.0, 1.0) * matureIterations;
+  return std::max(1, static_cast<int>(std::lround(scaled)));
+}
+
+void scaleSkeleton(TreeSkeleton& skeleton, float metresPerUnit) {
+  for (BranchSegment& s : skeleton.segments) {
+    s.start *= metresPerUnit;
+    s.length_m *= metresPerUnit;
+    s.startRadius_m *= metresPerUnit;
+    s.endRadius_m *= metresPerUnit;
+  }
+  for (Leaf& leaf : skeleton.leaves) {
+    leaf.position *= metresPerUnit;
+    leaf.size_m *= metresPerUnit;
+  }
+}
+
+void buildTreeInto(const Species& species, const TreeBuildOptions& options, TreeSkeleton& out) {
+  if (species.generator == TreeGenerator::Strand) {
+    buildStrandTreeInto(species, options, out);
+    return;
+  }
+  // RL-system trees have no wind model of their own: the wind options are ignored
+  // (docs/lsystems.md), so every wind pose is the rest pose.
+  ECO_ASSERT(species.lsystem.grammar, "species=" << species.name);
+  const LSystem& grammar = *species.lsystem.grammar;
+  DeriveOptions derive;
+  derive.seed = options.seed;
+  derive.iterations = lsystemIterationsForAge(species.lsystem.iterations, options.age);
+  out = interpretTree(grammar, eco::derive(grammar, derive));
+  scaleSkeleton(out, static_cast<float>(species.lsystem.unit_m));
+  if (!options.leaves) out.leaves.clear();
+}
+
+TreeSkeleton buildTree(const Species& species, const TreeBuildOptions& options) {
+  TreeSkeleton skeleton;
+  buildTreeInto(species, options, skeleton);
+  return skeleton;
+}
+
+}  // namespace eco

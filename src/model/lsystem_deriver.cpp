@@ -85,6 +85,10 @@ class StepDeriver {
     const Module& m = s.modules[i];
     if (m.body != kNoBody) return deriveControl(s, m, key, out);
     const std::vector<std::uint32_t>& rules = system_.rulesBySymbol[m.symbol];
+    if (rules.empty() && m.paramCount == 0) {  // the commonest case: a bare turtle symbol
+      out.modules.push_back({m.symbol, 0, static_cast<std::uint32_t>(out.params.size()), kNoBody});
+      return;
+    }
     if (!rules.empty()) {
       const VariableDeviates deviates(system_.variables, key);
       env_.deviates = &deviates;
@@ -240,10 +244,10 @@ class StepDeriver {
 }
 
 // Moves the chunks' strings into one, rebasing parameter and body indices.
-void concatenate(std::vector<ModuleString>& parts, ModuleString& out) {
-  std::vector<std::size_t> moduleStart(parts.size() + 1, 0), paramStart(parts.size() + 1, 0),
-      bodyStart(parts.size() + 1, 0);
-  for (std::size_t c = 0; c < parts.size(); ++c) {
+void concatenate(std::vector<ModuleString>& parts, std::size_t count, ModuleString& out) {
+  std::vector<std::size_t> moduleStart(count + 1, 0), paramStart(count + 1, 0),
+      bodyStart(count + 1, 0);
+  for (std::size_t c = 0; c < count; ++c) {
     moduleStart[c + 1] = moduleStart[c] + parts[c].modules.size();
     paramStart[c + 1] = paramStart[c] + parts[c].params.size();
     bodyStart[c + 1] = bodyStart[c] + parts[c].bodies.size();
@@ -251,7 +255,7 @@ void concatenate(std::vector<ModuleString>& parts, ModuleString& out) {
   out.modules.resize(moduleStart.back());
   out.params.resize(paramStart.back());
   out.bodies.resize(bodyStart.back());
-  tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t c) {
+  tbb::parallel_for(std::size_t{0}, count, [&](std::size_t c) {
     const ModuleString& part = parts[c];
     const auto paramBase = static_cast<std::uint32_t>(paramStart[c]);
     const auto bodyBase = static_cast<std::uint32_t>(bodyStart[c]);
@@ -279,20 +283,29 @@ ModuleString instantiateAxiom(const LSystem& system, std::uint64_t seed, int max
   return axiom;
 }
 
-void deriveStep(const LSystem& system, const ModuleString& in, ModuleString& out, int numIt,
-                int maxIt, std::uint64_t seed, std::size_t maxModules) {
+namespace {
+
+// One step into `out`; `parts` holds the chunks' strings and keeps their memory from step
+// to step; `growth` (output per input module of the last step) sizes the buffers.
+void deriveStepWith(const LSystem& system, const ModuleString& in, ModuleString& out, int numIt,
+                    int maxIt, std::uint64_t seed, std::size_t maxModules, double growth,
+                    std::vector<ModuleString>& parts) {
   out.clear();
   const std::vector<std::int64_t> brackets =
       system.usesContext ? matchBrackets(in) : std::vector<std::int64_t>{};
   std::atomic<std::size_t> produced{0};
   const std::size_t chunks = (in.size() + kChunk - 1) / kChunk;
+  auto expected = [&](std::size_t inputs) {
+    return std::min(maxModules, static_cast<std::size_t>(static_cast<double>(inputs) * growth));
+  };
   if (chunks <= 1) {
+    out.modules.reserve(expected(in.size()));
     StepDeriver deriver(system, in, numIt, maxIt, seed, brackets, produced, maxModules);
     if (!deriver.derive(0, in.size(), out))
       reportExplosion(system, numIt, maxModules, deriver.modulesByRule());
     return;
   }
-  std::vector<ModuleString> parts(chunks);
+  if (parts.size() < chunks) parts.resize(chunks);
   std::vector<std::vector<std::size_t>> byRule(chunks);
   std::atomic<bool> exploded{false};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1),
@@ -302,9 +315,10 @@ void deriveStep(const LSystem& system, const ModuleString& in, ModuleString& out
                         StepDeriver deriver(system, in, numIt, maxIt, seed, brackets, produced,
                                             maxModules);
                         const std::size_t begin = c * kChunk;
-                        parts[c].modules.reserve(kChunk * 2);
-                        if (!deriver.derive(begin, std::min(in.size(), begin + kChunk), parts[c]))
-                          exploded = true;
+                        const std::size_t end = std::min(in.size(), begin + kChunk);
+                        parts[c].clear();
+                        parts[c].modules.reserve(expected(end - begin));
+                        if (!deriver.derive(begin, end, parts[c])) exploded = true;
                         byRule[c] = deriver.modulesByRule();
                       }
                     });
@@ -314,7 +328,15 @@ void deriveStep(const LSystem& system, const ModuleString& in, ModuleString& out
       for (std::size_t r = 0; r < counts.size(); ++r) total[r] += counts[r];
     reportExplosion(system, numIt, maxModules, total);
   }
-  concatenate(parts, out);
+  concatenate(parts, chunks, out);
+}
+
+}  // namespace
+
+void deriveStep(const LSystem& system, const ModuleString& in, ModuleString& out, int numIt,
+                int maxIt, std::uint64_t seed, std::size_t maxModules) {
+  std::vector<ModuleString> parts;
+  deriveStepWith(system, in, out, numIt, maxIt, seed, maxModules, 2.0, parts);
 }
 
 bool applyPruneModules(ModuleString& string) {
@@ -347,9 +369,14 @@ ModuleString derive(const LSystem& system, const DeriveOptions& options, DeriveS
   const std::size_t maxModules = options.maxModules.value_or(system.maxModules);
   ModuleString current = instantiateAxiom(system, options.seed, iterations);
   ModuleString next;
+  std::vector<ModuleString> parts;
+  double growth = 2.0;
   if (stats) *stats = {};
   for (int step = 1; step <= iterations; ++step) {
-    deriveStep(system, current, next, step, iterations, options.seed, maxModules);
+    deriveStepWith(system, current, next, step, iterations, options.seed, maxModules, growth,
+                   parts);
+    if (!current.modules.empty())
+      growth = 1.05 * static_cast<double>(next.size()) / static_cast<double>(current.size());
     if (stats) {
       ++stats->steps;
       stats->modulesRewritten += current.size();

@@ -6,6 +6,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "core/error.hpp"
 #include "core/random.hpp"
@@ -298,7 +299,9 @@ void deriveStepWith(const LSystem& system, const ModuleString& in, ModuleString&
   auto expected = [&](std::size_t inputs) {
     return std::min(maxModules, static_cast<std::size_t>(static_cast<double>(inputs) * growth));
   };
-  if (chunks <= 1) {
+  // One thread gains nothing from chunks and would copy every module twice. The result
+  // is the same either way: deviates are keyed by module position, not by chunk.
+  if (chunks <= 1 || tbb::this_task_arena::max_concurrency() == 1) {
     out.modules.reserve(expected(in.size()));
     StepDeriver deriver(system, in, numIt, maxIt, seed, brackets, produced, maxModules);
     if (!deriver.derive(0, in.size(), out))

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
@@ -44,6 +45,15 @@ inline glm::mat3 rotationAbout(glm::vec3 axis, double degrees) {
                    t * x * y - s * z, t * y * y + c,     t * y * z + s * x,
                    t * x * z + s * y, t * y * z - s * x, t * z * z + c);
   // clang-format on
+}
+
+// Rotation about y x target, which turns the branch axis y toward the target direction
+// (given in the branch frame) by `degrees`.
+inline glm::mat3 tiltToward(glm::vec3 targetLocal, double degrees) {
+  glm::vec3 axis = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), targetLocal);
+  float len = glm::length(axis);
+  if (len < 1e-6f || degrees == 0.0) return glm::mat3(1.0f);
+  return rotationAbout(axis / len, degrees);
 }
 
 }  // namespace eco

@@ -67,7 +67,10 @@ void parseStrand(TomlTable& root, StrandParams& p) {
   strand->finish();
 }
 
-LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& speciesFile) {
+// Also reads EcoMod's wind parameters into `wind`, which the skeleton wind applies to
+// L-system trees.
+LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& speciesFile,
+                             StrandParams& wind) {
   LSystemTree tree;
   tree.grammarFile = speciesFile.parent_path() / table.string("file");
   if (!std::filesystem::is_regular_file(tree.grammarFile))
@@ -76,6 +79,11 @@ LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& spec
   tree.iterations =
       static_cast<int>(table.integer("iterations", grammar->iterations, {1, kMaxIterations}));
   tree.unit_m = table.number("unit_m", grammar->turtle.unit_m, {1e-6, 1e6});
+  wind.windDirected = table.number("wind_directed_wg", 0.0, {0.0, 10.0});
+  wind.windUndirected = table.number("wind_undirected_ws", 0.0, {0.0, 10.0});
+  auto w = table.numbers("wind_direction", 3, std::vector<double>{0.0, 1.0, 0.0});
+  wind.windDirection = glm::dvec3(w[0], w[1], w[2]);
+  wind.flexibility = table.number("flexibility_kf", 1.0, {0.0, 1.0});
   tree.grammar = std::move(grammar);
   table.finish();
   return tree;
@@ -112,7 +120,7 @@ Species loadSpecies(const std::filesystem::path& file) {
     species.generator = TreeGenerator::LSystem;
     std::optional<TomlTable> table = root.table("lsystem");
     if (!table) root.fail("lsystem", "generator = \"lsystem\" needs a table [lsystem]");
-    species.lsystem = parseLSystemTree(*table, file);
+    species.lsystem = parseLSystemTree(*table, file, species.strand);
   } else if (generator != "strand") {
     root.fail("generator", "unknown generator '" + generator + "' (expected strand or lsystem)");
   } else {

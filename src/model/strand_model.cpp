@@ -96,14 +96,6 @@ std::vector<Node> splitStrands(const Species& species, std::uint64_t seed) {
   return nodes;
 }
 
-glm::mat3 tiltToward(glm::vec3 targetLocal, double degrees) {
-  // Rotation about y x target, which turns the branch axis y toward the target direction.
-  glm::vec3 axis = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), targetLocal);
-  float len = glm::length(axis);
-  if (len < 1e-6f || degrees == 0.0) return glm::mat3(1.0f);
-  return rotationAbout(axis / len, degrees);
-}
-
 }  // namespace
 
 glm::dvec3 windTowardFromBearing(double fromDeg) {

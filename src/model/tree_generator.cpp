@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "model/lsystem_deriver.hpp"
 #include "model/lsystem_turtle.hpp"
+#include "model/skeleton_wind.hpp"
 
 namespace eco {
 
@@ -32,8 +33,6 @@ void buildTreeInto(const Species& species, const TreeBuildOptions& options, Tree
     buildStrandTreeInto(species, options, out);
     return;
   }
-  // RL-system trees have no wind model of their own: the wind options are ignored
-  // (docs/lsystems.md), so every wind pose is the rest pose.
   ECO_ASSERT(species.lsystem.grammar, "species=" << species.name);
   const LSystem& grammar = *species.lsystem.grammar;
   DeriveOptions derive;
@@ -42,6 +41,16 @@ void buildTreeInto(const Species& species, const TreeBuildOptions& options, Tree
   out = interpretTree(grammar, eco::derive(grammar, derive));
   scaleSkeleton(out, static_cast<float>(species.lsystem.unit_m));
   if (!options.leaves) out.leaves.clear();
+  // RL-systems have no wind of their own: EcoMod's bends the finished skeleton.
+  const StrandParams& p = species.strand;
+  SkeletonWind wind;
+  wind.directed_wg = options.windDirected.value_or(p.windDirected);
+  wind.undirected_ws = options.windUndirected.value_or(p.windUndirected);
+  wind.direction = options.windDirection.value_or(p.windDirection);
+  wind.flexibility = p.flexibility;
+  wind.time = options.windTime;
+  wind.seed = options.seed;
+  applyWind(out, wind);
 }
 
 TreeSkeleton buildTree(const Species& species, const TreeBuildOptions& options) {

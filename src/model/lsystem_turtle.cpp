@@ -177,45 +177,41 @@ class SkeletonBuilder {
 
  private:
   void draw(Symbol symbol, const double* params, int count) {
-    {
-      const glm::dvec3 from = turtle_.state().position;
-      const glm::dvec3 heading = turtle_.state().heading;
-      const TurtleState before = turtle_.state();
-      switch (turtle_.apply(symbol, params, count)) {
-        case Turtle::Action::Draw:
-          if (polygon_ >= 0) {
-            polygonPoints_.push_back(turtle_.state().position);
-          } else if (turtle_.moved() > 0.0) {
-            addSegment(before, from, heading);
-          }
-          break;
-        case Turtle::Action::Move:
-          if (polygon_ >= 0) polygonPoints_.push_back(turtle_.state().position);
-          break;
-        case Turtle::Action::Leaf:
-          addLeaf(turtle_.state(), count > 0 ? params[0] : system_.turtle.leafSize);
-          break;
-        case Turtle::Action::PolygonBegin:
-          if (polygon_ < 0) {
-            polygon_ = static_cast<int>(turtle_.depth());
-            polygonStart_ = turtle_.state();
-            polygonPoints_.clear();
-          }
-          break;
-        case Turtle::Action::PolygonEnd:
-          if (polygon_ >= 0) finishPolygon();
-          break;
-        default:
-          break;
-      }
+    const TurtleState before = turtle_.state();
+    switch (turtle_.apply(symbol, params, count)) {
+      case Turtle::Action::Draw:
+        if (inPolygon_)
+          polygonPoints_.push_back(turtle_.state().position);
+        else if (turtle_.moved() > 0.0)
+          addSegment(before);
+        break;
+      case Turtle::Action::Move:
+        if (inPolygon_) polygonPoints_.push_back(turtle_.state().position);
+        break;
+      case Turtle::Action::Leaf:
+        addLeaf(turtle_.state(), count > 0 ? params[0] : system_.turtle.leafSize);
+        break;
+      case Turtle::Action::PolygonBegin:
+        if (!inPolygon_) {  // nested polygons trace into the outer one
+          inPolygon_ = true;
+          polygonStart_ = turtle_.state();
+          polygonPoints_.clear();
+        }
+        break;
+      case Turtle::Action::PolygonEnd:
+        if (inPolygon_) finishPolygon();
+        break;
+      default:
+        break;
     }
   }
 
-  void addSegment(const TurtleState& before, const glm::dvec3& from, const glm::dvec3& axis) {
+  // The segment the turtle just drew, moving from `before` along its heading.
+  void addSegment(const TurtleState& before) {
     TurtleState& s = turtle_.state();
     BranchSegment segment;
-    segment.start = glm::vec3(from);
-    const glm::dvec3 h = glm::normalize(axis);
+    segment.start = glm::vec3(before.position);
+    const glm::dvec3 h = before.heading;
     glm::dvec3 x = -before.left;
     x = glm::normalize(x - h * glm::dot(x, h));
     segment.frame = glm::mat3(glm::vec3(x), glm::vec3(h), glm::vec3(glm::cross(x, h)));
@@ -249,7 +245,7 @@ class SkeletonBuilder {
   // A traced polygon becomes one leaf: from where the tracing began toward its farthest
   // point, as long as that distance, facing the turtle's up at the start.
   void finishPolygon() {
-    polygon_ = -1;
+    inPolygon_ = false;
     double far = 0.0;
     glm::dvec3 tip = polygonStart_.position;
     for (const glm::dvec3& p : polygonPoints_) {
@@ -317,7 +313,7 @@ class SkeletonBuilder {
   Turtle turtle_;
   TreeSkeleton& out_;
   std::vector<bool> hasContinuation_;
-  int polygon_ = -1;  // stack depth where the open polygon began; -1 when none
+  bool inPolygon_ = false;  // between { and }
   TurtleState polygonStart_;
   std::vector<glm::dvec3> polygonPoints_;
 };

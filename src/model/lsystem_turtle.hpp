@@ -34,7 +34,6 @@ class Turtle {
   double moved() const { return moved_; }
   const TurtleState& state() const { return state_; }
   TurtleState& state() { return state_; }
-  std::size_t depth() const { return stack_.size(); }
 
  private:
   void rotate(glm::dvec3& a, glm::dvec3& b, double angle_deg);  // a toward b

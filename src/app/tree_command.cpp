@@ -88,7 +88,7 @@ void addTreeCommand(CLI::App& app) {
   CLI::App* tree =
       app.add_subcommand("tree", "Build one tree of a species, print its measures, export it");
   tree->add_option("species", args->species,
-                   "Species name (beech, pine, maple, shrub) or path to a species .toml")
+                   "Species name (beech, pine, maple, shrub, birch) or path to a species .toml")
       ->required();
   tree->add_option("--seed", args->seed, "Individual: the same seed always gives the same tree")
       ->capture_default_str();

@@ -134,7 +134,15 @@ class StepDeriver {
       const double after = forward ? -1.0 : 1.0;
       out.add(kPendulum, &after, 1);
     } else {  // Repetition: consumed
-      const auto copies = std::max<long long>(0, std::llround(params[0]));
+      // One module may not blow past the cap before the next check: test the count first.
+      const double count = std::max(0.0, std::round(params[0]));
+      if (!(count * static_cast<double>(body.size()) <= static_cast<double>(maxModules_)))
+        throw InputError({system_.file, 0, ""},
+                         "derivation step " + std::to_string(static_cast<int>(env_.numIt)) +
+                             ": @Repetition(" + std::to_string(params[0]) + ") of " +
+                             std::to_string(body.size()) + " modules would make more than " +
+                             std::to_string(maxModules_) + " modules (the MAXMODULES cap)");
+      const auto copies = static_cast<long long>(count);
       for (long long c = 0; c < copies; ++c)
         for (std::size_t item = 0; item < body.size(); ++item)
           deriveModule(body, item, false, itemKey(static_cast<std::uint64_t>(c), item), out);

@@ -223,6 +223,16 @@ TEST(LSystemDeriver, TheExplosionCapNamesTheProductionThatExploded) {
     EXPECT_NE(std::string(e.what()).find("the production 'B -> BB' exploded"), std::string::npos)
         << e.what();
   }
+  // A single Repetition cannot overrun the cap either.
+  const LSystem repeat = parseLSystem(grammar("@Repetition(1e12){F}", ""), "repeat.lsys");
+  try {
+    derived(repeat, 1);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("would make more than 50000000 modules"),
+              std::string::npos)
+        << e.what();
+  }
   // The same through the parallel path: many chunks, one cap.
   DeriveOptions options;
   options.iterations = 30;

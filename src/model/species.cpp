@@ -41,6 +41,15 @@ LocalGraphs parseGraphs(TomlTable& local) {
   return g;
 }
 
+// EcoMod's wind keys, shared by [strand] and [lsystem]; every one is optional.
+void parseWind(TomlTable& table, StrandParams& p) {
+  p.windDirected = table.number("wind_directed_wg", 0.0, {0.0, 10.0});
+  p.windUndirected = table.number("wind_undirected_ws", 0.0, {0.0, 10.0});
+  auto w = table.numbers("wind_direction", 3, std::vector<double>{0.0, 1.0, 0.0});
+  p.windDirection = glm::dvec3(w[0], w[1], w[2]);
+  p.flexibility = table.number("flexibility_kf", 1.0, {0.0, 1.0});
+}
+
 void parseStrand(TomlTable& root, StrandParams& p) {
   std::optional<TomlTable> strand = root.table("strand");
   if (!strand) root.fail("strand", "missing required table [strand]");
@@ -55,11 +64,7 @@ void parseStrand(TomlTable& root, StrandParams& p) {
   p.leafSize_m = strand->number("leaf_size_m", {}, {0.0, 0.3});
   p.leafDensity = strand->number("leaf_density", {}, {0.0, 30.0});
   p.leafDistribution = parseDistribution(*strand, "leaf_distribution");
-  p.windDirected = strand->number("wind_directed_wg", 0.0, {0.0, 10.0});
-  p.windUndirected = strand->number("wind_undirected_ws", 0.0, {0.0, 10.0});
-  auto w = strand->numbers("wind_direction", 3, std::vector<double>{0.0, 1.0, 0.0});
-  p.windDirection = glm::dvec3(w[0], w[1], w[2]);
-  p.flexibility = strand->number("flexibility_kf", 1.0, {0.0, 1.0});
+  parseWind(*strand, p);
   p.lod = static_cast<int>(strand->integer("lod", 0, {0, 2}));
   std::optional<TomlTable> local = strand->table("local");
   if (!local) strand->fail("local", "missing required table [strand.local]");
@@ -79,11 +84,7 @@ LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& spec
   tree.iterations =
       static_cast<int>(table.integer("iterations", grammar->iterations, {1, kMaxIterations}));
   tree.unit_m = table.number("unit_m", grammar->turtle.unit_m, {1e-6, 1e6});
-  wind.windDirected = table.number("wind_directed_wg", 0.0, {0.0, 10.0});
-  wind.windUndirected = table.number("wind_undirected_ws", 0.0, {0.0, 10.0});
-  auto w = table.numbers("wind_direction", 3, std::vector<double>{0.0, 1.0, 0.0});
-  wind.windDirection = glm::dvec3(w[0], w[1], w[2]);
-  wind.flexibility = table.number("flexibility_kf", 1.0, {0.0, 1.0});
+  parseWind(table, wind);
   tree.grammar = std::move(grammar);
   table.finish();
   return tree;

@@ -181,6 +181,13 @@ class ExpressionParser {
     }
   }
   void parseUnary() {
+    // The parser recurses for unary operators and parentheses: bound it, so a hostile
+    // line cannot overflow the stack.
+    if (++nesting_ > kMaxNesting) cursor_.fail("expression nested too deeply");
+    parseUnaryOperand();
+    --nesting_;
+  }
+  void parseUnaryOperand() {
     cursor_.skipSpace();
     if (cursor_.peek() == '-' && cursor_.peek(1) != '>') {
       cursor_.next();
@@ -324,9 +331,12 @@ class ExpressionParser {
     out_.code.assign(1, {ExprOp::Const, 0, 0, 0, value});
   }
 
+  static constexpr int kMaxNesting = 200;
+
   TextCursor& cursor_;
   const ExpressionScope& scope_;
   Expression out_;
+  int nesting_ = 0;
 };
 
 }  // namespace

@@ -401,7 +401,10 @@ class GrammarParser {
           Expression{{ExprInstr{ExprOp::Const, 0, 0, 0, m.symbol == kPendulum ? 1.0 : 0.0}}});
     cursor.expect("{", "to open the body of " + name);
     const int bodyColumn = cursor.column();
+    if (++bodyNesting_ > kMaxBodyNesting)  // derivation recurses into bodies: bound it
+      cursor.failAt(column, "control modules nested more than 32 deep");
     StringTemplate body = stringTemplate(cursor, scope, true);
+    --bodyNesting_;
     cursor.expect("}", "to close the body of " + name);
     if (body.modules.empty()) cursor.failAt(bodyColumn, name + " needs at least one module");
     if (m.symbol != kRepetition)
@@ -585,6 +588,8 @@ class GrammarParser {
   LSystem system_;
   std::vector<std::pair<std::string, double>> defines_;
   std::uint32_t axiomOccurrence_ = 1;
+  static constexpr int kMaxBodyNesting = 32;
+  int bodyNesting_ = 0;
 };
 
 }  // namespace

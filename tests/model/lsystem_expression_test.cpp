@@ -121,6 +121,10 @@ TEST(LSystemExpression, ErrorsNameLineAndColumn) {
   expectError("foo(1)", "test.lsys:3:1: unknown function 'foo' (known: " + functionList() + ")");
   expectError("2 * * 3", "test.lsys:3:5: expected a value, found '*'");
   expectError("", "test.lsys:3:1: expected an expression");
+  // Hostile nesting is an error, not a stack overflow.
+  const std::string deep = std::string(100000, '(') + "1" + std::string(100000, ')');
+  expectError(deep, "test.lsys:3:201: expression nested too deeply");
+  expectError(std::string(100000, '-') + "1", "test.lsys:3:201: expression nested too deeply");
 }
 
 }  // namespace

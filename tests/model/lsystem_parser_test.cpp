@@ -170,6 +170,12 @@ TEST(LSystemParser, SyntaxErrorsReportLineAndColumn) {
   expectError(withRules("", "  ITERATIONS 2.5\n"), "bad.lsys:3:14: expected an integer");
   expectError(withRules("", "  DEFINE p 1\n  DEFINE p 2\n"),
               "bad.lsys:4:10: 'p' is already defined");
+  // Derivation recurses into control bodies: their nesting is bounded. The 33rd of 40
+  // nested Repetitions (15 characters each, after "  A -> ") starts at column 488.
+  std::string nested = "  A -> ";
+  for (int k = 0; k < 40; ++k) nested += "@Repetition(1){";
+  expectError(withRules(nested + "F" + std::string(40, '}') + "\n"),
+              "bad.lsys:6:488: control modules nested more than 32 deep");
 }
 
 TEST(LSystemParser, SectionErrors) {

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "core/error.hpp"
 #include "core/random.hpp"
 
 namespace eco {
@@ -52,6 +54,16 @@ void Turtle::applyTropism() {
 
 Turtle::Action Turtle::apply(Symbol symbol, const double* params, int count) {
   const TurtleSettings& t = system_.turtle;
+  // 1/0 or sqrt(-1) in a grammar would put NaN into every later position and mesh.
+  const bool readsParameter =
+      system_.leaves[symbol] ||
+      (symbol < 128 &&
+       std::string_view("Ff+-&^\\/!").find(static_cast<char>(symbol)) != std::string_view::npos);
+  if (count > 0 && readsParameter && !std::isfinite(params[0]))
+    throw InputError({system_.file, 0, ""},
+                     "the derived string has " + symbolName(symbol) + "(" +
+                         std::to_string(params[0]) +
+                         "): the turtle's parameters must be finite numbers");
   const double angle = count > 0 ? params[0] : t.angle_deg;
   TurtleState& s = state_;
   switch (symbol) {

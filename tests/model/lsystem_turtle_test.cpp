@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "core/error.hpp"
 #include "model/lsystem_deriver.hpp"
 #include "model/lsystem_parser.hpp"
 
@@ -152,6 +153,12 @@ TEST(LSystemTurtle, PruningCutsBranchesAtTheVolume) {
     }
     EXPECT_GT(top, 10.0f) << shape;  // it fills the volume up to its top
   }
+}
+
+TEST(LSystemTurtle, NonFiniteParametersAreAnInputError) {
+  EXPECT_THROW(interpretAxiom("F(1/0)"), InputError);
+  EXPECT_THROW(interpretAxiom("F+(sqrt(-1))F"), InputError);
+  EXPECT_NO_THROW(interpretAxiom("A(1/0)F"));  // modules the turtle ignores may hold anything
 }
 
 TEST(LSystemTurtle, CutsKeepTheStringBalanced) {

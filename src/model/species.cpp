@@ -1,7 +1,9 @@
 #include "model/species.hpp"
 
 #include "core/toml_reader.hpp"
+#include "model/lsystem_deriver.hpp"
 #include "model/lsystem_parser.hpp"
+#include "model/lsystem_turtle.hpp"
 
 namespace eco {
 namespace {
@@ -85,6 +87,12 @@ LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& spec
       static_cast<int>(table.integer("iterations", grammar->iterations, {1, kMaxIterations}));
   tree.unit_m = table.number("unit_m", grammar->turtle.unit_m, {1e-6, 1e6});
   parseWind(table, wind);
+  // A species must be a plant: its mature tree has to draw wood.
+  DeriveOptions mature;
+  mature.iterations = tree.iterations;
+  if (interpretTree(*grammar, derive(*grammar, mature)).segments.empty())
+    table.fail("file", "the grammar draws no wood (no F) after " + std::to_string(tree.iterations) +
+                           " steps: it cannot grow a tree");
   tree.grammar = std::move(grammar);
   table.finish();
   return tree;

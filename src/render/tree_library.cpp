@@ -51,7 +51,8 @@ TreeLibrary::TreeLibrary(std::vector<Species> species, const LibrarySettings& se
     type.meshes = buildWindLods(s, type.seed, type.age);
     const SkeletonMeasures measures =
         measure(buildTree(s, windBuildOptions(s, type.seed, type.age, {}, 0.0)));
-    type.height_m = static_cast<float>(measures.height_m);
+    // An L-system may draw nothing in its first steps: such a type is empty, not a /0.
+    type.height_m = std::max(static_cast<float>(measures.height_m), 1e-3f);
     type.crownRadius_m = static_cast<float>(measures.crownRadius_m);
     type.bounds = boundingSphere(type.meshes);
   });

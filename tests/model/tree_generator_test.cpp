@@ -97,6 +97,17 @@ TEST(TreeGenerator, SpeciesFilesNameAValidGenerator) {
   EXPECT_THROW(loadSpecies(missing), InputError);
   const auto noTable = test::writeTemporary("no_table", "name = \"x\"\ngenerator = \"lsystem\"\n");
   EXPECT_THROW(loadSpecies(noTable), InputError);
+  const auto woodless = test::writeTemporary(
+      "woodless", "name = \"x\"\ngenerator = \"lsystem\"\n[lsystem]\nfile = \"" +
+                      std::string(ECOFOREST_DATA_DIR) + "/lsystems/green_example.lsys\"\n");
+  try {
+    loadSpecies(woodless);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lsystem.file: the grammar draws no wood"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "model/lsystem_deriver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 
@@ -57,6 +58,16 @@ class StepDeriver {
     for (const Production& p : system.productions)
       slots_.resize(std::max(slots_.size(), static_cast<std::size_t>(p.slotCount)));
     env_.slots = slots_.data();
+    // A symbol whose first production has no parameters, context or condition and a
+    // constant successor rewrites every bare module of it the same way: copy it directly.
+    constantRule_.fill(-1);
+    for (std::size_t symbol = 0; symbol < kSymbolCount; ++symbol) {
+      const auto& rules = system.rulesBySymbol[symbol];
+      if (rules.empty()) continue;
+      const Production& p = system.productions[rules.front()];
+      if (p.strict.slots.empty() && !p.hasContext() && !p.condition && p.successor.constant)
+        constantRule_[symbol] = static_cast<std::int32_t>(rules.front());
+    }
   }
 
   // Derives modules [begin, end) of the input into `out`. Returns false when the shared
@@ -86,9 +97,19 @@ class StepDeriver {
     const Module& m = s.modules[i];
     if (m.body != kNoBody) return deriveControl(s, m, key, out);
     const std::vector<std::uint32_t>& rules = system_.rulesBySymbol[m.symbol];
-    if (rules.empty() && m.paramCount == 0) {  // the commonest case: a bare turtle symbol
-      out.modules.push_back({m.symbol, 0, static_cast<std::uint32_t>(out.params.size()), kNoBody});
-      return;
+    if (m.paramCount == 0) {  // the commonest cases: bare symbols of context-free systems
+      if (rules.empty()) {
+        out.modules.push_back(
+            {m.symbol, 0, static_cast<std::uint32_t>(out.params.size()), kNoBody});
+        return;
+      }
+      if (const std::int32_t r = constantRule_[m.symbol]; r >= 0) {
+        const StringTemplate& successor =
+            system_.productions[static_cast<std::size_t>(r)].successor;
+        instantiate(successor, env_, out);
+        byRule_[static_cast<std::size_t>(r)] += successor.prebuilt.size();
+        return;
+      }
     }
     if (!rules.empty()) {
       const VariableDeviates deviates(system_.variables, key);
@@ -234,6 +255,7 @@ class StepDeriver {
   std::uint64_t stepKey_;
   std::vector<double> slots_;
   std::vector<std::size_t> byRule_;
+  std::array<std::int32_t, kSymbolCount> constantRule_;
   EvalEnv env_;
 };
 

@@ -139,7 +139,6 @@ struct LSystem {
   std::string file;  // where it was read from, for messages
   std::string name;  // after SYSTEM, may be empty
   std::vector<RandomVariable> variables;
-  std::vector<std::string> defineNames;  // DEFINE constants, already folded into expressions
   StringTemplate axiom;
   std::vector<Production> productions;
   std::vector<std::vector<std::uint32_t>> rulesBySymbol =

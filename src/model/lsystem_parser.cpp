@@ -262,7 +262,6 @@ class GrammarParser {
     cursor.accept("=");
     const double value = constant(cursor);
     defines_.emplace_back(name, value);
-    system_.defineNames.push_back(name);
     endOfLine(cursor);
   }
 

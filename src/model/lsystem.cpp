@@ -83,6 +83,16 @@ void instantiate(const StringTemplate& t, const EvalEnv& env, ModuleString& out)
   }
 }
 
+std::size_t branchEnd(const ModuleString& string, std::size_t from) {
+  int depth = 0;
+  for (std::size_t i = from; i < string.size(); ++i) {
+    const Symbol s = string.modules[i].symbol;
+    if (s == ']' && depth == 0) return i;
+    depth += s == '[' ? 1 : s == ']' ? -1 : 0;
+  }
+  return string.size();
+}
+
 namespace {
 
 void appendNumber(std::string& out, double value) {

@@ -66,6 +66,10 @@ struct ModuleString {
   void clear();
 };
 
+// Where the branch that holds module `from` ends: the index of the ']' that closes it,
+// or the string's size for the main axis. Sub-branches opened on the way are skipped.
+std::size_t branchEnd(const ModuleString& string, std::size_t from);
+
 // The derived string as the issue's --print wants it: modules concatenated, parameters in
 // shortest round-trip form, "A(1.5,2)B[+F]@Switch(1){AB}".
 std::string toString(const ModuleString& string);

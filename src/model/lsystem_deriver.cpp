@@ -384,13 +384,7 @@ bool applyPruneModules(ModuleString& string) {
       kept.append(string, i);
       continue;
     }
-    int depth = 0;  // skip to the ']' that closes this module's branch; keep that ']'
-    while (i + 1 < string.size()) {
-      const Symbol next = string.modules[i + 1].symbol;
-      if (next == ']' && depth == 0) break;
-      depth += next == '[' ? 1 : next == ']' ? -1 : 0;
-      ++i;
-    }
+    i = branchEnd(string, i + 1) - 1;  // skip the rest of the branch; keep its ']'
   }
   string = std::move(kept);
   return true;

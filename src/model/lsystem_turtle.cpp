@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <string_view>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -52,24 +51,25 @@ void Turtle::applyTropism() {
   state_.left = glm::cross(state_.up, state_.heading);
 }
 
-Turtle::Action Turtle::apply(Symbol symbol, const double* params, int count) {
-  const TurtleSettings& t = system_.turtle;
+double Turtle::parameter(Symbol symbol, const double* params, int count, double fallback) const {
+  if (count == 0) return fallback;
   // 1/0 or sqrt(-1) in a grammar would put NaN into every later position and mesh.
-  const bool readsParameter =
-      system_.leaves[symbol] ||
-      (symbol < 128 &&
-       std::string_view("Ff+-&^\\/!").find(static_cast<char>(symbol)) != std::string_view::npos);
-  if (count > 0 && readsParameter && !std::isfinite(params[0]))
+  if (!std::isfinite(params[0]))
     throw InputError({system_.file, 0, ""},
                      "the derived string has " + symbolName(symbol) + "(" +
                          std::to_string(params[0]) +
                          "): the turtle's parameters must be finite numbers");
-  const double angle = count > 0 ? params[0] : t.angle_deg;
+  return params[0];
+}
+
+Turtle::Action Turtle::apply(Symbol symbol, const double* params, int count) {
+  const TurtleSettings& t = system_.turtle;
+  auto angle = [&] { return parameter(symbol, params, count, t.angle_deg); };
   TurtleState& s = state_;
   switch (symbol) {
     case 'F':
     case 'f': {
-      moved_ = count > 0 ? params[0] : t.step;
+      moved_ = parameter(symbol, params, count, t.step);
       s.position += s.heading * moved_;
       if (symbol == 'F') {
         applyTropism();
@@ -79,22 +79,22 @@ Turtle::Action Turtle::apply(Symbol symbol, const double* params, int count) {
       return Action::Move;
     }
     case '+':
-      rotate(s.heading, s.left, angle);  // turn left about U
+      rotate(s.heading, s.left, angle());  // turn left about U
       return Action::None;
     case '-':
-      rotate(s.heading, s.left, -angle);
+      rotate(s.heading, s.left, -angle());
       return Action::None;
     case '&':
-      rotate(s.heading, s.up, -angle);  // pitch down about L
+      rotate(s.heading, s.up, -angle());  // pitch down about L
       return Action::None;
     case '^':
-      rotate(s.heading, s.up, angle);
+      rotate(s.heading, s.up, angle());
       return Action::None;
     case '\\':
-      rotate(s.left, s.up, angle);  // roll left about H
+      rotate(s.left, s.up, angle());  // roll left about H
       return Action::None;
     case '/':
-      rotate(s.left, s.up, -angle);
+      rotate(s.left, s.up, -angle());
       return Action::None;
     case '|':
       s.heading = -s.heading;  // turn around about U
@@ -108,7 +108,8 @@ Turtle::Action Turtle::apply(Symbol symbol, const double* params, int count) {
       return Action::None;
     }
     case '!':
-      s.width = count > 0 ? std::max(0.0, params[0]) : s.width * t.widthScale;
+      s.width =
+          count > 0 ? std::max(0.0, parameter(symbol, params, count, 0.0)) : s.width * t.widthScale;
       return Action::None;
     case '[':
       stack_.push_back(s);
@@ -201,7 +202,7 @@ class SkeletonBuilder {
         if (inPolygon_) polygonPoints_.push_back(turtle_.state().position);
         break;
       case Turtle::Action::Leaf:
-        addLeaf(turtle_.state(), count > 0 ? params[0] : system_.turtle.leafSize);
+        addLeaf(turtle_.state(), turtle_.parameter(symbol, params, count, system_.turtle.leafSize));
         break;
       case Turtle::Action::PolygonBegin:
         if (!inPolygon_) {  // nested polygons trace into the outer one
@@ -367,13 +368,10 @@ bool applyEnvironment(const LSystem& system, ModuleString& string) {
     // This F leaves the volume: it and the rest of its branch go; the ']' that closes the
     // branch stays and pops the turtle.
     if (keep.empty()) keep.assign(string.size(), true);
-    int depth = 0;
-    for (; i < string.size(); ++i) {
-      const Symbol s = string.modules[i].symbol;
-      if (s == ']' && depth == 0) break;
-      depth += s == '[' ? 1 : s == ']' ? -1 : 0;
-      keep[i] = false;
-    }
+    const std::size_t end = branchEnd(string, i);
+    std::fill(keep.begin() + static_cast<std::ptrdiff_t>(i),
+              keep.begin() + static_cast<std::ptrdiff_t>(end), false);
+    i = end;
     cut = true;
     if (i < string.size()) turtle.apply(']', nullptr, 0);
   }

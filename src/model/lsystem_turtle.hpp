@@ -32,6 +32,9 @@ class Turtle {
   // moved() is the distance; the state after the call is the new one.
   Action apply(Symbol symbol, const double* params, int count);
   double moved() const { return moved_; }
+  // A module's first parameter (a length, angle, width or leaf size), or `fallback` when
+  // it has none; a non-finite value is an InputError.
+  double parameter(Symbol symbol, const double* params, int count, double fallback) const;
   const TurtleState& state() const { return state_; }
   TurtleState& state() { return state_; }
 

@@ -42,6 +42,15 @@ TEST(LSystemString, SymbolNamesAndKinds) {
   EXPECT_FALSE(isControl(kPrune));
 }
 
+TEST(LSystemString, BranchEndSkipsSubBranchesToTheClosingBracket) {
+  ModuleString s;
+  for (char c : std::string("F[A[B]C]DE")) s.add(static_cast<Symbol>(c));
+  EXPECT_EQ(branchEnd(s, 2), 7u);   // from A: over [B] to the ] after C
+  EXPECT_EQ(branchEnd(s, 4), 5u);   // from B: its own ]
+  EXPECT_EQ(branchEnd(s, 8), 10u);  // the main axis ends with the string
+  EXPECT_EQ(branchEnd(s, 0), 10u);
+}
+
 TEST(LSystemString, PruneVolumesContainTheirInsideOnly) {
   PruneVolume ellipsoid{PruneShape::Ellipsoid, {0, 5, 0}, {2, 5, 1}};
   EXPECT_TRUE(ellipsoid.contains({0, 0, 0}));

@@ -161,7 +161,7 @@ void runView(const ViewArgs& args) {
         if (pressed(GLFW_KEY_SPACE)) playing = !playing;
       }
       if (walk)  // eyes 1.7 m above the ground under the camera
-        camera.position.y = source.terrain.altitudeAt(camera.position.x, -camera.position.z) + 1.7f;
+        camera.position.y = groundBelow(source.terrain, camera.position) + 1.7f;
 
       // Growth: the play button steps through the snapshots, one a second.
       bool yearChanged = false;

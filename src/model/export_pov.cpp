@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
+#include "core/angles.hpp"
 #include "core/atomic_file.hpp"
 #include "model/tree_export.hpp"
 
@@ -21,7 +21,7 @@ void writePov(const TreeMesh& mesh, const std::vector<Material>& materials,
   Bounds b = boundsOf(mesh);
   glm::vec3 center = 0.5f * (b.min + b.max);
   float radius = 0.5f * glm::length(b.max - b.min);
-  float distance = 1.15f * radius / std::tan(glm::radians(20.0f)) + 0.5f;
+  float distance = 1.15f * radius / std::tan(radians(20.0f)) + 0.5f;
   glm::vec3 eye = center + distance * glm::normalize(glm::vec3(0.45f, 0.12f, 1.0f));
   glm::vec3 sun = center + 4.0f * distance * glm::normalize(glm::vec3(0.6f, 1.0f, 0.5f));
   glm::vec3 fill = center + 4.0f * distance * glm::normalize(glm::vec3(-0.8f, 0.6f, -0.3f));

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "model/rotation.hpp"
+#include "core/rotation.hpp"
 
 namespace eco {
 namespace {
@@ -42,8 +42,8 @@ void smallSinCos(float x, float& c, float& s) {
   s = x * (1.0f - x2 * (1.0f / 6.0f - x2 * (1.0f / 120.0f)));
 }
 
-constexpr float kAzimuthJitter_rad = 8.0f * 3.14159265f / 180.0f;
-constexpr float kElevationJitter_rad = 6.0f * 3.14159265f / 180.0f;
+constexpr float kAzimuthJitter_rad = radians(8.0f);
+constexpr float kElevationJitter_rad = radians(6.0f);
 
 }  // namespace
 

@@ -9,17 +9,10 @@
 
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "core/rotation.hpp"
 
 namespace eco {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
-
-// Rodrigues' rotation of v about the unit axis k.
-glm::dvec3 rotateAbout(const glm::dvec3& v, const glm::dvec3& k, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
-}
 
 }  // namespace
 
@@ -28,7 +21,7 @@ Turtle::Turtle(const LSystem& system) : system_(system) {
 }
 
 void Turtle::rotate(glm::dvec3& a, glm::dvec3& b, double angle_deg) {
-  const double angle = angle_deg * kDegree;
+  const double angle = radians(angle_deg);
   const double c = std::cos(angle), s = std::sin(angle);
   const glm::dvec3 a2 = a * c + b * s;
   b = glm::normalize(b * c - a * s);

@@ -6,7 +6,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "core/random.hpp"
-#include "model/rotation.hpp"
+#include "core/rotation.hpp"
 
 namespace eco {
 

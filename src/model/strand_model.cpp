@@ -9,10 +9,11 @@
 #include <glm/matrix.hpp>
 
 #include "core/error.hpp"
+#include "core/frames.hpp"
 #include "core/random.hpp"
 #include "model/leaves.hpp"
 #include "model/local_params.hpp"
-#include "model/rotation.hpp"
+#include "core/rotation.hpp"
 
 namespace eco {
 namespace {
@@ -99,8 +100,7 @@ std::vector<Node> splitStrands(const Species& species, std::uint64_t seed) {
 }  // namespace
 
 glm::dvec3 windTowardFromBearing(double fromDeg) {
-  double toward = radians(fromDeg + 180.0);
-  return {std::sin(toward), 0.0, -std::cos(toward)};  // east = +x, north = -z
+  return worldDirectionOfBearing(fromDeg + 180.0);
 }
 
 TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& options) {

@@ -1,21 +1,27 @@
 #include "render/camera.hpp"
 
+#include "core/angles.hpp"
+
 #include <cmath>
 #include <sstream>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/trigonometric.hpp>
 
 namespace eco {
 
+float groundBelow(const Terrain& terrain, glm::vec3 world) {
+  const glm::dvec3 map = mapFromWorld(world);
+  return terrain.altitudeAt(map.x, map.y);
+}
+
 glm::vec3 Camera::forward() const {
-  const float yaw = glm::radians(yaw_deg), pitch = glm::radians(pitch_deg);
+  const float yaw = radians(yaw_deg), pitch = radians(pitch_deg);
   return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch)};
 }
 
 glm::vec3 Camera::right() const {
-  const float yaw = glm::radians(yaw_deg);
+  const float yaw = radians(yaw_deg);
   return {std::cos(yaw), 0.0f, std::sin(yaw)};
 }
 
@@ -23,17 +29,17 @@ glm::mat4 Camera::view() const {
   // Straight up or down the world's up is the view axis; the yaw's heading is "up" instead.
   const glm::vec3 up =
       std::abs(pitch_deg) > 89.9f
-          ? glm::vec3(std::sin(glm::radians(yaw_deg)), 0.0f, -std::cos(glm::radians(yaw_deg)))
+          ? glm::vec3(std::sin(radians(yaw_deg)), 0.0f, -std::cos(radians(yaw_deg)))
           : glm::vec3(0.0f, 1.0f, 0.0f);
   return glm::lookAt(position, position + forward(), up);
 }
 
 glm::mat4 Camera::projection(float aspect) const {
-  return glm::perspective(glm::radians(fovY_deg), aspect, near_m, far_m);
+  return glm::perspective(radians(fovY_deg), aspect, near_m, far_m);
 }
 
 float Camera::pixelsPerRadian(int viewportHeight) const {
-  return 0.5f * static_cast<float>(viewportHeight) / std::tan(0.5f * glm::radians(fovY_deg));
+  return 0.5f * static_cast<float>(viewportHeight) / std::tan(0.5f * radians(fovY_deg));
 }
 
 std::optional<Camera> parseCamera(const std::string& text) {
@@ -73,8 +79,8 @@ Camera presetCamera(CameraPreset preset, const Terrain& terrain) {
   // Looking down 35 degrees from the south; the distance fits the map's diagonal into the
   // vertical field of view.
   const double size = std::hypot(g.eastOf(g.width - 1), g.northOf(0));
-  const double pitch = glm::radians(35.0);
-  const double distance = 0.36 * size / std::tan(0.5 * glm::radians(camera.fovY_deg));
+  const double pitch = radians(35.0);
+  const double distance = 0.36 * size / std::tan(0.5 * radians(camera.fovY_deg));
   camera.pitch_deg = -35.0f;
   camera.yaw_deg = 0.0f;
   camera.position = worldFromMap(east, north - distance * std::cos(pitch),

@@ -1,5 +1,4 @@
-// The camera and the world frame of the renderer: x east, y up, z south (the tree frame of
-// the model), metres. A map position (east, north, altitude) is world (east, altitude, -north).
+// The camera, in the world frame (core/frames.hpp: x east, y up, z south, metres).
 #pragma once
 
 #include <optional>
@@ -8,13 +7,13 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/frames.hpp"
 #include "sim/terrain.hpp"
 
 namespace eco {
 
-inline glm::vec3 worldFromMap(double east_m, double north_m, double altitude_m) {
-  return {static_cast<float>(east_m), static_cast<float>(altitude_m), static_cast<float>(-north_m)};
-}
+// The ground's altitude under a world point (Terrain::altitudeAt of its map position).
+float groundBelow(const Terrain& terrain, glm::vec3 world);
 
 struct Camera {
   glm::vec3 position{0.0f};

@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
+#include "core/frames.hpp"
 #include "core/toml_reader.hpp"
 
 namespace eco {
@@ -24,18 +24,14 @@ glm::vec3 mapCentre(const Terrain& terrain) {
   return worldFromMap(east, north, terrain.altitudeAt(east, north));
 }
 
-float groundUnder(const Terrain& terrain, glm::vec3 p) {
-  return terrain.altitudeAt(p.x, -p.z);
-}
-
 }  // namespace
 
 Camera lookingAt(glm::vec3 position, glm::vec3 target) {
   Camera camera;
   camera.position = position;
   const glm::vec3 d = glm::normalize(target - position);
-  camera.yaw_deg = glm::degrees(std::atan2(d.x, -d.z));
-  camera.pitch_deg = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
+  camera.yaw_deg = bearingOfWorldDirection(d);
+  camera.pitch_deg = degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
   return camera;
 }
 
@@ -43,7 +39,7 @@ CameraPath orbitPath(const Terrain& terrain) {
   const Grid& g = terrain.grid;
   const glm::vec3 centre = mapCentre(terrain);
   const float radius = 0.45f * static_cast<float>(std::hypot(g.eastOf(g.width - 1), g.northOf(0)));
-  const float height = radius * std::tan(glm::radians(35.0f));
+  const float height = radius * std::tan(radians(35.0f));
   return [=, &terrain](double u) {
     const double angle = 2.0 * std::numbers::pi * u;
     // From the south (+z), turning counter-clockwise seen from above; over a hill higher than
@@ -51,7 +47,7 @@ CameraPath orbitPath(const Terrain& terrain) {
     glm::vec3 position =
         centre + glm::vec3(radius * std::sin(angle), height, radius * std::cos(angle));
     position.y = std::max(position.y,
-                          groundUnder(terrain, position) + static_cast<float>(kCameraClearance_m));
+                          groundBelow(terrain, position) + static_cast<float>(kCameraClearance_m));
     return lookingAt(position, centre);
   };
 }
@@ -87,7 +83,7 @@ CameraPath keyframePath(std::vector<CameraKey> keys, const Terrain& terrain) {
     glm::vec3 position = catmullRom(before.position, a.position, b.position, after.position, t);
     const glm::vec3 target = catmullRom(before.lookAt, a.lookAt, b.lookAt, after.lookAt, t);
     position.y = std::max(position.y,
-                          groundUnder(terrain, position) + static_cast<float>(kCameraClearance_m));
+                          groundBelow(terrain, position) + static_cast<float>(kCameraClearance_m));
     return lookingAt(position, target);
   };
 }

@@ -10,6 +10,7 @@
 #include "render/camera.hpp"
 #include "render/culling.hpp"
 #include "render/terrain_renderer.hpp"
+#include "sim/terrain_mesh.hpp"
 
 namespace eco {
 namespace {
@@ -21,15 +22,10 @@ MeshPart terrainPart(const Terrain& terrain) {
   part.material = MaterialKind::Bark;  // unused: the terrain has its own material
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x)
-      part.addVertex(worldFromMap(g.eastOf(x), g.northOf(y), terrain.heightAt(x, y)),
-                     terrainNormal(terrain, x, y), {(x + 0.5f) / g.width, (y + 0.5f) / g.height});
-  for (int y = 0; y + 1 < g.height; ++y)
-    for (int x = 0; x + 1 < g.width; ++x) {
-      const auto a = static_cast<std::uint32_t>(g.index(x, y)), b = a + 1,
-                 c = static_cast<std::uint32_t>(g.index(x, y + 1)), d = c + 1;
-      part.addTriangle(a, c, b);
-      part.addTriangle(b, c, d);
-    }
+      part.addVertex(worldFromMap(cellPosition(terrain, x, y)), terrainNormal(terrain, x, y),
+                     {(x + 0.5f) / g.width, (y + 0.5f) / g.height});
+  const std::vector<std::uint32_t> triangles = terrainTriangles(g);
+  part.indices.assign(triangles.begin(), triangles.end());
   return part;
 }
 

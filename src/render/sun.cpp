@@ -2,20 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 
+#include "core/frames.hpp"
 #include "sim/sunlight.hpp"
 
 namespace eco {
 
 glm::vec3 sunWorldDirection(double latitude_deg, SunTime time) {
-  const double hourAngle = (time.solarHour - 12.0) * std::numbers::pi / 12.0;
-  const glm::dvec3 enu = sunDirection(latitude_deg, solarDeclination(time.dayOfYear), hourAngle);
-  return glm::vec3(static_cast<float>(enu.x), static_cast<float>(enu.z),
-                   static_cast<float>(-enu.y));
+  return worldDirectionFromMap(sunDirection(latitude_deg, solarDeclination(time.dayOfYear),
+                                            hourAngleOf(time.solarHour)));
 }
 
 Lighting lightingFor(double latitude_deg, SunTime time) {

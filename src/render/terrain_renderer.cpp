@@ -1,6 +1,7 @@
 #include "render/terrain_renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -10,6 +11,7 @@
 
 #include "render/camera.hpp"
 #include "sim/condition_maps.hpp"
+#include "sim/terrain_mesh.hpp"
 
 namespace eco {
 namespace {
@@ -47,7 +49,7 @@ TerrainRenderer::TerrainRenderer(const Terrain& terrain)
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
       TerrainVertex& v = vertices[g.index(x, y)];
-      v.position = worldFromMap(g.eastOf(x), g.northOf(y), terrain.heightAt(x, y));
+      v.position = worldFromMap(cellPosition(terrain, x, y));
       v.normal = terrainNormal(terrain, x, y);
       v.mapUv = {(x + 0.5f) / g.width, (y + 0.5f) / g.height};
     }
@@ -61,11 +63,9 @@ TerrainRenderer::TerrainRenderer(const Terrain& terrain)
       glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
       for (int y = cy; y + 1 < g.height && y < cy + kChunkCells; ++y)
         for (int x = cx; x + 1 < g.width && x < cx + kChunkCells; ++x) {
-          const auto a = static_cast<std::uint32_t>(g.index(x, y)), b = a + 1,
-                     c = static_cast<std::uint32_t>(g.index(x, y + 1)), d = c + 1;
-          // Counter-clockwise seen from above (y up, z south).
-          indices.insert(indices.end(), {a, c, b, b, c, d});
-          for (std::uint32_t corner : {a, b, c, d}) {
+          const std::array<std::uint32_t, 6> square = squareTriangles(g, x, y);
+          indices.insert(indices.end(), square.begin(), square.end());
+          for (std::uint32_t corner : square) {
             lo = glm::min(lo, vertices[corner].position);
             hi = glm::max(hi, vertices[corner].position);
           }

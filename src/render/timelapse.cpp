@@ -61,12 +61,12 @@ double metresPerPixelAtCentre(const Camera& camera, const Terrain& terrain, int 
   const glm::vec3 d = camera.forward();
   for (double t = 1.0; t < 20000.0; t += std::max(1.0, 0.01 * t)) {
     const glm::vec3 p = camera.position + static_cast<float>(t) * d;
-    if (p.y <= terrain.altitudeAt(p.x, -p.z)) {
+    if (p.y <= groundBelow(terrain, p)) {
       distance = t;
       break;
     }
   }
-  return 2.0 * distance * std::tan(0.5 * glm::radians(camera.fovY_deg)) / height;
+  return 2.0 * distance * std::tan(0.5 * radians(camera.fovY_deg)) / height;
 }
 
 void drawOverlay(Image& frame, double year, double metresPerPixel) {

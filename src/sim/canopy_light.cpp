@@ -130,11 +130,8 @@ struct CanopyScene::Impl {
 };
 
 CanopyScene::CanopyScene(const Terrain& terrain) : impl_(std::make_unique<Impl>()) {
-  const Grid& g = terrain.grid;
   EmbreeDevice& device = embree();
-  RTCGeometry mesh = newTerrainGeometry(terrain, [&](int x, int y) {
-    return glm::vec3(g.eastOf(x), g.northOf(y), terrain.heightAt(x, y));
-  });
+  RTCGeometry mesh = newTerrainGeometry(terrain);
   // Dynamic: the terrain keeps its own BVH while the crowns are replaced every year.
   impl_->scene = rtcNewScene(device.device);
   rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_DYNAMIC);

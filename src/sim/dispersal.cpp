@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/frames.hpp"
+
 namespace eco {
 
 glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng) {
@@ -16,8 +18,7 @@ glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng) {
 }
 
 glm::dvec2 downwindOf(double from_deg) {
-  const double to = (from_deg + 180.0) * std::numbers::pi / 180.0;
-  return {std::sin(to), std::cos(to)};
+  return mapDirectionOfBearing(from_deg + 180.0);
 }
 
 }  // namespace eco

@@ -3,12 +3,10 @@
 // the first message and check() turns it into an exception after the call that failed.
 #pragma once
 
-#include <functional>
 #include <mutex>
 #include <string>
 
 #include <embree3/rtcore.h>
-#include <glm/vec3.hpp>
 
 #include "sim/terrain.hpp"
 
@@ -30,10 +28,8 @@ struct EmbreeDevice {
 
 EmbreeDevice& embree();
 
-// The terrain as a committed triangle geometry: a vertex at every cell centre, placed by
-// `position(x, y)`, and two triangles per grid square split along the diagonal from its
-// north-east to its south-west corner (the surface Terrain::altitudeAt interpolates).
-RTCGeometry newTerrainGeometry(const Terrain& terrain,
-                               const std::function<glm::vec3(int x, int y)>& position);
+// The terrain's triangles (terrain_mesh.hpp) in the map frame as a committed triangle
+// geometry.
+RTCGeometry newTerrainGeometry(const Terrain& terrain);
 
 }  // namespace eco

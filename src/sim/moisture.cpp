@@ -5,6 +5,8 @@
 #include <numeric>
 #include <queue>
 
+#include "core/angles.hpp"
+
 namespace eco {
 namespace {
 
@@ -81,11 +83,11 @@ Field flowAccumulation(const Terrain& terrain, const std::vector<double>& filled
 Field wetnessIndex(const Terrain& terrain, const Field& accumulation, const Field& slope_deg) {
   const Grid& g = terrain.grid;
   const double cellArea = g.dx_m * g.dy_m, cellWidth = std::sqrt(cellArea);
-  const double minTan = std::tan(0.1 * M_PI / 180.0);
+  const double minTan = std::tan(radians(0.1));
   Field twi(g.cellCount());
   for (std::size_t c = 0; c < twi.size(); ++c) {
     double a = accumulation[c] * cellArea / cellWidth;
-    double tanBeta = std::max(std::tan(slope_deg[c] * M_PI / 180.0), minTan);
+    double tanBeta = std::max(std::tan(radians(static_cast<double>(slope_deg[c]))), minTan);
     twi[c] = static_cast<float>(std::log(a / tanBeta));
   }
   return twi;

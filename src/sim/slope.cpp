@@ -6,6 +6,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "core/angles.hpp"
+
 namespace eco {
 
 namespace {
@@ -42,14 +44,13 @@ void computeSlopeAspect(const Terrain& terrain, Field& slope_deg, Field& aspect_
   const Grid& g = terrain.grid;
   slope_deg.assign(g.cellCount(), 0.0f);
   aspect_deg.assign(g.cellCount(), -1.0f);
-  constexpr double kDegrees = 180.0 / std::numbers::pi;
   tbb::parallel_for(0, g.height, [&](int y) {
     for (int x = 0; x < g.width; ++x) {
       Gradient d = hornGradient(terrain, x, y);
       double steepness = std::hypot(d.east, d.north);
-      slope_deg[g.index(x, y)] = static_cast<float>(std::atan(steepness) * kDegrees);
+      slope_deg[g.index(x, y)] = static_cast<float>(degrees(std::atan(steepness)));
       if (steepness < 1e-9) continue;
-      double aspect = std::atan2(-d.east, -d.north) * kDegrees;  // downhill, clockwise from north
+      double aspect = degrees(std::atan2(-d.east, -d.north));  // downhill, clockwise from north
       aspect_deg[g.index(x, y)] = static_cast<float>(aspect < 0.0 ? aspect + 360.0 : aspect);
     }
   });

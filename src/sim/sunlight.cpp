@@ -9,26 +9,22 @@
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
+#include "core/angles.hpp"
 #include "core/error.hpp"
 #include "sim/embree_device.hpp"
+#include "sim/terrain_mesh.hpp"
 
 namespace eco {
-namespace {
-
-constexpr double kRad = std::numbers::pi / 180.0;
-
-}  // namespace
-
 struct TerrainScene::Impl {
   RTCScene scene = nullptr;
 };
 
 double solarDeclination(double dayOfYear) {
-  return 23.44 * kRad * std::sin(2.0 * std::numbers::pi * (284.0 + dayOfYear) / 365.0);
+  return radians(23.44) * std::sin(2.0 * std::numbers::pi * (284.0 + dayOfYear) / 365.0);
 }
 
 glm::dvec3 sunDirection(double latitude_deg, double declination, double hourAngle) {
-  const double phi = latitude_deg * kRad;
+  const double phi = radians(latitude_deg);
   return glm::normalize(
       glm::dvec3(-std::cos(declination) * std::sin(hourAngle),
                  std::sin(declination) * std::cos(phi) -
@@ -39,7 +35,7 @@ glm::dvec3 sunDirection(double latitude_deg, double declination, double hourAngl
 
 SunPath makeSunPath(double latitude_deg, const SunlightSettings& settings) {
   SunPath path;
-  const double phi = latitude_deg * kRad;
+  const double phi = radians(latitude_deg);
   for (int d = 0; d < settings.days; ++d) {
     const double day = 365.0 * (d + 0.5) / settings.days;
     const double delta = solarDeclination(day);
@@ -70,7 +66,7 @@ std::vector<glm::dvec3> skyDirections(int count) {
 }
 
 glm::dvec3 planeNormal(double slope_deg, double aspect_deg) {
-  const double s = slope_deg * kRad, a = aspect_deg * kRad;
+  const double s = radians(slope_deg), a = radians(aspect_deg);
   return {std::sin(s) * std::sin(a), std::sin(s) * std::cos(a), std::cos(s)};
 }
 
@@ -93,8 +89,7 @@ TerrainScene::TerrainScene(const Terrain& terrain)
     : impl_(std::make_unique<Impl>()), terrain_(terrain) {
   const Grid& g = terrain.grid;
   EmbreeDevice& device = embree();
-  RTCGeometry mesh =
-      newTerrainGeometry(terrain, [this](int x, int y) { return cellPosition(x, y); });
+  RTCGeometry mesh = newTerrainGeometry(terrain);
   impl_->scene = rtcNewScene(device.device);
   rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
   rtcAttachGeometry(impl_->scene, mesh);
@@ -107,12 +102,6 @@ TerrainScene::TerrainScene(const Terrain& terrain)
 
 TerrainScene::~TerrainScene() {
   rtcReleaseScene(impl_->scene);
-}
-
-glm::vec3 TerrainScene::cellPosition(int x, int y) const {
-  // World: x east, y north (row 0 is the north edge), z up.
-  return {static_cast<float>(x * terrain_.grid.dx_m), static_cast<float>(-y * terrain_.grid.dy_m),
-          terrain_.heightAt(x, y)};
 }
 
 namespace {
@@ -171,7 +160,7 @@ void rowRays(const TerrainScene& scene, int y, const std::vector<glm::dvec3>& no
   const float lift = 0.01f * cell, tnear = 0.25f * cell;
   for (int x = 0; x < static_cast<int>(normals.size()); ++x) {
     if (glm::dot(normals[x], direction) <= 0.0) continue;  // the slope faces away: self-shaded
-    glm::vec3 origin = scene.cellPosition(x, y) + glm::vec3(0.0f, 0.0f, lift);
+    glm::vec3 origin = cellPosition(scene.terrain(), x, y) + glm::vec3(0.0f, 0.0f, lift);
     // Past the height where the rising ray clears the highest terrain nothing can block
     // it; the map's diagonal bounds near-horizontal rays.
     float clear = (scene.maxHeight() - origin.z + 1.0f) / static_cast<float>(direction.z);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -23,6 +24,11 @@ struct SunlightSettings {
 
 // Declination (radians) on a day of the year (Cooper 1969).
 double solarDeclination(double dayOfYear);
+// The hour angle (radians, 0 at solar noon, negative in the morning) of a solar time in
+// hours (12 = noon).
+constexpr double hourAngleOf(double solarHour) {
+  return (solarHour - 12.0) * std::numbers::pi / 12.0;
+}
 // The unit direction toward the sun at a latitude for a declination and an hour angle
 // (radians, 0 at solar noon, negative in the morning).
 glm::dvec3 sunDirection(double latitude_deg, double declination, double hourAngle);
@@ -45,8 +51,8 @@ double flatInsolation(const SunPath& sun);
 // Annual direct-beam insolation on an unshaded plane relative to horizontal, for the sun path.
 double unshadedDirectRatio(const SunPath& sun, glm::dvec3 normal);
 
-// The terrain as an Embree triangle mesh (two triangles per grid square, vertices at cell
-// centres) in one Embree device shared by the process.
+// The terrain's triangles (terrain_mesh.hpp, map frame) as an Embree scene in the one
+// Embree device of the process.
 class TerrainScene {
  public:
   explicit TerrainScene(const Terrain& terrain);
@@ -65,7 +71,7 @@ class TerrainScene {
   // The same rays one by one with rtcOccluded1: the plain reference loop of the benchmark.
   void occludedOneByOne(const std::vector<Ray>& rays, std::vector<std::uint8_t>& occluded) const;
 
-  glm::vec3 cellPosition(int x, int y) const;
+  const Terrain& terrain() const { return terrain_; }
   float cellSize() const {
     return static_cast<float>(std::min(terrain_.grid.dx_m, terrain_.grid.dy_m));
   }

@@ -6,22 +6,12 @@
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "sim/image_io.hpp"
+#include "sim/terrain_mesh.hpp"
 
 namespace eco {
 
 float Terrain::altitudeAt(double east_m, double north_m) const {
-  const double fx = std::clamp(east_m / grid.dx_m, 0.0, grid.width - 1.0);
-  const double fy = std::clamp((grid.height - 1) - north_m / grid.dy_m, 0.0, grid.height - 1.0);
-  const int x0 = std::clamp(static_cast<int>(fx), 0, std::max(grid.width - 2, 0));
-  const int y0 = std::clamp(static_cast<int>(fy), 0, std::max(grid.height - 2, 0));
-  const int x1 = std::min(x0 + 1, grid.width - 1), y1 = std::min(y0 + 1, grid.height - 1);
-  const double tx = fx - x0, ty = fy - y0;
-  // On the two triangles of the square split along its north-east to south-west diagonal,
-  // as the Embree scenes and the renderer build them, so a plant stands on that surface.
-  const double a = heightAt(x0, y0), b = heightAt(x1, y0), c = heightAt(x0, y1),
-               d = heightAt(x1, y1);
-  if (tx + ty <= 1.0) return static_cast<float>(a + tx * (b - a) + ty * (c - a));
-  return static_cast<float>(d + (1.0 - tx) * (c - d) + (1.0 - ty) * (b - d));
+  return altitudeOnTriangles(*this, east_m, north_m);
 }
 
 Terrain readHeightmap(const std::filesystem::path& file, double dx_m, double dy_m,

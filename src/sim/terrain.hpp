@@ -15,8 +15,8 @@ struct Terrain {
   Field height_m;  // altitude above sea level of each cell centre
 
   float heightAt(int x, int y) const { return height_m[grid.index(x, y)]; }
-  // Altitude at a map position (Grid::cellAt) on the triangulated surface through the cell
-  // centres, clamped at the edges.
+  // Altitude at a map position (Grid::cellAt) on the terrain's triangles (terrain_mesh.hpp),
+  // clamped at the edges.
   float altitudeAt(double east_m, double north_m) const;
 };
 

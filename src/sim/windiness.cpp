@@ -5,6 +5,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "core/frames.hpp"
+
 namespace eco {
 namespace {
 
@@ -33,15 +35,14 @@ Field upwindSlope(const Terrain& terrain, double from_deg, double searchDistance
       const double z0 = terrain.heightAt(x, y);
       double sum = 0.0;
       for (double sector : {-15.0, 0.0, 15.0}) {
-        const double bearing = (from_deg + sector) * M_PI / 180.0;
         // Upwind, in cells: east is +x, north is -y.
-        const double ux = std::sin(bearing) * step_m / g.dx_m,
-                     uy = -std::cos(bearing) * step_m / g.dy_m;
+        const glm::dvec2 upwind = mapDirectionOfBearing(from_deg + sector);
+        const double ux = upwind.x * step_m / g.dx_m, uy = -upwind.y * step_m / g.dy_m;
         double steepest = -90.0;
         for (int k = 1; k <= steps; ++k) {
           double h;
           if (!sampleHeight(terrain, x + ux * k, y + uy * k, h)) break;
-          steepest = std::max(steepest, std::atan2(h - z0, k * step_m) * 180.0 / M_PI);
+          steepest = std::max(steepest, degrees(std::atan2(h - z0, k * step_m)));
         }
         sum += steepest == -90.0 ? 0.0 : steepest;  // at the upwind edge: nothing known, neutral
       }

@@ -1,4 +1,5 @@
 #include "model/leaves.hpp"
+#include "core/angles.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -27,7 +28,7 @@ std::vector<Leaf> place(LeafDistribution distribution, int count) {
 
 // Azimuth of the blade around the twig axis (+x), degrees in [0, 360).
 double azimuth_deg(const Leaf& leaf) {
-  double a = std::atan2(-leaf.direction.z, leaf.direction.y) * 180.0 / std::numbers::pi;
+  double a = degrees(std::atan2(-leaf.direction.z, leaf.direction.y));
   return a < 0 ? a + 360.0 : a;
 }
 

@@ -8,6 +8,7 @@
 
 #include "model/local_params.hpp"
 #include "test_support.hpp"
+#include "core/angles.hpp"
 
 namespace eco {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 double angleBetween_deg(glm::vec3 a, glm::vec3 b) {
   double c =
       std::clamp(static_cast<double>(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0);
-  return std::acos(c) * 180.0 / std::numbers::pi;
+  return degrees(std::acos(c));
 }
 
 struct Children {

@@ -40,7 +40,7 @@ TEST(CameraPath, TheFlyoverMovesNorthAboveTheGround) {
     const Camera c = flyover(u);
     EXPECT_GT(-c.position.z, previousNorth);
     previousNorth = -c.position.z;
-    EXPECT_GE(c.position.y, terrain.altitudeAt(c.position.x, -c.position.z) + 80.0f - 1e-3f);
+    EXPECT_GE(c.position.y, groundBelow(terrain, c.position) + 80.0f - 1e-3f);
   }
 }
 
@@ -57,7 +57,7 @@ TEST(CameraPath, KeyframesAreHitAtTheirTimesAndTheGroundIsNeverEntered) {
   EXPECT_NEAR(last.position.y, terrain.altitudeAt(300, 100) + kCameraClearance_m, 1e-3f);
   for (double u = 0.0; u <= 1.0; u += 0.01) {
     const Camera c = path(u);
-    EXPECT_GE(c.position.y, terrain.altitudeAt(c.position.x, -c.position.z) + 2.0f - 1e-3f);
+    EXPECT_GE(c.position.y, groundBelow(terrain, c.position) + 2.0f - 1e-3f);
   }
 }
 

@@ -1,4 +1,5 @@
 #include "render/culling.hpp"
+#include "core/angles.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,7 +9,7 @@ namespace {
 
 TEST(Frustum, KeepsSpheresInsideOrTouchingAndDropsThoseOutside) {
   // Looking down -z from the origin, 90 degrees, near 1, far 100.
-  const glm::mat4 m = glm::perspective(glm::radians(90.0f), 1.0f, 1.0f, 100.0f);
+  const glm::mat4 m = glm::perspective(radians(90.0f), 1.0f, 1.0f, 100.0f);
   const Frustum f = Frustum::fromMatrix(m);
   EXPECT_TRUE(f.intersectsSphere({0, 0, -10}, 0.5f));
   EXPECT_FALSE(f.intersectsSphere({0, 0, 10}, 0.5f));     // behind

@@ -70,7 +70,7 @@ TEST(ForestGltf, EveryTreeIsOneInstanceWithConsistentAccessors) {
       EXPECT_NEAR(glm::length(q), 1.0f, 1e-5f);
     for (const glm::vec3& t : accessorValues<glm::vec3>(model, translation)) {
       // Each instance stands on the terrain.
-      EXPECT_NEAR(t.y, scene.terrain.altitudeAt(t.x, -t.z), 1e-3f);
+      EXPECT_NEAR(t.y, groundBelow(scene.terrain, t), 1e-3f);
     }
     instances += count;
   }

@@ -1,4 +1,5 @@
 #include "render/sun.hpp"
+#include "core/angles.hpp"
 
 #include <cmath>
 
@@ -11,7 +12,7 @@ namespace {
 TEST(Sun, StandsInTheSouthAtNoonAtTheComplementOfTheLatitudeAtTheEquinox) {
   // Day 81 is close to the March equinox (declination ~0 by Cooper's formula).
   const glm::vec3 s = sunWorldDirection(46.0, {81.0, 12.0});
-  EXPECT_NEAR(glm::degrees(std::asin(s.y)), 44.0, 0.5);
+  EXPECT_NEAR(degrees(std::asin(s.y)), 44.0, 0.5);
   EXPECT_NEAR(s.x, 0.0f, 1e-4f);
   EXPECT_GT(s.z, 0.0f);  // z is south
 }
@@ -21,7 +22,7 @@ TEST(Sun, RisesInTheEastAndSetsInTheWest) {
   EXPECT_LT(sunWorldDirection(46.0, {172.0, 16.0}).x, -0.5f);
   EXPECT_LT(sunWorldDirection(46.0, {172.0, 0.0}).y, 0.0f);  // midnight
   // Midsummer noon at 46 N: 90 - 46 + 23.44.
-  EXPECT_NEAR(glm::degrees(std::asin(sunWorldDirection(46.0, {172.0, 12.0}).y)), 67.4, 0.3);
+  EXPECT_NEAR(degrees(std::asin(sunWorldDirection(46.0, {172.0, 12.0}).y)), 67.4, 0.3);
 }
 
 TEST(Sun, LightDimsAndReddensTowardTheHorizonAndGoesAtNight) {

@@ -5,6 +5,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "render_support.hpp"
+#include "core/angles.hpp"
 
 namespace eco {
 namespace {
@@ -38,7 +39,7 @@ TEST(Timelapse, TheScaleBarMeasuresTheGroundAtTheCentre) {
   camera.position = worldFromMap(320, 320, 600);  // 500 m above the ground
   camera.pitch_deg = -90.0f;
   EXPECT_NEAR(metresPerPixelAtCentre(camera, terrain, 500),
-              2.0 * 500.0 * std::tan(glm::radians(25.0)) / 500.0, 0.02);
+              2.0 * 500.0 * std::tan(radians(25.0)) / 500.0, 0.02);
   Image frame(200, 100);
   const Image blank = frame;
   drawOverlay(frame, 12.0, 1.0);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "terrain_support.hpp"
+#include "core/angles.hpp"
 
 namespace eco {
 
@@ -19,7 +20,7 @@ TEST(Slope, FlatPlaneIsLevel) {
 }
 
 TEST(Slope, TiltedPlaneOfKnownSlopeAndAspect) {
-  const double tan20 = std::tan(20.0 * M_PI / 180.0);
+  const double tan20 = std::tan(radians(20.0));
   // Rising toward the east: it faces (falls toward) the west.
   Terrain west =
       test::analyticTerrain(30, 30, 10, 10, [&](double e, double) { return 100.0 + tan20 * e; });
@@ -37,12 +38,12 @@ TEST(Slope, NonSquareCells) {
   Field slope, aspect;
   computeSlopeAspect(south, slope, aspect);
   const std::size_t inner = south.grid.index(6, 6);
-  EXPECT_NEAR(slope[inner], std::atan(0.5) * 180.0 / M_PI, 0.01);
+  EXPECT_NEAR(slope[inner], degrees(std::atan(0.5)), 0.01);
   EXPECT_NEAR(aspect[inner], 180.0, 0.01);
   // The same plane on the other axis: a different cell size must not change the slope.
   Terrain east = test::analyticTerrain(12, 12, 30, 10, [](double e, double) { return 0.5 * e; });
   computeSlopeAspect(east, slope, aspect);
-  EXPECT_NEAR(slope[east.grid.index(6, 6)], std::atan(0.5) * 180.0 / M_PI, 0.01);
+  EXPECT_NEAR(slope[east.grid.index(6, 6)], degrees(std::atan(0.5)), 0.01);
 }
 
 }  // namespace eco

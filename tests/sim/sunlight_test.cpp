@@ -8,6 +8,7 @@
 
 #include "sim/slope.hpp"
 #include "terrain_support.hpp"
+#include "core/angles.hpp"
 
 namespace eco {
 namespace {
@@ -16,11 +17,11 @@ namespace {
 // horizontal ground at latitude phi - beta (phi + beta) receives, but only between the true
 // sunrise and sunset at phi. Summed over a year of days.
 double annualClosedForm(double latitude_deg, double equivalent_deg) {
-  const double phi = latitude_deg * M_PI / 180.0, phiE = equivalent_deg * M_PI / 180.0;
+  const double phi = radians(latitude_deg), phiE = radians(equivalent_deg);
   double sum = 0.0;
   for (int day = 0; day < 3650; ++day) {
     double n = (day + 0.5) / 10.0;
-    double delta = 23.44 * M_PI / 180.0 * std::sin(2.0 * M_PI * (284.0 + n) / 365.0);
+    double delta = radians(23.44) * std::sin(2.0 * kPi * (284.0 + n) / 365.0);
     double sunset = std::acos(std::clamp(-std::tan(phi) * std::tan(delta), -1.0, 1.0));
     double lit =
         std::min(sunset, std::acos(std::clamp(-std::tan(phiE) * std::tan(delta), -1.0, 1.0)));
@@ -56,7 +57,7 @@ TEST(SunPath, DirectionsAreAboveTheHorizonAndWeighted) {
   // Noon of the summer solstice: altitude 90 - 46 + 23.44.
   SunPath june = makeSunPath(46.0, {.days = 365, .hoursPerDay = 1});
   double highest = 0.0;
-  for (const auto& d : june.directions) highest = std::max(highest, std::asin(d.z) * 180.0 / M_PI);
+  for (const auto& d : june.directions) highest = std::max(highest, degrees(std::asin(d.z)));
   EXPECT_NEAR(highest, 90.0 - 46.0 + 23.44, 0.05);
 }
 
@@ -72,7 +73,7 @@ TEST(Sunlight, FlatGroundIsTheUnshadedReference) {
 }
 
 TEST(Sunlight, SouthAndNorthSlopesMatchTheClosedForm) {
-  const double latitude = 46.0, tilt = 30.0, t = std::tan(tilt * M_PI / 180.0);
+  const double latitude = 46.0, tilt = 30.0, t = std::tan(radians(tilt));
   SunlightSettings fine{.days = 48, .hoursPerDay = 48};
   // Rising northward: faces south. Rising southward: faces north.
   Terrain south =
@@ -133,7 +134,7 @@ TEST(Sunlight, IdenticalWhateverTheThreadCount) {
 TEST(Sunlight, PlaneNormalAndUnshadedRatio) {
   glm::dvec3 n = planeNormal(30.0, 180.0);  // faces south
   EXPECT_NEAR(n.y, -0.5, 1e-12);
-  EXPECT_NEAR(n.z, std::cos(30.0 * M_PI / 180.0), 1e-12);
+  EXPECT_NEAR(n.z, std::cos(radians(30.0)), 1e-12);
   SunPath sun = makeSunPath(46.0, {});
   EXPECT_NEAR(unshadedDirectRatio(sun, {0, 0, 1}), 1.0, 1e-12);
 }

@@ -1,0 +1,48 @@
+#include "sim/terrain_mesh.hpp"
+
+#include <algorithm>
+
+namespace eco {
+
+std::array<std::uint32_t, 6> squareTriangles(const Grid& grid, int x, int y) {
+  const auto nw = static_cast<std::uint32_t>(grid.index(x, y)), ne = nw + 1;
+  const auto sw = static_cast<std::uint32_t>(grid.index(x, y + 1)), se = sw + 1;
+  return {nw, sw, ne, ne, sw, se};
+}
+
+std::vector<std::uint32_t> terrainTriangles(const Grid& grid) {
+  std::vector<std::uint32_t> indices;
+  indices.reserve(static_cast<std::size_t>(std::max(grid.width - 1, 0)) *
+                  std::max(grid.height - 1, 0) * 6);
+  for (int y = 0; y + 1 < grid.height; ++y)
+    for (int x = 0; x + 1 < grid.width; ++x) {
+      const std::array<std::uint32_t, 6> square = squareTriangles(grid, x, y);
+      indices.insert(indices.end(), square.begin(), square.end());
+    }
+  return indices;
+}
+
+glm::vec3 cellPosition(const Terrain& terrain, int x, int y) {
+  const Grid& g = terrain.grid;
+  return {static_cast<float>(g.eastOf(x)), static_cast<float>(g.northOf(y)),
+          terrain.heightAt(x, y)};
+}
+
+float altitudeOnTriangles(const Terrain& terrain, double east_m, double north_m) {
+  const Grid& grid = terrain.grid;
+  // The square (x0, y0)..(x1, y1) and the position inside it: tx toward the east, ty toward
+  // the south (rows count from the north edge).
+  const double fx = std::clamp(east_m / grid.dx_m, 0.0, grid.width - 1.0);
+  const double fy = std::clamp((grid.height - 1) - north_m / grid.dy_m, 0.0, grid.height - 1.0);
+  const int x0 = std::clamp(static_cast<int>(fx), 0, std::max(grid.width - 2, 0));
+  const int y0 = std::clamp(static_cast<int>(fy), 0, std::max(grid.height - 2, 0));
+  const int x1 = std::min(x0 + 1, grid.width - 1), y1 = std::min(y0 + 1, grid.height - 1);
+  const double tx = fx - x0, ty = fy - y0;
+  const double nw = terrain.heightAt(x0, y0), ne = terrain.heightAt(x1, y0),
+               sw = terrain.heightAt(x0, y1), se = terrain.heightAt(x1, y1);
+  // The triangle (NW, SW, NE) holds tx + ty <= 1, the triangle (NE, SW, SE) the rest.
+  if (tx + ty <= 1.0) return static_cast<float>(nw + tx * (ne - nw) + ty * (sw - nw));
+  return static_cast<float>(se + (1.0 - tx) * (sw - se) + (1.0 - ty) * (ne - se));
+}
+
+}  // namespace eco

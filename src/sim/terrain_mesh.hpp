@@ -1,0 +1,31 @@
+// The one triangulation of a heightmap: a vertex at every cell centre and two triangles per
+// grid square, split along the square's diagonal from its north-east to its south-west
+// corner, counter-clockwise seen from above. Terrain::altitudeAt interpolates on these
+// triangles, both Embree scenes (sunniness, canopy light) trace them, and the renderer and
+// the glTF export draw them, so a plant stands exactly on the ground every one of them sees.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "sim/terrain.hpp"
+
+namespace eco {
+
+// The corner cells of the two triangles of the square whose north-west corner is cell
+// (x, y): (NW, SW, NE) and (NE, SW, SE), as indices into the grid's cells.
+std::array<std::uint32_t, 6> squareTriangles(const Grid& grid, int x, int y);
+// Every square's triangles, square by square in row-major order: 6 indices per square.
+std::vector<std::uint32_t> terrainTriangles(const Grid& grid);
+
+// The vertex of cell (x, y) in the map frame (east, north, altitude).
+glm::vec3 cellPosition(const Terrain& terrain, int x, int y);
+
+// The altitude at a map position on the triangles (the edge cells' triangles continued
+// flat past the edges).
+float altitudeOnTriangles(const Terrain& terrain, double east_m, double north_m);
+
+}  // namespace eco

@@ -22,7 +22,8 @@ MeshPart terrainPart(const Terrain& terrain) {
   part.material = MaterialKind::Bark;  // unused: the terrain has its own material
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x)
-      part.addVertex(worldFromMap(cellPosition(terrain, x, y)), terrainNormal(terrain, x, y),
+      part.addVertex(worldFromMap(cellPosition(terrain, x, y)),
+                     worldDirectionFromMap(terrainNormal(terrain, x, y)),
                      {(x + 0.5f) / g.width, (y + 0.5f) / g.height});
   const std::vector<std::uint32_t> triangles = terrainTriangles(g);
   part.indices.assign(triangles.begin(), triangles.end());

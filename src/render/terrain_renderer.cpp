@@ -24,18 +24,6 @@ struct TerrainVertex {
 
 }  // namespace
 
-glm::vec3 terrainNormal(const Terrain& terrain, int x, int y) {
-  const Grid& g = terrain.grid;
-  const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, g.width - 1);
-  const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, g.height - 1);
-  const float dEast =
-      (terrain.heightAt(x1, y) - terrain.heightAt(x0, y)) / static_cast<float>((x1 - x0) * g.dx_m);
-  // Row y grows southward, and so does world z.
-  const float dSouth =
-      (terrain.heightAt(x, y1) - terrain.heightAt(x, y0)) / static_cast<float>((y1 - y0) * g.dy_m);
-  return glm::normalize(glm::vec3(-dEast, 1.0f, -dSouth));
-}
-
 TerrainRenderer::TerrainRenderer(const Terrain& terrain)
     : grid_(terrain.grid),
       program_({{GL_VERTEX_SHADER, "terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain.frag"}}),
@@ -50,7 +38,7 @@ TerrainRenderer::TerrainRenderer(const Terrain& terrain)
     for (int x = 0; x < g.width; ++x) {
       TerrainVertex& v = vertices[g.index(x, y)];
       v.position = worldFromMap(cellPosition(terrain, x, y));
-      v.normal = terrainNormal(terrain, x, y);
+      v.normal = worldDirectionFromMap(terrainNormal(terrain, x, y));
       v.mapUv = {(x + 0.5f) / g.width, (y + 0.5f) / g.height};
     }
   // Triangles in square chunks of kChunkCells, each with a bounding sphere for culling.

@@ -1,5 +1,5 @@
-// The ground: a triangle mesh through the heightmap's cell centres with smooth normals,
-// coloured by altitude and slope in the shader, or by a condition map as an overlay.
+// The ground: the terrain's triangles and normals (sim/terrain_mesh.hpp), coloured by
+// altitude and slope in the shader, or by a condition map as an overlay.
 #pragma once
 
 #include <optional>
@@ -15,10 +15,6 @@
 #include "sim/terrain.hpp"
 
 namespace eco {
-
-// The smooth normal (world frame) at a cell centre: central differences of the heights, one
-// sided at the edges. The renderer and the glTF export share it.
-glm::vec3 terrainNormal(const Terrain& terrain, int x, int y);
 
 class TerrainRenderer {
  public:

@@ -2,7 +2,37 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 namespace eco {
+namespace {
+
+// Height at (x, y), continued linearly past the edges (2 z_edge - z_inside).
+double extendedHeight(const Terrain& terrain, int x, int y) {
+  const Grid& g = terrain.grid;
+  if (x < 0) return 2.0 * extendedHeight(terrain, 0, y) - extendedHeight(terrain, -x, y);
+  if (x >= g.width)
+    return 2.0 * extendedHeight(terrain, g.width - 1, y) -
+           extendedHeight(terrain, 2 * (g.width - 1) - x, y);
+  if (y < 0) return 2.0 * extendedHeight(terrain, x, 0) - extendedHeight(terrain, x, -y);
+  if (y >= g.height)
+    return 2.0 * extendedHeight(terrain, x, g.height - 1) -
+           extendedHeight(terrain, x, 2 * (g.height - 1) - y);
+  return terrain.heightAt(x, y);
+}
+
+}  // namespace
+
+Gradient terrainGradient(const Terrain& terrain, int x, int y) {
+  const Grid& g = terrain.grid;
+  auto z = [&](int dx, int dy) { return extendedHeight(terrain, x + dx, y + dy); };
+  // Row -1 is the northern neighbour row (row 0 of the grid is the north edge).
+  double east = ((z(1, -1) + 2.0 * z(1, 0) + z(1, 1)) - (z(-1, -1) + 2.0 * z(-1, 0) + z(-1, 1))) /
+                (8.0 * g.dx_m);
+  double north = ((z(-1, -1) + 2.0 * z(0, -1) + z(1, -1)) - (z(-1, 1) + 2.0 * z(0, 1) + z(1, 1))) /
+                 (8.0 * g.dy_m);
+  return {east, north};
+}
 
 std::array<std::uint32_t, 6> squareTriangles(const Grid& grid, int x, int y) {
   const auto nw = static_cast<std::uint32_t>(grid.index(x, y)), ne = nw + 1;
@@ -26,6 +56,11 @@ glm::vec3 cellPosition(const Terrain& terrain, int x, int y) {
   const Grid& g = terrain.grid;
   return {static_cast<float>(g.eastOf(x)), static_cast<float>(g.northOf(y)),
           terrain.heightAt(x, y)};
+}
+
+glm::dvec3 terrainNormal(const Terrain& terrain, int x, int y) {
+  const Gradient g = terrainGradient(terrain, x, y);
+  return glm::normalize(glm::dvec3(-g.east, -g.north, 1.0));
 }
 
 float altitudeOnTriangles(const Terrain& terrain, double east_m, double north_m) {

@@ -24,6 +24,19 @@ std::vector<std::uint32_t> terrainTriangles(const Grid& grid);
 // The vertex of cell (x, y) in the map frame (east, north, altitude).
 glm::vec3 cellPosition(const Terrain& terrain, int x, int y);
 
+// The height gradient of a cell: dz/dx east and dz/dy north, metres per metre, by Horn's
+// (1981) third-order finite differences on the 3 x 3 neighbourhood with separate east-west
+// and north-south cell sizes. Past the edges the surface is continued linearly, so edge
+// cells of a plane get the plane's exact gradient.
+struct Gradient {
+  double east = 0.0;
+  double north = 0.0;
+};
+Gradient terrainGradient(const Terrain& terrain, int x, int y);
+// The unit normal of cell (x, y) in the map frame, from its gradient: what slope and aspect
+// describe and what the renderer and the glTF export shade.
+glm::dvec3 terrainNormal(const Terrain& terrain, int x, int y);
+
 // The altitude at a map position on the triangles (the edge cells' triangles continued
 // flat past the edges).
 float altitudeOnTriangles(const Terrain& terrain, double east_m, double north_m);

@@ -22,16 +22,6 @@ Image renderFromAbove(SceneRenderer& renderer, int size) {
   return readPixels(size, size);
 }
 
-TEST(TerrainRenderer, NormalsOfPlanesAreExactEvenAtTheEdges) {
-  Terrain terrain = test::flatTerrain(9, 10.0);
-  EXPECT_EQ(terrainNormal(terrain, 0, 0), glm::vec3(0, 1, 0));
-  // Rising 1 m per 2 m eastward (26.6 degrees): the normal leans west.
-  for (int y = 0; y < 9; ++y)
-    for (int x = 0; x < 9; ++x) terrain.height_m[terrain.grid.index(x, y)] = 5.0f * x;
-  const glm::vec3 expected = glm::normalize(glm::vec3(-0.5f, 1.0f, 0.0f));
-  for (int x : {0, 4, 8}) EXPECT_LT(glm::distance(terrainNormal(terrain, x, 3), expected), 1e-6f);
-}
-
 TEST(TerrainRenderer, IsOneTrianglePairPerGridSquare) {
   test::useHeadlessGl();
   TerrainRenderer terrain(test::flatTerrain(33, 10.0));

@@ -8,6 +8,7 @@
 #include "core/random.hpp"
 #include "sim/embree_device.hpp"
 #include "sim/scenario.hpp"
+#include "terrain_support.hpp"
 
 namespace eco {
 namespace {
@@ -89,6 +90,20 @@ TEST(TerrainMesh, TheSquaresSplitAlongTheNorthEastToSouthWestDiagonal) {
   const Grid g{3, 3, 1.0, 1.0};
   // Square (0, 0): NW = 0, NE = 1, SW = 3, SE = 4; both triangles share NE and SW.
   EXPECT_EQ(squareTriangles(g, 0, 0), (std::array<std::uint32_t, 6>{0, 3, 1, 1, 3, 4}));
+}
+
+TEST(TerrainMesh, NormalsOfPlanesAreExactEvenAtTheEdges) {
+  Terrain terrain = test::analyticTerrain(9, 9, 10, 10, [](double, double) { return 100.0; });
+  EXPECT_EQ(terrainNormal(terrain, 0, 0), glm::dvec3(0, 0, 1));
+  // Rising 1 m per 2 m eastward (26.6 degrees): the normal leans west.
+  terrain = test::analyticTerrain(9, 9, 10, 10, [](double east, double) { return 0.5 * east; });
+  const glm::dvec3 expected = glm::normalize(glm::dvec3(-0.5, 0.0, 1.0));
+  for (int x : {0, 4, 8})
+    for (int y : {0, 3, 8}) EXPECT_LT(glm::distance(terrainNormal(terrain, x, y), expected), 1e-12);
+  // Falling toward the north on non-square cells: the normal leans north.
+  terrain = test::analyticTerrain(9, 9, 10, 30, [](double, double north) { return 0.25 * north; });
+  EXPECT_LT(glm::distance(terrainNormal(terrain, 8, 0),
+                          glm::normalize(glm::dvec3(0.0, -0.25, 1.0))), 1e-12);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/data_paths.hpp"
+#include "core/frames.hpp"
 #include "model/lod.hpp"
 #include "model/tree_export.hpp"
 #include "model/tree_generator.hpp"
@@ -38,7 +39,7 @@ void runTree(const TreeArguments& args) {
   options.windTime = args.time;
   options.windDirected = args.windDirected;
   options.windUndirected = args.windUndirected;
-  if (args.windFrom_deg) options.windDirection = windTowardFromBearing(*args.windFrom_deg);
+  if (args.windFrom_deg) options.windDirection = worldDownwindOf(*args.windFrom_deg);
   const int lod = args.lod.value_or(species.strand.lod);
 
   auto start = Clock::now();

@@ -48,6 +48,14 @@ inline glm::dvec3 worldDirectionOfBearing(double bearing_deg) {
   return {d.x, 0.0, -d.y};
 }
 
+// Winds are named by the bearing they come from; these are the directions they blow toward.
+inline glm::dvec2 mapDownwindOf(double windFrom_deg) {
+  return mapDirectionOfBearing(windFrom_deg + 180.0);
+}
+inline glm::dvec3 worldDownwindOf(double windFrom_deg) {
+  return worldDirectionOfBearing(windFrom_deg + 180.0);
+}
+
 // The bearing a world direction points to (its horizontal part), degrees in (-180, 180].
 inline float bearingOfWorldDirection(glm::vec3 direction) {
   return degrees(std::atan2(direction.x, -direction.z));

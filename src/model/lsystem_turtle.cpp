@@ -331,6 +331,7 @@ TreeSkeleton interpretTree(const LSystem& system, const ModuleString& string,
   TreeSkeleton skeleton;
   SkeletonBuilder builder(system, skeleton);
   builder.interpret(string);
+  deriveJoints(skeleton);
   if (stats) *stats = builder.stats;
   return skeleton;
 }

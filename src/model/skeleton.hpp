@@ -24,6 +24,17 @@ struct BranchSegment {
   std::int32_t strands = 1;  // S_0
   float windPhaseX = 0.0f;   // R_x, R_z of the branch node at this segment's tip, radians
   float windPhaseZ = 0.0f;
+  // How the segment hangs from its parent at rest, in the order of Algorithm 1 (Zamuda et
+  // al.): in the parent's frame it turns by gravimorphism toward the down vertical, by
+  // `twist` (the phyllotaxis alpha_p), then by the sway about x and by bend + sway about z.
+  // model/wind.hpp poses frame and start from these; the generators fill them.
+  glm::mat3 twist{1.0f};
+  double bend_deg = 0.0;           // the branching angle: +alpha_1 (major) or -alpha_2 (minor)
+  double gravimorphism_deg = 0.0;  // alpha_m of the parent's split
+  // Where it starts: at its parent's tip, or `offset_parent` from the parent's start in the
+  // parent's frame (an L-system may start a branch anywhere).
+  bool atParentTip = true;
+  glm::vec3 offset_parent{0.0f};
 
   glm::vec3 axis() const { return frame[1]; }
   glm::vec3 end() const { return start + frame[1] * length_m; }
@@ -58,5 +69,9 @@ struct SkeletonMeasures {
 };
 
 SkeletonMeasures measure(const TreeSkeleton& skeleton);
+
+// Fills every segment's joint (twist and offset) from the frames and starts a generator
+// built at rest, for a generator that places segments directly (the L-system turtle).
+void deriveJoints(TreeSkeleton& skeleton);
 
 }  // namespace eco

@@ -44,15 +44,18 @@ LocalGraphs parseGraphs(TomlTable& local) {
 }
 
 // EcoMod's wind keys, shared by [strand] and [lsystem]; every one is optional.
-void parseWind(TomlTable& table, StrandParams& p) {
-  p.windDirected = table.number("wind_directed_wg", 0.0, {0.0, 10.0});
-  p.windUndirected = table.number("wind_undirected_ws", 0.0, {0.0, 10.0});
-  auto w = table.numbers("wind_direction", 3, std::vector<double>{0.0, 1.0, 0.0});
-  p.windDirection = glm::dvec3(w[0], w[1], w[2]);
-  p.flexibility = table.number("flexibility_kf", 1.0, {0.0, 1.0});
+WindParams parseWind(TomlTable& table) {
+  WindParams p;
+  p.directed_wg = table.number("wind_directed_wg", p.directed_wg, {0.0, 10.0});
+  p.undirected_ws = table.number("wind_undirected_ws", p.undirected_ws, {0.0, 10.0});
+  auto w = table.numbers("wind_direction", 3,
+                         std::vector<double>{p.direction.x, p.direction.y, p.direction.z});
+  p.direction = glm::dvec3(w[0], w[1], w[2]);
+  p.flexibility = table.number("flexibility_kf", p.flexibility, {0.0, 1.0});
+  return p;
 }
 
-void parseStrand(TomlTable& root, StrandParams& p) {
+void parseStrand(TomlTable& root, StrandParams& p, WindParams& wind) {
   std::optional<TomlTable> strand = root.table("strand");
   if (!strand) root.fail("strand", "missing required table [strand]");
 
@@ -66,7 +69,7 @@ void parseStrand(TomlTable& root, StrandParams& p) {
   p.leafSize_m = strand->number("leaf_size_m", {}, {0.0, 0.3});
   p.leafDensity = strand->number("leaf_density", {}, {0.0, 30.0});
   p.leafDistribution = parseDistribution(*strand, "leaf_distribution");
-  parseWind(*strand, p);
+  wind = parseWind(*strand);
   p.lod = static_cast<int>(strand->integer("lod", 0, {0, 2}));
   std::optional<TomlTable> local = strand->table("local");
   if (!local) strand->fail("local", "missing required table [strand.local]");
@@ -74,10 +77,9 @@ void parseStrand(TomlTable& root, StrandParams& p) {
   strand->finish();
 }
 
-// Also reads EcoMod's wind parameters into `wind`, which the skeleton wind applies to
-// L-system trees.
+// Also reads EcoMod's wind parameters, which bend L-system trees as they do strand trees.
 LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& speciesFile,
-                             StrandParams& wind) {
+                             WindParams& wind) {
   LSystemTree tree;
   tree.grammarFile = speciesFile.parent_path() / table.string("file");
   if (!std::filesystem::is_regular_file(tree.grammarFile))
@@ -86,7 +88,7 @@ LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& spec
   tree.iterations =
       static_cast<int>(table.integer("iterations", grammar->iterations, {1, kMaxIterations}));
   tree.unit_m = table.number("unit_m", grammar->turtle.unit_m, {1e-6, 1e6});
-  parseWind(table, wind);
+  wind = parseWind(table);
   // A species must be a plant: its mature tree has to draw wood.
   DeriveOptions mature;
   mature.iterations = tree.iterations;
@@ -129,11 +131,11 @@ Species loadSpecies(const std::filesystem::path& file) {
     species.generator = TreeGenerator::LSystem;
     std::optional<TomlTable> table = root.table("lsystem");
     if (!table) root.fail("lsystem", "generator = \"lsystem\" needs a table [lsystem]");
-    species.lsystem = parseLSystemTree(*table, file, species.strand);
+    species.lsystem = parseLSystemTree(*table, file, species.wind);
   } else if (generator != "strand") {
     root.fail("generator", "unknown generator '" + generator + "' (expected strand or lsystem)");
   } else {
-    parseStrand(root, species.strand);
+    parseStrand(root, species.strand, species.wind);
   }
 
   if (std::optional<TomlTable> variation = root.table("variation")) {

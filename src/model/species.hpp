@@ -42,12 +42,16 @@ struct StrandParams {
   double leafSize_m = 0.2;        // l_l
   double leafDensity = 5.0;       // rho_l, leaves per terminal segment
   LeafDistribution leafDistribution = LeafDistribution::Spiral;  // l_type
-  double windDirected = 0.0;          // w_g, degrees of tilt per unit strand fraction
-  double windUndirected = 0.0;        // w_s, degrees of sway per metre of base branch
-  glm::dvec3 windDirection{0, 1, 0};  // w, toward which the wind blows, tree frame (y up)
-  double flexibility = 1.0;           // k_f; sway scales with (1 - k_f)
-  int lod = 0;                        // l_LOD, the paper's level of detail (default --lod)
+  int lod = 0;  // l_LOD, the paper's level of detail (default --lod)
   LocalGraphs graphs;
+};
+
+// EcoMod's wind parameters, which bend every generator's trees (model/wind.hpp).
+struct WindParams {
+  double directed_wg = 0.0;             // w_g, degrees of tilt per unit strand fraction
+  double undirected_ws = 0.0;           // w_s, degrees of sway per metre of base branch
+  glm::dvec3 direction{0.0, 1.0, 0.0};  // w, toward which the wind blows, tree frame (y up)
+  double flexibility = 1.0;             // k_f; sway scales with (1 - k_f)
 };
 
 // Differences between individuals of one species (not in the paper; see docs/model.md).
@@ -85,6 +89,7 @@ struct Species {
   TreeGenerator generator = TreeGenerator::Strand;
   StrandParams strand;  // the strand model's parameters; defaults for L-system species
   LSystemTree lsystem;
+  WindParams wind;  // from [strand] or [lsystem]
   Variation variation;
   Appearance appearance;
   std::optional<Ecology> ecology;  // [ecology]: needed to plant the species in an ecosystem

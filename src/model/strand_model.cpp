@@ -9,10 +9,10 @@
 #include <glm/matrix.hpp>
 
 #include "core/error.hpp"
-#include "core/frames.hpp"
 #include "core/random.hpp"
 #include "model/leaves.hpp"
 #include "model/local_params.hpp"
+#include "model/wind.hpp"
 #include "core/rotation.hpp"
 
 namespace eco {
@@ -99,10 +99,6 @@ std::vector<Node> splitStrands(const Species& species, std::uint64_t seed) {
 
 }  // namespace
 
-glm::dvec3 windTowardFromBearing(double fromDeg) {
-  return worldDirectionOfBearing(fromDeg + 180.0);
-}
-
 TreeSkeleton buildStrandTree(const Species& species, const TreeBuildOptions& options) {
   TreeSkeleton skeleton;
   buildStrandTreeInto(species, options, skeleton);
@@ -130,20 +126,10 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
   for (std::size_t i = 0; i < nodes.size(); ++i)
     progress[i] = mature ? 1.0 : std::clamp(development * orders - nodes[i].w, 0.0, 1.0);
 
-  const double wg = options.windDirected.value_or(p.windDirected);
-  const double ws = options.windUndirected.value_or(p.windUndirected);
-  const glm::dvec3 windDirection = options.windDirection.value_or(p.windDirection);
-  const glm::vec3 wind =
-      glm::length(windDirection) > 0.0 ? glm::vec3(glm::normalize(windDirection)) : glm::vec3(0.0f);
-  const glm::vec3 gravity(0.0f, -1.0f, 0.0f);
-  const double sway = ws * (1.0 - p.flexibility);  // degrees per metre of base branch
-  const double t = options.windTime;
-
   skeleton.segments.clear();
   skeleton.leaves.clear();
   skeleton.segments.reserve(nodes.size());
   std::vector<std::int32_t> segmentOf(nodes.size(), -1);
-  std::vector<glm::mat3> gravimorphicFrame(nodes.size());  // (M_m^{-1})^{-1}: no directed wind
 
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const Node& node = nodes[i];
@@ -161,34 +147,21 @@ void buildStrandTreeInto(const Species& species, const TreeBuildOptions& options
     seg.startRadius_m = static_cast<float>(girth * std::sqrt(node.strands));
     seg.endRadius_m = static_cast<float>(
         node.majorStrands > 0 ? girth * std::sqrt(node.majorStrands) : 0.5 * seg.startRadius_m);
-    if (node.parent < 0) {
-      gravimorphicFrame[i] = glm::mat3(1.0f);
-    } else {
+    if (node.parent >= 0) {
+      // The joint of Algorithm 1: the parent's split turns the sub-branch by its phyllotaxis
+      // and branching angle, and gravimorphism bends it by alpha_m: alpha_m > 0 toward the
+      // downward vertical (sagging), alpha_m < 0 against gravity (docs/model.md says why).
+      // The wind poses the frames from these below.
       const Node& parentNode = nodes[node.parent];
-      const BranchSegment& parent = skeleton.segments[segmentOf[node.parent]];
       seg.parent = segmentOf[node.parent];
-      seg.start = parent.end();
-      // Undirected wind: alpha_x(t) = sin(t + R_x) w_s (1 - k_f) l_0, likewise alpha_z.
-      double alphaX = std::sin(t + parentNode.phaseX) * sway * parent.length_m;
-      double alphaZ = std::sin(t + parentNode.phaseZ) * sway * parent.length_m;
-      // Gravimorphism turns the base branch about y x y_m by alpha_m, y_m being the
-      // gravimorphism vector -- gravity, the world's down -- seen from the branch frame as
-      // it would be without directed wind: alpha_m > 0 bends toward the downward vertical
-      // (sagging), alpha_m < 0 against gravity (docs/model.md says why).
-      glm::vec3 gravityLocal = glm::transpose(gravimorphicFrame[node.parent]) * gravity;
-      glm::mat3 local = tiltToward(gravityLocal, parentNode.alphaM_deg) *
-                        rotationY(parentNode.phyllotaxis_deg) * rotationX(alphaX) *
-                        rotationZ(node.branchAngle + alphaZ);
-      gravimorphicFrame[i] = gravimorphicFrame[node.parent] * local;
-      // Directed wind: alpha_w = (S_0 / S) w_g turns the branch toward the wind direction w0,
-      // the wind seen from the branch frame.
-      glm::mat3 beforeWind = parent.frame * local;
-      double alphaW = static_cast<double>(parentNode.strands) / p.strands * wg;
-      seg.frame = beforeWind * tiltToward(glm::transpose(beforeWind) * wind, alphaW);
+      seg.twist = rotationY(parentNode.phyllotaxis_deg);
+      seg.bend_deg = node.branchAngle;
+      seg.gravimorphism_deg = parentNode.alphaM_deg;
     }
     segmentOf[i] = static_cast<std::int32_t>(skeleton.segments.size());
     skeleton.segments.push_back(seg);
   }
+  poseSkeleton(skeleton, windOf(species, options));
 
   if (options.leaves && p.leafDensity > 0.0 && p.leafSize_m > 0.0) {
     skeleton.leaves.reserve(static_cast<std::size_t>(p.strands * std::ceil(p.leafDensity)));

@@ -6,7 +6,8 @@
 #include "core/error.hpp"
 #include "model/lsystem_deriver.hpp"
 #include "model/lsystem_turtle.hpp"
-#include "model/skeleton_wind.hpp"
+#include "model/strand_model.hpp"
+#include "model/wind.hpp"
 
 namespace eco {
 
@@ -26,6 +27,7 @@ void scaleSkeleton(TreeSkeleton& skeleton, float metresPerUnit) {
     leaf.position *= metresPerUnit;
     leaf.size_m *= metresPerUnit;
   }
+  deriveJoints(skeleton);  // the joints' offsets in metres too
 }
 
 void buildTreeInto(const Species& species, const TreeBuildOptions& options, TreeSkeleton& out) {
@@ -42,15 +44,8 @@ void buildTreeInto(const Species& species, const TreeBuildOptions& options, Tree
   scaleSkeleton(out, static_cast<float>(species.lsystem.unit_m));
   if (!options.leaves) out.leaves.clear();
   // RL-systems have no wind of their own: EcoMod's bends the finished skeleton.
-  const StrandParams& p = species.strand;
-  SkeletonWind wind;
-  wind.directed_wg = options.windDirected.value_or(p.windDirected);
-  wind.undirected_ws = options.windUndirected.value_or(p.windUndirected);
-  wind.direction = options.windDirection.value_or(p.windDirection);
-  wind.flexibility = p.flexibility;
-  wind.time = options.windTime;
-  wind.seed = options.seed;
-  applyWind(out, wind);
+  assignSwayPhases(out, options.seed);
+  applyWind(out, windOf(species, options));
 }
 
 TreeSkeleton buildTree(const Species& species, const TreeBuildOptions& options) {

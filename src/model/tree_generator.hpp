@@ -5,7 +5,7 @@
 
 #include "model/skeleton.hpp"
 #include "model/species.hpp"
-#include "model/strand_model.hpp"
+#include "model/tree_build_options.hpp"
 
 namespace eco {
 

@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "model/strand_model.hpp"
+#include "core/frames.hpp"
 
 namespace eco {
 namespace {
@@ -91,7 +91,7 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   u.skyZenith = glm::vec4(light.skyZenith, 0.0f);
   u.skyHorizon = glm::vec4(light.skyHorizon, 0.0f);
   u.ambient = glm::vec4(light.ambient, 0.0f);
-  const glm::dvec3 toward = windTowardFromBearing(options.wind.fromBearing_deg);
+  const glm::dvec3 toward = worldDownwindOf(options.wind.fromBearing_deg);
   const double directed = options.wind.directed_wg / kBendBasis_wg;
   u.wind =
       glm::vec4(static_cast<float>(toward.x * directed), static_cast<float>(toward.z * directed),

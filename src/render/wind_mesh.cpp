@@ -20,9 +20,9 @@ TreeBuildOptions windBuildOptions(const Species& species, std::uint64_t seed, do
   options.age = age;
   options.windTime = t;
   options.windUndirected = wind.sway_ws;
-  const StrandParams& p = species.strand;
+  const WindParams& p = species.wind;
   glm::dvec3 own(0.0);
-  if (glm::length(p.windDirection) > 0.0) own = glm::normalize(p.windDirection) * p.windDirected;
+  if (glm::length(p.direction) > 0.0) own = glm::normalize(p.direction) * p.directed_wg;
   const glm::dvec3 total = own + glm::dvec3(wind.directed.x, 0.0, wind.directed.y);
   options.windDirected = glm::length(total);
   options.windDirection = glm::length(total) > 0.0 ? total : glm::dvec3(0.0, 1.0, 0.0);

@@ -3,8 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/frames.hpp"
-
 namespace eco {
 
 glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng) {
@@ -15,10 +13,6 @@ glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng) {
   glm::dvec2 offset(distance * std::cos(angle), distance * std::sin(angle));
   if (life.dispersal == DispersalVector::Wind) offset += life.downwindBias * distance * downwind;
   return offset;
-}
-
-glm::dvec2 downwindOf(double from_deg) {
-  return mapDirectionOfBearing(from_deg + 180.0);
 }
 
 }  // namespace eco

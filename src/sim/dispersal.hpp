@@ -14,7 +14,4 @@ namespace eco {
 // toward which the prevailing wind blows.
 glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng);
 
-// The unit vector (east, north) toward which a wind from `from_deg` (compass bearing) blows.
-glm::dvec2 downwindOf(double from_deg);
-
 }  // namespace eco

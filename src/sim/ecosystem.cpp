@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
+#include "core/frames.hpp"
 #include "core/random.hpp"
 #include "sim/dispersal.hpp"
 #include "sim/growth.hpp"
@@ -227,7 +228,7 @@ void Ecosystem::applyMortality() {
 std::vector<Ecosystem::Seed> Ecosystem::disperseSeeds(const std::vector<int>& seedlingsInCell) {
   const Plants& p = state_.plants;
   const Grid& g = terrain_.grid;
-  const glm::dvec2 downwind = downwindOf(settings_.windFrom_deg);
+  const glm::dvec2 downwind = mapDownwindOf(settings_.windFrom_deg);
   // Only seeds that germinate are followed (a binomial thinning by the germination rate,
   // drawn with the seed count); one is kept if it could establish: on the map, in a cell
   // with room, and with its establishment draw below the site suitability (light can only

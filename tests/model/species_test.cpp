@@ -20,9 +20,9 @@ TEST(Species, BeechHoldsThePapersNumbers) {
   EXPECT_DOUBLE_EQ(p.leafSize_m, 0.2862);
   EXPECT_DOUBLE_EQ(p.leafDensity, 5.0);
   EXPECT_EQ(p.leafDistribution, LeafDistribution::Spiral);
-  EXPECT_DOUBLE_EQ(p.windDirected, 1.5);
-  EXPECT_EQ(p.windDirection, glm::dvec3(0, 1, 0));
-  EXPECT_DOUBLE_EQ(p.flexibility, 1.0);
+  EXPECT_DOUBLE_EQ(beech.wind.directed_wg, 1.5);
+  EXPECT_EQ(beech.wind.direction, glm::dvec3(0, 1, 0));
+  EXPECT_DOUBLE_EQ(beech.wind.flexibility, 1.0);
   EXPECT_EQ(p.lod, 0);
   ASSERT_EQ(p.graphs.minLenG.points().size(), 3u);
   EXPECT_DOUBLE_EQ(p.graphs.minLenG.points()[1].x, 7.5);
@@ -58,7 +58,7 @@ TEST(Species, DesignedSpeciesLoad) {
     Species s = test::loadNamed(name);
     EXPECT_EQ(s.name, name);
     EXPECT_GT(s.strand.strands, 1);
-    EXPECT_LT(s.strand.flexibility, 1.0) << "designed species sway in the wind";
+    EXPECT_LT(s.wind.flexibility, 1.0) << "designed species sway in the wind";
   }
 }
 

@@ -180,14 +180,6 @@ TEST(StrandModel, DirectedWindTiltsTheCrownDownwind) {
   EXPECT_LT(west.x - calm.x, -0.3f);
 }
 
-TEST(StrandModel, WindFromBearing) {
-  glm::dvec3 fromWest = windTowardFromBearing(270.0);  // blows toward the east, +x
-  EXPECT_NEAR(fromWest.x, 1.0, 1e-12);
-  EXPECT_NEAR(fromWest.z, 0.0, 1e-12);
-  glm::dvec3 fromSouth = windTowardFromBearing(180.0);  // blows north, -z
-  EXPECT_NEAR(fromSouth.z, -1.0, 1e-12);
-}
-
 TEST(StrandModel, UndirectedWindSwaysWithTimeUnlessRigid) {
   Species maple = test::loadNamed("maple");  // k_f = 0.6
   glm::vec3 a = leafCentroid(buildStrandTree(maple, {.windTime = 0.0, .windUndirected = 3.0}));

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "model/lod.hpp"
+#include "model/strand_model.hpp"
 #include "test_support.hpp"
 
 namespace eco {

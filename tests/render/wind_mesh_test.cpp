@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtx/norm.hpp>
 
+#include "model/strand_model.hpp"
 #include "render/forest_renderer.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/shader.hpp"

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/frames.hpp"
+
 namespace eco {
 namespace {
 
@@ -50,7 +52,7 @@ TEST(Dispersal, WindDispersedSeedsDriftDownwind) {
   life.dispersalMean_m = 40.0;
   life.downwindBias = 0.5;
   Rng rng(streamKey(4, purpose("test")));
-  const glm::dvec2 downwind = downwindOf(270.0);  // a west wind blows east
+  const glm::dvec2 downwind = mapDownwindOf(270.0);  // a west wind blows east
   EXPECT_NEAR(downwind.x, 1.0, 1e-12);
   EXPECT_NEAR(downwind.y, 0.0, 1e-12);
   double east = 0.0, north = 0.0;

@@ -1,4 +1,4 @@
-#include "model/skeleton_wind.hpp"
+#include "model/wind.hpp"
 
 #include <numbers>
 
@@ -30,10 +30,10 @@ float maxDistance(const TreeSkeleton& a, const TreeSkeleton& b) {
   return most;
 }
 
-TEST(SkeletonWind, CalmLeavesTheTreeAsItIs) {
+TEST(Wind, CalmLeavesTheTreeAsItIs) {
   const TreeSkeleton rest = restTree();
   TreeSkeleton calm = rest;
-  SkeletonWind wind;
+  Wind wind;
   EXPECT_TRUE(wind.calm());
   applyWind(calm, wind);
   EXPECT_EQ(maxDistance(rest, calm), 0.0f);
@@ -41,10 +41,10 @@ TEST(SkeletonWind, CalmLeavesTheTreeAsItIs) {
   EXPECT_TRUE(wind.calm());
 }
 
-TEST(SkeletonWind, BranchesKeepTheirLengthAndStayAttached) {
+TEST(Wind, BranchesKeepTheirLengthAndStayAttached) {
   TreeSkeleton tree = restTree();
   const TreeSkeleton rest = tree;
-  SkeletonWind wind;
+  Wind wind;
   wind.undirected_ws = 4.0;
   wind.flexibility = 0.3;
   wind.directed_wg = 8.0;
@@ -68,10 +68,10 @@ TEST(SkeletonWind, BranchesKeepTheirLengthAndStayAttached) {
   }
 }
 
-TEST(SkeletonWind, DirectedWindLeansTheCrownDownwind) {
+TEST(Wind, DirectedWindLeansTheCrownDownwind) {
   TreeSkeleton tree = restTree();
   const TreeSkeleton rest = tree;
-  SkeletonWind wind;
+  Wind wind;
   wind.directed_wg = 10.0;
   wind.direction = {1.0, 0.0, 0.0};
   applyWind(tree, wind);
@@ -81,8 +81,8 @@ TEST(SkeletonWind, DirectedWindLeansTheCrownDownwind) {
   EXPECT_GT(shift / static_cast<double>(tree.segments.size()), 0.05);
 }
 
-TEST(SkeletonWind, SwayRepeatsEveryPeriod) {
-  SkeletonWind wind;
+TEST(Wind, SwayRepeatsEveryPeriod) {
+  Wind wind;
   wind.undirected_ws = 3.0;
   wind.flexibility = 0.5;
   wind.time = 0.7;

@@ -18,6 +18,7 @@
 #include <tbb/global_control.h>
 
 #include "render/camera.hpp"
+#include "render/frame_size.hpp"
 #include "render/gl_context.hpp"
 #include "render/scene_renderer.hpp"
 #include "sim/scenario.hpp"
@@ -50,8 +51,9 @@ int main(int argc, char** argv) {
     for (std::string item; std::getline(list, item, ',');) counts.push_back(std::stoul(item));
   }
   const std::size_t lod0Limit = argc > 3 ? std::stoul(argv[3]) : 10000;
-  int width = 1280, height = 720;
-  if (argc > 4) std::sscanf(argv[4], "%dx%d", &width, &height);
+  const eco::FrameSize size =
+      argc > 4 ? eco::parseFrameSize(argv[4]).value_or(eco::FrameSize{}) : eco::FrameSize{};
+  const int width = size.width, height = size.height;
 
   const eco::Scenario scenario = eco::loadScenario(scenarioFile);
   const eco::Terrain terrain = eco::loadTerrain(scenario);

@@ -36,20 +36,17 @@ int main(int argc, char** argv) {
   settings.toYear = folder.snapshotYears.back();
   settings.seconds = argc > 2 ? std::atof(argv[2]) : 4.0;
   settings.fps = argc > 3 ? std::atoi(argv[3]) : 30;
-  if (argc > 4)
-    std::sscanf(argv[4], "%dx%d", &settings.width, &settings.height);
-  else
-    settings.width = 640, settings.height = 360;
+  settings.frame = eco::parseFrameSize(argc > 4 ? argv[4] : "640x360").value_or(eco::FrameSize{});
   settings.camera = eco::orbitPath(terrain);
   settings.overlay = true;
   const bool mp4 = eco::programOnPath("ffmpeg");
-  auto sink = mp4 ? eco::mp4Sink(work / "growth.mp4", settings.width, settings.height, settings.fps)
+  auto sink = mp4 ? eco::mp4Sink(work / "growth.mp4", settings.frame, settings.fps)
                   : eco::pngFolderSink(work / "frames");
   const eco::TimelapseTimings t =
       eco::renderTimelapse(folder, library, renderer, settings, *sink, {});
   std::printf("%s, growth 0-%d of %s, %dx%d, %d frames into %s\n", eco::glDescription().c_str(),
-              folder.snapshotYears.back(), folder.scenario.name.c_str(), settings.width,
-              settings.height, t.frames, mp4 ? "H.264 MP4" : "PNG frames");
+              folder.snapshotYears.back(), folder.scenario.name.c_str(), settings.frame.width,
+              settings.frame.height, t.frames, mp4 ? "H.264 MP4" : "PNG frames");
   std::printf(
       "%.1f frames/s: %.1f s in all; instances %.2f s (%.1f ms a frame), rendering %.2f s "
       "(%.1f ms), encoding %.2f s (%.1f ms)\n",

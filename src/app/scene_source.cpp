@@ -21,13 +21,11 @@ Forest SceneSource::forestOf(int year, std::size_t demoTrees) const {
 
 Field SceneSource::overlay(const std::string& name) const {
   if (run) {
-    const std::filesystem::path file = run->dir / "maps" / (name + ".exr");
+    const RunPaths paths{run->dir};
+    const std::filesystem::path file = paths.map(name);
     if (!std::filesystem::exists(file)) {
       std::string names;
-      if (std::filesystem::is_directory(run->dir / "maps"))
-        for (const auto& entry : std::filesystem::directory_iterator(run->dir / "maps"))
-          if (entry.path().extension() == ".exr")
-            names += (names.empty() ? "" : ", ") + entry.path().stem().string();
+      for (const std::string& map : paths.mapNames()) names += (names.empty() ? "" : ", ") + map;
       throw InputError({run->dir.string(), 0, "overlay"},
                        fmt::format("the run has no map '{}' (it has: {})", name, names));
     }

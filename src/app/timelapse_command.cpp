@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "app/render_command.hpp"
 #include "app/scene_source.hpp"
+#include "app/view_options.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "render/gl_context.hpp"
@@ -24,11 +24,9 @@ struct TimelapseArgs {
   double seconds = 10.0;
   int fps = 30;
   std::string cameraPath = "orbit";
-  std::string size = "1280x720";
   std::string out;
   bool overlay = false;
-  double day = 172.0, hour = 10.0;
-  double windFrom_deg = -1.0, windDirected = 1.0, windSway = 1.0;
+  ViewOptions view;
 };
 
 // "A:B" (growth) or "A" (wind); nullopt when malformed.
@@ -42,8 +40,6 @@ std::optional<std::pair<double, double>> parseYears(const std::string& text) {
 }
 
 void runTimelapse(const TimelapseArgs& args) {
-  const auto size = parseSize(args.size);
-  if (!size) throw InputError({"--size", 0, ""}, "expected WIDTHxHEIGHT, each 16..8192");
   std::filesystem::path out(args.out);
   if (!out.has_filename()) out = out.parent_path();  // "frames/" is the folder "frames"
   const bool mp4 = out.extension() == ".mp4";
@@ -78,14 +74,9 @@ void runTimelapse(const TimelapseArgs& args) {
   settings.toYear = years.second;
   settings.seconds = args.seconds;
   settings.fps = args.fps;
-  settings.width = size->first;
-  settings.height = size->second;
+  settings.frame = args.view.size;
   settings.overlay = args.overlay;
-  settings.render.sun = {args.day, args.hour};
-  settings.render.wind.fromBearing_deg =
-      args.windFrom_deg >= 0.0 ? args.windFrom_deg : source.scenario.climate.prevailingWindFrom_deg;
-  settings.render.wind.directed_wg = args.windDirected;
-  settings.render.wind.sway_ws = args.windSway;
+  settings.render = renderOptionsFrom(args.view, source.scenario);
   if (args.cameraPath == "orbit")
     settings.camera = orbitPath(source.terrain);
   else if (args.cameraPath == "flyover")
@@ -94,7 +85,7 @@ void runTimelapse(const TimelapseArgs& args) {
     settings.camera = loadCameraPath(args.cameraPath, source.terrain);
 
   std::unique_ptr<FrameSink> sink =
-      mp4 ? mp4Sink(out, settings.width, settings.height, settings.fps) : pngFolderSink(out);
+      mp4 ? mp4Sink(out, settings.frame, settings.fps) : pngFolderSink(out);
   source.buildLibrary();
   HeadlessGl gl;
   SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
@@ -114,7 +105,7 @@ void runTimelapse(const TimelapseArgs& args) {
   std::cout << fmt::format(
       "{}: {} frames of {}x{} at {} fps in {:.1f} s ({:.1f} frames/s; instances {:.1f} s, "
       "rendering {:.1f} s, encoding {:.1f} s)\n",
-      args.out, t.frames, settings.width, settings.height, settings.fps, t.total_s,
+      args.out, t.frames, settings.frame.width, settings.frame.height, settings.fps, t.total_s,
       t.frames / t.total_s, t.instances_s, t.render_s, t.encode_s);
 }
 
@@ -133,18 +124,9 @@ void addTimelapseCommand(CLI::App& app) {
       ->check(CLI::Range(0.04, 3600.0));
   c->add_option("--fps", args->fps, "Frames per second")->check(CLI::Range(1, 120));
   c->add_option("--camera-path", args->cameraPath, "orbit, flyover or a keyframe FILE.toml");
-  c->add_option("--size", args->size, "Frame size WIDTHxHEIGHT (odd sizes are padded in MP4)");
   c->add_option("--out", args->out, "FILE.mp4, or a folder for numbered PNG frames")->required();
   c->add_flag("--overlay", args->overlay, "Draw the year and a scale bar");
-  c->add_option("--day", args->day, "Day of the year for the sun")->check(CLI::Range(1.0, 366.0));
-  c->add_option("--hour", args->hour, "Solar time for the sun, hours")
-      ->check(CLI::Range(0.0, 24.0));
-  c->add_option("--wind-from", args->windFrom_deg,
-                "Wind bearing in degrees (default: the scenario's)");
-  c->add_option("--wind-wg", args->windDirected, "Directed wind w_g (EcoMod)")
-      ->check(CLI::Range(0.0, 10.0));
-  c->add_option("--wind-ws", args->windSway, "Undirected wind w_s (EcoMod)")
-      ->check(CLI::Range(0.0, 10.0));
+  addFrameOptions(*c, args->view);
   c->callback([args] { runTimelapse(*args); });
 }
 

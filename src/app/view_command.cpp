@@ -16,8 +16,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
-#include "app/render_command.hpp"
 #include "app/scene_source.hpp"
+#include "app/view_options.hpp"
 #include "core/error.hpp"
 #include "sim/image_io.hpp"
 
@@ -27,7 +27,6 @@ namespace {
 struct ViewArgs {
   std::string source;
   std::optional<int> year;
-  std::string size = "1280x720";
   std::size_t demoTrees = 0;
   int frames = 0;  // > 0: quit after this many frames (automation, tests)
   std::string screenshot = "ecoforest_view.png";
@@ -65,8 +64,6 @@ class GlfwSession {
 };
 
 void runView(const ViewArgs& args) {
-  const auto size = parseSize(args.size);
-  if (!size) throw InputError({"--size", 0, ""}, "expected WIDTHxHEIGHT, each 16..8192");
   SceneSource source = openSceneSource(args.source);
   if (args.year) source.requireSnapshot(*args.year);
   std::vector<int> years = source.run ? source.run->snapshotYears : std::vector<int>{0};
@@ -84,7 +81,7 @@ void runView(const ViewArgs& args) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_TRUE);
   GLFWwindow* window = glfwCreateWindow(
-      size->first, size->second, ("ecoforest — " + source.scenario.name).c_str(), nullptr, nullptr);
+      args.view.size.width, args.view.size.height, ("ecoforest — " + source.scenario.name).c_str(), nullptr, nullptr);
   if (!window) throw std::runtime_error("view: could not open an OpenGL 4.5 window");
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
@@ -257,13 +254,13 @@ void addViewCommand(CLI::App& app) {
       ->required();
   command->add_option("--year", args->year,
                       "Snapshot year to start with (default: the run's last)");
-  command->add_option("--size", args->size, "Window size WIDTHxHEIGHT");
   command->add_option("--demo-trees", args->demoTrees,
                       "With a scenario: plant this many trees at random");
   command->add_option("--frames", args->frames,
                       "Quit after this many frames, saving a screenshot (automation)");
   command->add_option("--screenshot", args->screenshot, "PNG file the screenshot key writes");
-  addViewOptions(*command, args->view);
+  addFrameOptions(*command, args->view);
+  addCameraOptions(*command, args->view);
   command->callback([args] { runView(*args); });
 }
 

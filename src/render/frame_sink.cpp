@@ -109,9 +109,8 @@ std::unique_ptr<FrameSink> pngFolderSink(const std::filesystem::path& folder) {
   return std::make_unique<PngFolderSink>(folder);
 }
 
-std::unique_ptr<FrameSink> mp4Sink(const std::filesystem::path& file, int width, int height,
-                                   int fps) {
-  return std::make_unique<Mp4Sink>(file, width, height, fps);
+std::unique_ptr<FrameSink> mp4Sink(const std::filesystem::path& file, FrameSize size, int fps) {
+  return std::make_unique<Mp4Sink>(file, size.width, size.height, fps);
 }
 
 }  // namespace eco

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "core/image.hpp"
+#include "render/frame_size.hpp"
 
 namespace eco {
 
@@ -23,8 +24,7 @@ class FrameSink {
 std::unique_ptr<FrameSink> pngFolderSink(const std::filesystem::path& folder);
 // An MP4 (H.264, yuv420p, odd sizes padded to even) at `fps`. InputError when ffmpeg is not
 // installed; a failing ffmpeg is an error with its message.
-std::unique_ptr<FrameSink> mp4Sink(const std::filesystem::path& file, int width, int height,
-                                   int fps);
+std::unique_ptr<FrameSink> mp4Sink(const std::filesystem::path& file, FrameSize size, int fps);
 
 // Whether an executable of that name is on PATH.
 bool programOnPath(const std::string& name);

@@ -17,11 +17,13 @@
 #include "render/sun.hpp"
 #include "render/terrain_renderer.hpp"
 #include "render/tree_library.hpp"
+#include "sim/scenario.hpp"
 
 namespace eco {
 
 struct SceneWind {
-  double fromBearing_deg = 270.0;  // where the wind comes from (0 north, 90 east)
+  // Where the wind comes from (0 north, 90 east): a scenario's prevailing wind.
+  double fromBearing_deg = Climate{}.prevailingWindFrom_deg;
   double directed_wg = 0.0;        // w_g of the horizontal wind
   double sway_ws = 0.0;            // w_s of the undirected sway
   double gust = 0.25;              // relative swing of the directed wind over time

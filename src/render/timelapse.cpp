@@ -105,7 +105,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
   SnapshotCache snapshots(run);
   std::vector<int> years{0};
   years.insert(years.end(), run.snapshotYears.begin(), run.snapshotYears.end());
-  const RenderTarget target = RenderTarget::create(settings.width, settings.height);
+  const RenderTarget target = RenderTarget::create(settings.frame.width, settings.frame.height);
   Forest forest;
   for (int frame = 0; frame < frames; ++frame) {
     auto phase = Clock::now();
@@ -130,13 +130,13 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
     const double u = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
     const Camera camera = settings.camera(u);
     renderer.render(&forest, camera, options, target);
-    Image image = readPixels(settings.width, settings.height);
+    Image image = readPixels(settings.frame.width, settings.frame.height);
     timings.render_s += secondsSince(phase);
 
     phase = Clock::now();
     if (settings.overlay)
       drawOverlay(image, year,
-                  metresPerPixelAtCentre(camera, renderer.terrainData(), settings.height));
+                  metresPerPixelAtCentre(camera, renderer.terrainData(), settings.frame.height));
     sink.add(image);
     timings.encode_s += secondsSince(phase);
     if (progress) progress(frame + 1, frames);

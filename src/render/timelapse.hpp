@@ -8,6 +8,7 @@
 
 #include "render/camera_path.hpp"
 #include "render/frame_sink.hpp"
+#include "render/frame_size.hpp"
 #include "render/scene_renderer.hpp"
 #include "render/tree_library.hpp"
 #include "sim/run_folder.hpp"
@@ -22,7 +23,7 @@ struct TimelapseSettings {
   double toYear = 0.0;
   double seconds = 10.0;
   int fps = 30;
-  int width = 1280, height = 720;
+  FrameSize frame;
   CameraPath camera;
   RenderOptions render;  // wind.time is advanced by the wind kind
   bool overlay = false;  // year counter and scale bar

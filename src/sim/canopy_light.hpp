@@ -10,6 +10,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "sim/sunlight.hpp"
 #include "sim/terrain.hpp"
 
 namespace eco {
@@ -23,7 +24,8 @@ struct LightDirections {
   std::vector<glm::dvec3> direction;
   std::vector<double> weight;
 };
-LightDirections makeLightDirections(double latitude_deg, int count, double diffuseFraction = 0.4);
+LightDirections makeLightDirections(double latitude_deg, int count,
+                                    double diffuseFraction = SunlightSettings{}.diffuseFraction);
 
 struct Crown {
   glm::vec3 centre;                   // map coordinates, metres

@@ -13,6 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "sim/image_io.hpp"
+#include "sim/run_format.hpp"
 
 namespace eco {
 namespace {
@@ -124,8 +125,9 @@ FieldStats writeFieldMap(const std::filesystem::path& folder, const std::string&
 
 void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport& report,
                            const Scenario& scenario, const std::filesystem::path& folder) {
+  const RunPaths paths{folder};
   std::error_code error;
-  std::filesystem::create_directories(folder / "maps", error);
+  std::filesystem::create_directories(paths.mapsFolder(), error);
   if (error)
     throw InputError({folder.string(), 0, ""},
                      "cannot create the output folder: " + error.message());
@@ -138,7 +140,7 @@ void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport
                   {"area_km2", fields.grid.area_m2() / 1e6}};
   for (const FieldInfo& info : conditionFieldInfo()) {
     const Field& values = fields.*info.field;
-    FieldStats stats = writeFieldMap(folder / "maps", info.name, info.unit, values, fields.grid);
+    FieldStats stats = writeFieldMap(paths.mapsFolder(), info.name, info.unit, values, fields.grid);
     nlohmann::ordered_json entry = {
         {"unit", info.unit}, {"min", stats.min}, {"mean", stats.mean}, {"max", stats.max}};
     for (const auto& [name, ms] : report.fieldMilliseconds)
@@ -147,7 +149,7 @@ void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport
   }
   json["sun_rays"] = report.sunRays;
   json["sun_rays_per_second"] = report.sunRaysPerSecond;
-  AtomicFile out(folder / "conditions.json");
+  AtomicFile out(paths.conditionsJson());
   out.write(json.dump(2) + "\n");
   out.commit();
 }

@@ -3,13 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <string>
 #include <vector>
-
-#include <fmt/format.h>
-#include <tbb/parallel_for.h>
-
-#include "core/atomic_file.hpp"
 
 namespace eco {
 namespace {
@@ -62,41 +56,6 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem) {
                         static_cast<double>(g.cellCount());
   }
   return rows;
-}
-
-void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow>& rows,
-                   const std::vector<EcosystemSpecies>& species) {
-  std::string text =
-      "year,species,alive,born,died,mean_height_m,basal_area_m2_per_ha,cover_fraction\n";
-  for (const StatsRow& r : rows)
-    text += fmt::format("{},{},{},{},{},{:.3f},{:.4f},{:.4f}\n", r.year,
-                        species[r.species].species.name, r.alive, r.born, r.died, r.meanHeight_m,
-                        r.basalArea_m2PerHa, r.coverFraction);
-  AtomicFile out(file);
-  out.write(text);
-  out.commit();
-}
-
-void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem) {
-  const Plants& p = ecosystem.plants();
-  // Formatted in parallel chunks, written in order.
-  constexpr std::size_t kRowsPerChunk = 16384;
-  std::vector<std::string> chunks((p.size() + kRowsPerChunk - 1) / kRowsPerChunk);
-  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
-    std::string& text = chunks[c];
-    const std::size_t end = std::min(p.size(), (c + 1) * kRowsPerChunk);
-    text.reserve((end - c * kRowsPerChunk) * 96);
-    for (std::size_t i = c * kRowsPerChunk; i < end; ++i)
-      fmt::format_to(std::back_inserter(text),
-                     "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.4f},{:.3f},{}\n", p.id[i],
-                     ecosystem.species()[p.species[i]].species.name, p.east_m[i], p.north_m[i],
-                     p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i], p.dbh_m[i],
-                     p.vigor[i], p.variantSeed[i]);
-  });
-  AtomicFile out(file);
-  out.write("id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n");
-  for (const std::string& text : chunks) out.write(text);
-  out.commit();
 }
 
 Field canopyHeight(const Ecosystem& ecosystem) {

@@ -21,7 +21,8 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
                      "midpoint displacement needs 2^n + 1 cells per side (e.g. 257, 513, 1025)");
     g.roughness = generate->number("roughness", g.roughness, {0.0, 1.0});
     g.relief_m = generate->number("relief_m", g.relief_m, {0.0, 10000.0});
-    spec.baseAltitude_m = generate->number("base_altitude_m", 0.0, {-500.0, 9000.0});
+    spec.baseAltitude_m =
+        generate->number("base_altitude_m", spec.baseAltitude_m, {-500.0, 9000.0});
     generate->finish();
     spec.generate = g;
   }
@@ -30,7 +31,7 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
   // cell_size_m: one number, or [dx, dy] for non-square cells.
   std::vector<double> cell = terrain.isArray("cell_size_m")
                                  ? terrain.numbers("cell_size_m", 2)
-                                 : std::vector<double>{terrain.number("cell_size_m", 10.0)};
+                                 : std::vector<double>{terrain.number("cell_size_m", spec.cellDx_m)};
   for (double c : cell)
     if (!(c > 0.0) || c > 100000.0)
       terrain.fail("cell_size_m", "cell size must be a positive number of metres");
@@ -55,7 +56,8 @@ Scenario loadScenario(const std::filesystem::path& file) {
   Scenario s;
   s.file = file;
   s.name = root.string("name", file.stem().string());
-  s.seed = static_cast<std::uint64_t>(root.integer("seed", 1, {0.0, 9.0e18}));
+  s.seed = static_cast<std::uint64_t>(
+      root.integer("seed", static_cast<std::int64_t>(s.seed), {0.0, 9.0e18}));
   std::optional<TomlTable> terrain = root.table("terrain");
   if (!terrain) root.fail("terrain", "missing required table [terrain]");
   s.terrain = parseTerrain(*terrain, file.parent_path());

@@ -22,8 +22,8 @@ struct GeneratedTerrain {
 struct TerrainSpec {
   std::optional<std::filesystem::path> heightmap;  // absolute after loading
   std::optional<GeneratedTerrain> generate;        // exactly one of the two
-  double cellDx_m = 10.0;
-  double cellDy_m = 10.0;
+  double cellDx_m = 10.0;  // square 10 m cells unless the file says otherwise
+  double cellDy_m = cellDx_m;
   std::optional<double> heightMin_m, heightMax_m;  // height_range_m
   double baseAltitude_m = 0.0;                     // generated terrain: height of its lowest cell
 };

@@ -6,9 +6,7 @@
 #include <fmt/format.h>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
-#include <nlohmann/json.hpp>
 
-#include "core/atomic_file.hpp"
 #include "core/binary_io.hpp"
 #include "core/error.hpp"
 #include "sim/checkpoint.hpp"
@@ -69,42 +67,26 @@ std::vector<double> meanSiteOf(const ConditionFields& fields) {
   return means;
 }
 
-nlohmann::ordered_json siteJson(const std::vector<double>& means) {
-  nlohmann::ordered_json json = nlohmann::ordered_json::object();
-  for (std::size_t f = 0; f < means.size(); ++f) json[conditionFieldInfo()[f].name] = means[f];
-  return json;
-}
-
-void writeRunJson(const std::filesystem::path& folder, const Scenario& scenario,
-                  const RunOptions& options, std::uint64_t fingerprint, const RunSummary& summary,
-                  const std::string& status) {
-  nlohmann::ordered_json json;
-  json["program"] = "ecoforest";
-  json["version"] = options.programVersion;
-  json["status"] = status;
-  json["scenario"] = {{"file", std::filesystem::absolute(scenario.file).string()},
-                      {"name", scenario.name},
-                      {"fingerprint", fmt::format("{:016x}", fingerprint)},
-                      {"text", fileBytes(scenario.file)}};
-  json["seed"] = scenario.seed;
-  json["years"] = summary.targetYears;
-  json["last_year"] = summary.lastYear;
-  json["threads"] = tbb::this_task_arena::max_concurrency();
-  json["timings_s"] = {
-      {"conditions", summary.conditionsSeconds},
-      {"simulation", summary.simulationSeconds},
-      {"plant_years_per_second",
-       summary.simulationSeconds > 0.0 ? summary.plantYears / summary.simulationSeconds : 0.0}};
-  nlohmann::ordered_json counts = nlohmann::ordered_json::object();
-  for (const SpeciesCount& c : summary.counts)
-    counts[c.name] = {{"alive", c.alive},
-                      {"taller_than_5m", c.over5m},
-                      {"mean_site_taller_than_5m", siteJson(c.meanSiteOver5m)}};
-  json["final_counts"] = counts;
-  json["mean_site_of_map"] = siteJson(summary.meanSite);
-  AtomicFile out(folder / "run.json");
-  out.write(json.dump(2) + "\n");
-  out.commit();
+RunRecord runRecord(const Scenario& scenario, const RunOptions& options,
+                    std::uint64_t fingerprint, const RunSummary& summary, std::string status) {
+  RunRecord r;
+  r.version = options.programVersion;
+  r.status = std::move(status);
+  r.scenarioFile = scenario.file;
+  r.scenarioName = scenario.name;
+  r.fingerprint = fingerprint;
+  r.scenarioText = fileBytes(scenario.file);
+  r.seed = scenario.seed;
+  r.years = summary.targetYears;
+  r.lastYear = summary.lastYear;
+  r.threads = tbb::this_task_arena::max_concurrency();
+  r.conditionsSeconds = summary.conditionsSeconds;
+  r.simulationSeconds = summary.simulationSeconds;
+  r.plantYearsPerSecond =
+      summary.simulationSeconds > 0.0 ? summary.plantYears / summary.simulationSeconds : 0.0;
+  r.counts = summary.counts;
+  r.meanSite = summary.meanSite;
+  return r;
 }
 
 // Plants from a checkpoint must fit this scenario's grid and species list.
@@ -159,6 +141,7 @@ RunSummary runSimulation(const RunOptions& options) {
   if (summary.targetYears < 1)
     throw InputError({scenario.file.string(), 0, "years"}, "years must be at least 1");
   summary.folder = options.out.value_or(scenario.output.dir);
+  const RunPaths run{summary.folder};
   const std::uint64_t fingerprint = scenarioFingerprint(scenario);
   if (std::all_of(scenario.species.begin(), scenario.species.end(),
                   [](const ScenarioSpecies& s) { return s.seedRainPerHaPerYear <= 0.0; }) &&
@@ -170,7 +153,7 @@ RunSummary runSimulation(const RunOptions& options) {
 
   // Read the checkpoint before anything is written, so a refused resume changes nothing.
   std::optional<Checkpoint> checkpoint;
-  if (options.resume) checkpoint = readCheckpoint(summary.folder / "checkpoint.bin", fingerprint);
+  if (options.resume) checkpoint = readCheckpoint(run.checkpoint(), fingerprint);
 
   const auto conditionsStart = Clock::now();
   Terrain terrain = loadTerrain(scenario);
@@ -184,26 +167,26 @@ RunSummary runSimulation(const RunOptions& options) {
                              scenario.climate.prevailingWindFrom_deg, scenario.simulation};
   Ecosystem ecosystem(terrain, std::move(species), settings);
   std::vector<StatsRow> stats;
-  createFolder(summary.folder / "maps");
-  createFolder(summary.folder / "trees");
+  createFolder(run.mapsFolder());
+  createFolder(run.treesFolder());
   if (checkpoint) {
-    checkState(checkpoint->state, ecosystem, summary.folder / "checkpoint.bin");
+    checkState(checkpoint->state, ecosystem, run.checkpoint());
     ecosystem.restore(std::move(checkpoint->state));
     stats = std::move(checkpoint->stats);
   } else {
     // A fresh run replaces whatever an earlier run left in the folder.
-    for (const auto& entry : std::filesystem::directory_iterator(summary.folder / "trees"))
+    for (const auto& entry : std::filesystem::directory_iterator(run.treesFolder()))
       if (entry.path().extension() == ".csv") std::filesystem::remove(entry.path());
-    std::filesystem::remove(summary.folder / "checkpoint.bin");
+    std::filesystem::remove(run.checkpoint());
     writeConditionOutputs(fields, report, scenario, summary.folder);
     for (const EcosystemSpecies& s : ecosystem.species())
-      writeFieldMap(summary.folder / "maps", "suitability_" + s.species.name, "0-1", s.suitability,
+      writeFieldMap(run.mapsFolder(), "suitability_" + s.species.name, "0-1", s.suitability,
                     terrain.grid);
   }
   summary.lastYear = ecosystem.year();
   summary.meanSite = meanSiteOf(fields);
   summary.counts = countsOf(ecosystem, fields);
-  writeRunJson(summary.folder, scenario, options, fingerprint, summary, "running");
+  writeRunJson(run, runRecord(scenario, options, fingerprint, summary, "running"));
 
   const auto start = Clock::now();
   const int firstYear = ecosystem.year() + 1;
@@ -213,10 +196,10 @@ RunSummary runSimulation(const RunOptions& options) {
     const int year = ecosystem.year();
     std::vector<StatsRow> rows = statsOfYear(ecosystem);
     stats.insert(stats.end(), rows.begin(), rows.end());
-    writeStatsCsv(summary.folder / "stats.csv", stats, ecosystem.species());
+    writeStatsCsv(run.stats(), stats, ecosystem.species());
     if (year % scenario.output.snapshotEveryYears == 0 || year == summary.targetYears)
-      writeTreesCsv(summary.folder / "trees" / fmt::format("year_{:04d}.csv", year), ecosystem);
-    writeCheckpoint(summary.folder / "checkpoint.bin",
+      writeTreesCsv(run.snapshot(year), ecosystem);
+    writeCheckpoint(run.checkpoint(),
                     {fingerprint, options.programVersion, ecosystem.state(), stats});
     summary.lastYear = year;
     if (options.progress)
@@ -230,10 +213,10 @@ RunSummary runSimulation(const RunOptions& options) {
   summary.simulationSeconds = secondsSince(start);
   summary.counts = countsOf(ecosystem, fields);
   if (!summary.interrupted)
-    writeFieldMap(summary.folder / "maps", "canopy_height", "m", canopyHeight(ecosystem),
+    writeFieldMap(run.mapsFolder(), "canopy_height", "m", canopyHeight(ecosystem),
                   terrain.grid);
-  writeRunJson(summary.folder, scenario, options, fingerprint, summary,
-               summary.interrupted ? "interrupted" : "complete");
+  writeRunJson(run, runRecord(scenario, options, fingerprint, summary,
+                              summary.interrupted ? "interrupted" : "complete"));
   return summary;
 }
 

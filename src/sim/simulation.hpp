@@ -14,6 +14,7 @@
 
 #include "sim/conditions.hpp"
 #include "sim/ecosystem.hpp"
+#include "sim/run_format.hpp"
 
 namespace eco {
 
@@ -35,15 +36,6 @@ struct RunOptions {
   const std::atomic<bool>* stop = nullptr;
   std::function<void(const RunProgress&)> progress;
   std::function<void(const std::string&)> warn;
-};
-
-struct SpeciesCount {
-  std::string name;
-  std::int64_t alive = 0;
-  std::int64_t over5m = 0;  // taller than 5 m
-  // Where those taller than 5 m stand: the mean of each condition field over their cells,
-  // in conditionFieldInfo() order (empty where none is that tall).
-  std::vector<double> meanSiteOver5m;
 };
 
 struct RunSummary {

@@ -38,7 +38,7 @@ TEST(FrameSink, Mp4HasEveryFrameAtAnEvenSize) {
     GTEST_SKIP() << "ffmpeg is not installed (Debian: ffmpeg)";
   const auto dir = test::freshDirectory("frame_sink_mp4");
   {
-    auto sink = mp4Sink(dir / "clip.mp4", 33, 17, 10);
+    auto sink = mp4Sink(dir / "clip.mp4", {33, 17}, 10);
     for (int i = 0; i < 7; ++i) sink->add(solid(33, 17, 30 * i));
     sink->finish();
   }

@@ -70,7 +70,7 @@ TEST(Timelapse, ASingleTreesSilhouetteGrowsFrameByFrame) {
   settings.toYear = 30.0;
   settings.seconds = 1.2;
   settings.fps = 10;
-  settings.width = settings.height = 96;
+  settings.frame = {96, 96};
   settings.render.shadows = false;
   settings.camera = [](double) {
     return lookingAt(worldFromMap(160, 130, 106), worldFromMap(160, 160, 105));

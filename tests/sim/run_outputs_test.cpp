@@ -47,20 +47,5 @@ TEST_F(OneTree, BasalAreaCoverAndCanopyFromThePlants) {
   EXPECT_EQ(covered, inside);
 }
 
-TEST_F(OneTree, CsvFilesHaveTheDocumentedColumns) {
-  ecosystem.plant(0, 12.0, 33.0, 40);
-  const auto folder = test::freshDirectory("run_outputs");
-  writeTreesCsv(folder / "trees.csv", ecosystem);
-  writeStatsCsv(folder / "stats.csv", statsOfYear(ecosystem), ecosystem.species());
-  const std::string trees = test::readFile(folder / "trees.csv");
-  EXPECT_EQ(trees.substr(0, trees.find('\n')),
-            "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed");
-  EXPECT_NE(trees.find("\n1,t,12.000,33.000,50.000,40,"), std::string::npos) << trees;
-  const std::string stats = test::readFile(folder / "stats.csv");
-  EXPECT_EQ(stats.substr(0, stats.find('\n')),
-            "year,species,alive,born,died,mean_height_m,basal_area_m2_per_ha,cover_fraction");
-  EXPECT_NE(stats.find("\n0,t,1,0,0,"), std::string::npos) << stats;
-}
-
 }  // namespace
 }  // namespace eco

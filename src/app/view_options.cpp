@@ -1,0 +1,85 @@
+#include "app/view_options.hpp"
+
+#include "core/error.hpp"
+
+namespace eco {
+
+void addFrameOptions(CLI::App& command, ViewOptions& o) {
+  command
+      .add_option_function<std::string>(
+          "--size",
+          [&o](const std::string& text) {
+            const std::optional<FrameSize> size = parseFrameSize(text);
+            if (!size)
+              throw CLI::ValidationError(
+                  "--size", "expected WIDTHxHEIGHT, each " + std::to_string(kMinFrameSide) +
+                                ".." + std::to_string(kMaxFrameSide) + ", got '" + text + "'");
+            o.size = *size;
+          },
+          "Frame size WIDTHxHEIGHT")
+      ->default_str(toString(o.size));
+  command.add_option("--day", o.sun.dayOfYear, "Day of the year for the sun")
+      ->check(CLI::Range(1.0, 366.0))
+      ->capture_default_str();
+  command.add_option("--hour", o.sun.solarHour, "Solar time for the sun, hours")
+      ->check(CLI::Range(0.0, 24.0))
+      ->capture_default_str();
+  command.add_option("--wind-from", o.windFrom_deg,
+                     "Wind bearing in degrees (default: the scenario's prevailing wind)")
+      ->check(CLI::Range(0.0, 360.0));
+  command.add_option("--wind-wg", o.windDirected_wg, "Directed wind w_g (EcoMod)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  command.add_option("--wind-ws", o.windSway_ws, "Undirected wind w_s (EcoMod)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  command
+      .add_option("--level", o.forceLevel, "Draw every tree at one level: 0-2 meshes, 3 impostors")
+      ->check(CLI::Range(0, 3));
+  command.add_flag("--no-impostors", o.noImpostors,
+                   "LOD2 meshes all the way out instead of impostors");
+  command.add_flag("--no-shadows", o.noShadows, "No shadow map");
+}
+
+void addCameraOptions(CLI::App& command, ViewOptions& o) {
+  command.add_option(
+      "--camera", o.camera,
+      "Camera as X,Y,Z,YAW,PITCH: map east, north, altitude (m), bearing and pitch (degrees)");
+  command.add_option("--view", o.view, "Camera preset when no --camera: overview, low or ground")
+      ->check(CLI::IsMember({"overview", "low", "ground"}))
+      ->capture_default_str();
+  command.add_option("--wind-time", o.windTime, "Wind time t (radians of the sway)");
+  command.add_option(
+      "--overlay", o.overlay,
+      "Colour the terrain by a map: a condition, suitability_<species> or canopy_height");
+}
+
+Camera cameraFrom(const ViewOptions& o, const Terrain& terrain) {
+  if (!o.camera.empty()) {
+    std::optional<Camera> camera = parseCamera(o.camera);
+    if (!camera)
+      throw InputError(
+          {"--camera", 0, ""},
+          "expected five numbers X,Y,Z,YAW,PITCH with PITCH in -90..90, got '" + o.camera + "'");
+    return *camera;
+  }
+  const CameraPreset preset = o.view == "ground" ? CameraPreset::Ground
+                              : o.view == "low"  ? CameraPreset::Low
+                                                 : CameraPreset::Overview;
+  return presetCamera(preset, terrain);
+}
+
+RenderOptions renderOptionsFrom(const ViewOptions& o, const Scenario& scenario) {
+  RenderOptions r;
+  r.sun = o.sun;
+  r.wind.fromBearing_deg = o.windFrom_deg.value_or(scenario.climate.prevailingWindFrom_deg);
+  r.wind.directed_wg = o.windDirected_wg;
+  r.wind.sway_ws = o.windSway_ws;
+  r.wind.time = o.windTime;
+  r.lod.forcedLevel = o.forceLevel;
+  r.lod.impostors = !o.noImpostors;
+  r.shadows = !o.noShadows;
+  return r;
+}
+
+}  // namespace eco

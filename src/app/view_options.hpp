@@ -1,0 +1,44 @@
+// The options `render`, `view` and `timelapse` share — frame size, sun, wind, levels of
+// detail, camera — declared once with their defaults, and turned into the renderer's
+// settings in one place.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "render/camera.hpp"
+#include "render/frame_size.hpp"
+#include "render/scene_renderer.hpp"
+#include "sim/scenario.hpp"
+
+namespace eco {
+
+struct ViewOptions {
+  FrameSize size;
+  SunTime sun;
+  std::optional<double> windFrom_deg;  // unset: the scenario's prevailing wind
+  // The command line shows a light breeze unless told otherwise (the renderer's own default
+  // is calm).
+  double windDirected_wg = 1.0, windSway_ws = 1.0;
+  double windTime = 0.0;
+  int forceLevel = -1;  // -1: by size on screen
+  bool noImpostors = false, noShadows = false;
+  // render and view only:
+  std::string camera;             // X,Y,Z,YAW,PITCH
+  std::string view = "overview";  // a camera preset
+  std::string overlay;            // a map to colour the terrain with
+};
+
+// --size, --day, --hour, --wind-from, --wind-wg, --wind-ws, --level, --no-impostors,
+// --no-shadows: what every command that draws frames takes.
+void addFrameOptions(CLI::App& command, ViewOptions& options);
+// --camera, --view, --wind-time, --overlay: the still and the window.
+void addCameraOptions(CLI::App& command, ViewOptions& options);
+
+// The camera the options ask for; an InputError names a malformed --camera.
+Camera cameraFrom(const ViewOptions& options, const Terrain& terrain);
+RenderOptions renderOptionsFrom(const ViewOptions& options, const Scenario& scenario);
+
+}  // namespace eco

@@ -1,5 +1,6 @@
-// The ecoforest command line. Errors are caught here, in one place: bad input exits with 2
-// and "ecoforest: error: FILE:LINE: message", internal failures with 1.
+// The ecoforest command line. Errors are caught here, in one place (README, "Exit codes"):
+// bad input exits with 2 and "ecoforest: error: FILE:LINE: message", a machine that lacks
+// what the work needs with 3 and "ecoforest: cannot run here: ...", a bug with 1.
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -40,13 +41,16 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     std::cerr << "ecoforest: error: " << error.what() << "\n";
     if (error.get_exit_code() != 0) std::cerr << "Run with --help for usage.\n";
-    return 2;
+    return eco::kExitBadInput;
   } catch (const eco::InputError& error) {
     std::cerr << "ecoforest: error: " << error.what() << "\n";
-    return 2;
+    return eco::kExitBadInput;
+  } catch (const eco::EnvironmentError& error) {
+    std::cerr << "ecoforest: cannot run here: " << error.what() << "\n";
+    return eco::kExitEnvironment;
   } catch (const std::exception& error) {
-    std::cerr << "ecoforest: internal error: " << error.what() << "\n";
-    return 1;
+    std::cerr << "ecoforest: internal error (a bug; please report it): " << error.what() << "\n";
+    return eco::kExitBug;
   }
   return 0;
 }

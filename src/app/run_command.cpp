@@ -10,6 +10,7 @@
 #include <tbb/global_control.h>
 
 #include "app/data_paths.hpp"
+#include "core/error.hpp"
 #include "core/progress.hpp"
 #include "sim/simulation.hpp"
 
@@ -84,7 +85,7 @@ int runScenario(const RunArguments& args) {
         "\nstopped after year {} of {}; continue with: ecoforest run {} --resume{}\n",
         summary.lastYear, summary.targetYears, args.scenario,
         args.out ? " --out " + *args.out : std::string());
-    return 130;
+    return kExitInterrupted;
   }
   std::cout << fmt::format("{}: {} years -> {}\n", options.scenarioFile.stem().string(),
                            summary.lastYear, summary.folder.string());

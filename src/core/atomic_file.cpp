@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 #include <atomic>
+#include <cerrno>
+#include <cstring>
 
 #include "core/error.hpp"
 
@@ -20,7 +22,13 @@ std::filesystem::path temporaryNameFor(const std::filesystem::path& target) {
 AtomicFile::AtomicFile(std::filesystem::path target)
     : target_(std::move(target)), temporary_(temporaryNameFor(target_)) {
   stream_.open(temporary_, std::ios::binary | std::ios::trunc);
-  if (!stream_) throw InputError({target_.string(), 0, ""}, "cannot write this file");
+  if (!stream_) {
+    const std::filesystem::path folder =
+        target_.parent_path().empty() ? std::filesystem::path(".") : target_.parent_path();
+    if (!std::filesystem::is_directory(folder))
+      throw InputError({target_.string(), 0, ""}, "cannot write this file: its folder does not exist");
+    throw EnvironmentError(target_.string() + ": cannot write this file: " + std::strerror(errno));
+  }
 }
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
@@ -50,12 +58,15 @@ void AtomicFile::write(std::string_view text) {
 void AtomicFile::commit() {
   stream_.flush();
   bool ok = static_cast<bool>(stream_);
+  const int writeError = errno;
   stream_.close();
-  if (!ok) throw InputError({target_.string(), 0, ""}, "writing failed (disk full?)");
+  ok = ok && static_cast<bool>(stream_);
+  if (!ok)
+    throw EnvironmentError(target_.string() + ": writing failed: " + std::strerror(writeError));
   std::error_code error;
   std::filesystem::rename(temporary_, target_, error);
   if (error)
-    throw InputError({target_.string(), 0, ""}, "cannot rename into place: " + error.message());
+    throw EnvironmentError(target_.string() + ": cannot rename into place: " + error.message());
   done_ = true;
 }
 
@@ -67,7 +78,8 @@ AtomicFile& AtomicFileSet::add(const std::filesystem::path& target) {
 void AtomicFileSet::commit() {
   for (AtomicFile& file : files_) {
     file.stream().flush();
-    if (!file.stream()) throw InputError({file.target().string(), 0, ""}, "writing failed");
+    if (!file.stream())
+      throw EnvironmentError(file.target().string() + ": writing failed: " + std::strerror(errno));
   }
   for (AtomicFile& file : files_) file.commit();
 }

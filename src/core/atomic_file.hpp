@@ -13,7 +13,8 @@ namespace eco {
 
 class AtomicFile {
  public:
-  // Throws InputError if the temporary file cannot be created (missing folder, no permission).
+  // Throws InputError if the target's folder does not exist, EnvironmentError if the
+  // temporary file cannot be created there (no permission, a read-only file system).
   explicit AtomicFile(std::filesystem::path target);
   AtomicFile(AtomicFile&&) noexcept;
   AtomicFile& operator=(AtomicFile&&) = delete;
@@ -23,7 +24,8 @@ class AtomicFile {
   const std::filesystem::path& target() const { return target_; }
   void write(std::span<const unsigned char> bytes);
   void write(std::string_view text);
-  // Flushes, checks for write errors and renames onto the target.
+  // Flushes, checks for write errors (EnvironmentError: a full disk) and renames onto the
+  // target.
   void commit();
 
  private:

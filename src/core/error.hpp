@@ -1,5 +1,8 @@
-// Two error channels (see STYLE.md): InputError for bad user input, pointing at the file,
-// line and key at fault; ECO_ASSERT for programmer mistakes, printing the offending values.
+// Three outcomes, three channels (STYLE.md): InputError for bad user input, pointing at the
+// file, line and key at fault (exit code 2); EnvironmentError for a machine that cannot do
+// what was asked — no display, no ffmpeg, no OpenGL 4.5, a full disk (exit code 3);
+// ECO_ASSERT and InternalError for programmer mistakes, printing the offending values
+// (exit code 1). The command line catches all three in one place (src/app/main.cpp).
 #pragma once
 
 #include <sstream>
@@ -35,11 +38,24 @@ class InputError : public std::runtime_error {
   std::string message_;
 };
 
+// The machine lacks what the work needs, or failed under it: the message says what is
+// missing and how to get it; the input was fine.
+class EnvironmentError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // A broken invariant inside ecoforest itself (exit code 1).
 class InternalError : public std::logic_error {
  public:
   using std::logic_error::logic_error;
 };
+
+// The exit codes of the command line (README, "Exit codes").
+inline constexpr int kExitBug = 1;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitEnvironment = 3;
+inline constexpr int kExitInterrupted = 130;  // 128 + SIGINT, as shells report Ctrl-C
 
 [[noreturn]] void assertionFailed(const char* expression, const char* function, const char* file,
                                   int line, const std::string& detail);

@@ -1,7 +1,9 @@
 #include "render/frame_sink.hpp"
 
 #include <unistd.h>
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -51,9 +53,9 @@ class Mp4Sink : public FrameSink {
   Mp4Sink(const std::filesystem::path& file, int width, int height, int fps)
       : file_(file), partial_(file.parent_path() / (".partial_" + file.filename().string())) {
     if (!programOnPath("ffmpeg"))
-      throw InputError({"ffmpeg", 0, ""},
-                       "MP4 output needs ffmpeg (Debian: apt-get install ffmpeg); or write PNG "
-                       "frames into a folder");
+      throw EnvironmentError(
+          "MP4 output needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg); or "
+          "write PNG frames into a folder");
     // Raw RGB frames in; H.264 in yuv420p, which needs even sizes: pad by a pixel if odd.
     const std::string command = fmt::format(
         "ffmpeg -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s {}x{} -r {} -i - "
@@ -62,7 +64,7 @@ class Mp4Sink : public FrameSink {
         width, height, fps, partial_.string());
     std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give an error, not kill us
     pipe_ = popen(command.c_str(), "w");
-    if (!pipe_) throw std::runtime_error("could not start ffmpeg");
+    if (!pipe_) throw EnvironmentError(std::string("could not start ffmpeg: ") + std::strerror(errno));
   }
   ~Mp4Sink() override {
     if (pipe_) pclose(pipe_);
@@ -84,8 +86,7 @@ class Mp4Sink : public FrameSink {
   [[noreturn]] void fail() {
     if (pipe_) pclose(pipe_);
     pipe_ = nullptr;
-    throw InputError({file_.string(), 0, ""},
-                     "ffmpeg failed to encode it (its messages are above)");
+    throw EnvironmentError(file_.string() + ": ffmpeg failed to encode it (its messages are above)");
   }
 
   std::filesystem::path file_, partial_;

@@ -6,11 +6,13 @@
 #include <epoxy/gl.h>
 #include <fmt/format.h>
 
+#include "core/error.hpp"
+
 namespace eco {
 namespace {
 
 [[noreturn]] void eglFailure(const char* what) {
-  throw std::runtime_error(
+  throw EnvironmentError(
       fmt::format("headless OpenGL: {} failed (EGL error 0x{:x}); ecoforest needs Mesa's EGL "
                   "(Debian: libegl-mesa0, libgl1-mesa-dri)",
                   what, static_cast<unsigned>(eglGetError())));

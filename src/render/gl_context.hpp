@@ -11,7 +11,7 @@ inline constexpr int kGlMajor = 4;
 inline constexpr int kGlMinor = 5;
 
 // A current OpenGL 4.5 core context with no default framebuffer: draw into framebuffer
-// objects. One per thread; throws std::runtime_error when EGL or the context is missing.
+// objects. One per thread; throws EnvironmentError when EGL or the context is missing.
 class HeadlessGl {
  public:
   HeadlessGl();

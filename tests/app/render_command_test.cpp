@@ -82,10 +82,11 @@ TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
   EXPECT_EQ(pngSize(shot), std::make_pair(400, 300));
 }
 
-TEST(ViewCommand, WithoutADisplayItSaysSoAndExitsTwo) {
+// A missing display is the machine's, not the input's: exit code 3 (README, "Exit codes").
+TEST(ViewCommand, WithoutADisplayItSaysSoAndExitsThree) {
   CommandResult r = eco::test::runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " +
                                           std::string(ECOFOREST_EXE) + " view default");
-  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(r.exitCode, 3) << r.output;
   EXPECT_NE(r.output.find("needs a display"), std::string::npos) << r.output;
 }
 

@@ -57,10 +57,11 @@ TEST(TimelapseCommand, BadInputIsExitTwoAndLeavesNoFile) {
   expectError(run + " --out " + (dir / "x.avi").string(), "FILE.mp4");
   expectError(run + " --out " + (dir / "missing" / "t.mp4").string(), "folder does not exist");
   expectError(run + " --camera-path " + (dir / "nope.toml").string() + out, "nope.toml");
-  // Without ffmpeg on PATH an MP4 cannot be made; ecoforest says so.
+  // Without ffmpeg on PATH an MP4 cannot be made; ecoforest says so, with the environment's
+  // exit code.
   CommandResult noFfmpeg = eco::test::runCommand(
       "env PATH=/nonexistent " + std::string(ECOFOREST_EXE) + " timelapse " + run + out);
-  EXPECT_EQ(noFfmpeg.exitCode, 2) << noFfmpeg.output;
+  EXPECT_EQ(noFfmpeg.exitCode, 3) << noFfmpeg.output;
   EXPECT_NE(noFfmpeg.output.find("needs ffmpeg"), std::string::npos) << noFfmpeg.output;
   EXPECT_EQ(eco::test::entriesIn(dir), 0u);
 }

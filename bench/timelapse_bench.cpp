@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
   eco::runSimulation(run);
   const eco::RunFolder folder = eco::openRunFolder(work / "run");
   const eco::Terrain terrain = eco::loadTerrain(folder.scenario);
-  std::vector<eco::Species> species;
-  for (const auto& s : folder.scenario.species) species.push_back(eco::loadSpecies(s.file));
+  std::vector<eco::LibrarySpecies> species;
+  for (const auto& s : folder.scenario.species) species.push_back(eco::loadLibrarySpecies(s.file));
   const eco::TreeLibrary library(std::move(species), {});
   eco::HeadlessGl gl;
   eco::SceneRenderer renderer(terrain, folder.scenario.climate.latitude_deg, &library);

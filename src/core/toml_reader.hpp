@@ -57,6 +57,9 @@ class TomlTable {
   // Throws InputError at the key (or at the table if the key is absent).
   [[noreturn]] void fail(std::string_view key, const std::string& message) const;
   SourceLocation where(std::string_view key) const;
+  // Marks a key (a table) as read by another reader of the same file, so that finish()
+  // accepts it.
+  void leave(std::string_view key) { used_.emplace(key); }
   // Rejects keys that were never read.
   void finish() const;
 

@@ -160,8 +160,7 @@ Species loadSpecies(const std::filesystem::path& file) {
     a.barkRoughness = look->number("bark_roughness", a.barkRoughness, {0.0, 1.0});
     look->finish();
   }
-  if (std::optional<TomlTable> ecology = root.table("ecology"))
-    species.ecology = parseEcology(*ecology);
+  root.leave("ecology");  // the simulation's (sim/species_ecology.hpp)
   root.finish();
   return species;
 }

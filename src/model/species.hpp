@@ -1,7 +1,9 @@
 // A tree species as EcoMod describes it (Zamuda et al., section II): global (scalar)
 // parameters, local parameters as polylines over Gravelius order g and Weibull order w, and
 // the few things ecoforest adds (individual variation, colours). Loaded from TOML files in
-// scenarios/species/; every default lives in species.cpp, where the file is read.
+// scenarios/species/; every default lives in species.cpp, where the file is read. The
+// file's [ecology] table is the simulation's (sim/species_ecology.hpp): the model knows only
+// trees.
 #pragma once
 
 #include <filesystem>
@@ -12,7 +14,6 @@
 #include <glm/vec3.hpp>
 
 #include "core/polyline.hpp"
-#include "model/ecology.hpp"
 
 namespace eco {
 
@@ -92,11 +93,10 @@ struct Species {
   WindParams wind;  // from [strand] or [lsystem]
   Variation variation;
   Appearance appearance;
-  std::optional<Ecology> ecology;  // [ecology]: needed to plant the species in an ecosystem
 };
 
-// Reads a species file; unknown keys, wrong types and out-of-range values throw InputError
-// with the file, line and key.
+// Reads a species file but its [ecology]; unknown keys, wrong types and out-of-range values
+// throw InputError with the file, line and key.
 Species loadSpecies(const std::filesystem::path& file);
 
 }  // namespace eco

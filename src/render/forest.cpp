@@ -63,13 +63,6 @@ void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, floa
   blendWeight.push_back(0.0f);
 }
 
-float speciesMaxHeight(const TreeLibrary& library, int species) {
-  const Species& s = library.species()[species];
-  if (s.ecology) return static_cast<float>(s.ecology->life.height_m.max);
-  const int classes = static_cast<int>(library.settings().ageClasses.size());
-  return library.types()[library.typeIndex(species, 0, classes - 1)].height_m;
-}
-
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
                                   const std::string& where) {
   std::vector<int> librarySpecies;
@@ -88,14 +81,11 @@ std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrar
 Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
                           const std::string& where) {
   const std::vector<int> librarySpecies = librarySpeciesOf(snapshot, library, where);
-  std::vector<float> maxHeights;
-  for (int s = 0; s < static_cast<int>(library.species().size()); ++s)
-    maxHeights.push_back(speciesMaxHeight(library, s));
   Forest forest;
   forest.reserve(snapshot.trees.size());
   for (const TreeRow& tree : snapshot.trees) {
     const int species = librarySpecies[tree.species];
-    const int type = library.typeFor(species, tree.variantSeed, tree.height_m, maxHeights[species]);
+    const int type = library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species));
     forest.add(library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), tree.height_m,
                tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
   }
@@ -114,7 +104,7 @@ Forest demoForest(const Terrain& terrain, const TreeLibrary& library, std::size_
     const double east = rng.uniform(0.0, g.eastOf(g.width - 1));
     const double north = rng.uniform(0.0, g.northOf(0));
     const int species = static_cast<int>(rng.uniform() * speciesCount);
-    const float maxHeight = speciesMaxHeight(library, species);
+    const float maxHeight = library.maxHeight_m(species);
     // Mostly grown trees with some regeneration: the square root leans toward tall.
     const float height = maxHeight * static_cast<float>(0.05 + 0.95 * std::sqrt(rng.uniform()));
     const std::uint64_t individual = rng.nextBits();

@@ -38,9 +38,6 @@ struct Forest {
            float crownRadius_m, float vigor, std::uint64_t individual);
 };
 
-// The largest height the species reaches (its growth curve's maximum, or its mature tree).
-float speciesMaxHeight(const TreeLibrary& library, int species);
-
 // The library's species index of each of the snapshot's species names; an InputError
 // (at `where`) names a species the library does not have.
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,

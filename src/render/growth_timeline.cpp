@@ -8,22 +8,11 @@
 #include "render/camera.hpp"
 
 namespace eco {
-namespace {
-
-float seedlingHeight(const TreeLibrary& library, int species) {
-  const Species& s = library.species()[species];
-  return s.ecology ? static_cast<float>(s.ecology->life.seedlingHeight_m) : 0.15f;
-}
-
-}  // namespace
 
 Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, double year,
                      const TreeLibrary& library, const std::string& where) {
   const std::vector<int> speciesBefore = librarySpeciesOf(before, library, where);
   const std::vector<int> speciesAfter = librarySpeciesOf(after, library, where);
-  std::vector<float> maxHeights;
-  for (int s = 0; s < static_cast<int>(library.species().size()); ++s)
-    maxHeights.push_back(speciesMaxHeight(library, s));
   const double span = std::max(after.year - before.year, 1);
   const float f = static_cast<float>(std::clamp((year - before.year) / span, 0.0, 1.0));
 
@@ -36,7 +25,7 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
   auto add = [&](const TreeRow& tree, int species, float height, float crown, float vigor,
                  float presence) {
     const TreeLibrary::Blend blend =
-        library.blendFor(species, tree.variantSeed, height, maxHeights[species]);
+        library.blendFor(species, tree.variantSeed, height, library.maxHeight_m(species));
     forest.add(library, blend.type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), height,
                crown, vigor, tree.variantSeed ^ tree.id);
     forest.blendType.back() = blend.blendType;
@@ -68,7 +57,7 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
     if (year < established) continue;
     const double growing = after.year - established;
     const float g = growing > 0.0 ? static_cast<float>((year - established) / growing) : 1.0f;
-    const float seedling = std::min(seedlingHeight(library, species), tree.height_m);
+    const float seedling = std::min(library.seedlingHeight_m(species), tree.height_m);
     add(tree, species, glm::mix(seedling, tree.height_m, g), glm::mix(0.0f, tree.crownRadius_m, g),
         tree.vigor, static_cast<float>(std::clamp(year - established, 0.0, 1.0)));
   }

@@ -31,8 +31,13 @@ glm::vec4 boundingSphere(const WindLods& meshes) {
 
 }  // namespace
 
-TreeLibrary::TreeLibrary(std::vector<Species> species, const LibrarySettings& settings)
-    : species_(std::move(species)), settings_(settings) {
+LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file) {
+  return {loadSpecies(file), readEcology(file)};
+}
+
+TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySettings& settings)
+    : settings_(settings) {
+  for (LibrarySpecies& s : species) species_.push_back(std::move(s.model));
   ECO_ASSERT(settings.variants >= 1 && !settings.ageClasses.empty(),
              "variants=" << settings.variants);
   for (int s = 0; s < static_cast<int>(species_.size()); ++s)
@@ -56,6 +61,14 @@ TreeLibrary::TreeLibrary(std::vector<Species> species, const LibrarySettings& se
     type.crownRadius_m = static_cast<float>(measures.crownRadius_m);
     type.bounds = boundingSphere(type.meshes);
   });
+  const int classes = static_cast<int>(settings.ageClasses.size());
+  for (int s = 0; s < static_cast<int>(species.size()); ++s) {
+    const std::optional<Ecology>& ecology = species[s].ecology;
+    maxHeight_m_.push_back(ecology ? static_cast<float>(ecology->life.height_m.max)
+                                   : types_[typeIndex(s, 0, classes - 1)].height_m);
+    seedlingHeight_m_.push_back(
+        static_cast<float>((ecology ? ecology->life : LifeHistory{}).seedlingHeight_m));
+  }
 }
 
 int TreeLibrary::typeIndex(int species, int variant, int ageClass) const {

@@ -5,14 +5,26 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <vector>
 
 #include <glm/vec4.hpp>
 
 #include "model/species.hpp"
+#include "sim/species_ecology.hpp"
 #include "render/wind_mesh.hpp"
 
 namespace eco {
+
+// A species as the renderer draws it: its tree model and, for a species that grows in an
+// ecosystem, the [ecology] of its file (how tall it grows, how small a seedling is).
+struct LibrarySpecies {
+  Species model;
+  std::optional<Ecology> ecology;
+};
+// The species file's tree model and ecology.
+LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file);
 
 struct LibrarySettings {
   int variants = 3;
@@ -33,9 +45,13 @@ struct TreeType {
 
 class TreeLibrary {
  public:
-  TreeLibrary(std::vector<Species> species, const LibrarySettings& settings);
+  TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySettings& settings);
 
   const std::vector<Species>& species() const { return species_; }
+  // The largest height a species reaches (its growth curve's maximum, or its mature tree).
+  float maxHeight_m(int species) const { return maxHeight_m_[species]; }
+  // The height of a seedling in its first year.
+  float seedlingHeight_m(int species) const { return seedlingHeight_m_[species]; }
   const std::vector<TreeType>& types() const { return types_; }
   const LibrarySettings& settings() const { return settings_; }
   int typeIndex(int species, int variant, int ageClass) const;
@@ -61,6 +77,7 @@ class TreeLibrary {
 
  private:
   std::vector<Species> species_;
+  std::vector<float> maxHeight_m_, seedlingHeight_m_;
   LibrarySettings settings_;
   std::vector<TreeType> types_;
 };

@@ -6,7 +6,7 @@
 #include <glm/vec2.hpp>
 
 #include "core/random.hpp"
-#include "model/ecology.hpp"
+#include "sim/species_ecology.hpp"
 
 namespace eco {
 

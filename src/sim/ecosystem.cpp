@@ -20,8 +20,27 @@ constexpr float kGroundLightHeight_m = 0.5f;
 // does not depend on how TBB spreads the chunks over threads.
 constexpr std::size_t kChunk = 1024;
 
+}  // namespace
+
+EcosystemSpecies readEcosystemSpecies(const std::filesystem::path& file,
+                                      const SourceLocation& where) {
+  if (!std::filesystem::is_regular_file(file))
+    throw InputError(where, "species file not found: " + file.string());
+  EcosystemSpecies s;
+  s.species = loadSpecies(file);
+  std::optional<Ecology> ecology = readEcology(file);
+  if (!ecology)
+    throw InputError(where, "species file " + file.string() +
+                                " has no [ecology] table, so it cannot grow in an ecosystem "
+                                "(docs/ecology.md)");
+  s.ecology = std::move(*ecology);
+  return s;
+}
+
+namespace {
+
 const LifeHistory& lifeOf(const EcosystemSpecies& s) {
-  return s.species.ecology->life;
+  return s.ecology.life;
 }
 
 template <typename F>
@@ -45,8 +64,8 @@ Ecosystem::Ecosystem(const Terrain& terrain, std::vector<EcosystemSpecies> speci
       died_(species_.size(), 0) {
   ECO_ASSERT(species_.size() <= 255, "at most 255 species, got " << species_.size());
   for (const EcosystemSpecies& s : species_)
-    ECO_ASSERT(s.species.ecology && s.suitability.size() == terrain.grid.cellCount(),
-               "species " << s.species.name << " lacks its ecology or suitability field");
+    ECO_ASSERT(s.suitability.size() == terrain.grid.cellCount(),
+               "species " << s.species.name << " lacks its suitability field");
   const double cellArea_ha = terrain.grid.dx_m * terrain.grid.dy_m / 1e4;
   auto perCell = [&](double perHa) {
     return std::max(1, static_cast<int>(std::lround(perHa * cellArea_ha)));
@@ -169,7 +188,7 @@ void Ecosystem::computeLightAndGrow() {
     const EcosystemSpecies& s = species_[p.species[i]];
     const LifeHistory& life = lifeOf(s);
     if (p.height_m[i] < kBreastHeight_m) p.light[i] = groundLight_[p.cell[i]];
-    const double lightVigor = std::clamp(s.species.ecology->lightResponse(p.light[i]), 0.0, 1.0);
+    const double lightVigor = std::clamp(s.ecology.lightResponse(p.light[i]), 0.0, 1.0);
     const double vigor = std::min<double>(s.suitability[p.cell[i]], lightVigor);
     p.vigor[i] = static_cast<float>(vigor);
     const double height = grownValue(life.height_m, p.height_m[i], vigor);
@@ -290,7 +309,7 @@ void Ecosystem::establish(std::vector<Seed> seeds, std::vector<int>& seedlingsIn
     const EcosystemSpecies& s = species_[seed.species];
     const double light = groundLight_[seed.cell];
     const double chance =
-        std::min<double>(s.suitability[seed.cell], s.species.ecology->lightResponse(light));
+        std::min<double>(s.suitability[seed.cell], s.ecology.lightResponse(light));
     if (seed.draw >= chance) continue;
     const std::size_t i = addPlant(seed.species, seed.east_m, seed.north_m);
     state_.plants.light[i] = static_cast<float>(light);

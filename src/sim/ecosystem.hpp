@@ -12,19 +12,26 @@
 #include "sim/canopy_light.hpp"
 #include "sim/plants.hpp"
 #include "sim/scenario.hpp"
+#include "sim/species_ecology.hpp"
 
 namespace eco {
 
 struct EcosystemSpecies {
-  Species species;  // with its ecology
+  Species species;  // its tree model
+  Ecology ecology;  // its niche and life history: the file's [ecology]
   double seedRainPerHaPerYear = 0.0;
   Field suitability;  // site suitability per cell
 };
 
+// A species file with its [ecology] table (an InputError at `where` when it has none), for
+// the caller to add seed rain and suitability.
+EcosystemSpecies readEcosystemSpecies(const std::filesystem::path& file,
+                                      const SourceLocation& where);
+
 struct EcosystemSettings {
-  std::uint64_t seed = 1;
-  double latitude_deg = 46.0;
-  double windFrom_deg = 270.0;
+  std::uint64_t seed = Scenario{}.seed;
+  double latitude_deg = Climate{}.latitude_deg;
+  double windFrom_deg = Climate{}.prevailingWindFrom_deg;
   SimulationSettings simulation;
 };
 

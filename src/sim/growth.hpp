@@ -3,7 +3,7 @@
 // allometry, and the yearly chance of dying.
 #pragma once
 
-#include "model/ecology.hpp"
+#include "sim/species_ecology.hpp"
 
 namespace eco {
 

@@ -118,17 +118,9 @@ std::vector<EcosystemSpecies> loadEcosystemSpecies(const Scenario& scenario,
     throw InputError(scenario.species[255].where, "at most 255 species per scenario");
   std::vector<EcosystemSpecies> result;
   for (const ScenarioSpecies& entry : scenario.species) {
-    if (!std::filesystem::is_regular_file(entry.file))
-      throw InputError(entry.where, "species file not found: " + entry.file.string());
-    EcosystemSpecies s;
-    s.species = loadSpecies(entry.file);
-    if (!s.species.ecology)
-      throw InputError(entry.where, "species file " + entry.file.string() +
-                                        " has no [ecology] table, so it cannot grow in an "
-                                        "ecosystem (docs/ecology.md)");
+    EcosystemSpecies s = readEcosystemSpecies(entry.file, entry.where);
     s.seedRainPerHaPerYear = entry.seedRainPerHaPerYear;
-    s.suitability =
-        siteSuitability(s.species.ecology->tolerance, fields, scenario.simulation.suitability);
+    s.suitability = siteSuitability(s.ecology.tolerance, fields, scenario.simulation.suitability);
     result.push_back(std::move(s));
   }
   return result;

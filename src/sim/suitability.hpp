@@ -6,7 +6,7 @@
 
 #include <array>
 
-#include "model/ecology.hpp"
+#include "sim/species_ecology.hpp"
 #include "sim/conditions.hpp"
 
 namespace eco {

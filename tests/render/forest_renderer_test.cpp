@@ -113,7 +113,7 @@ TEST(ForestRenderer, PresenceKeepsThatShareOfTheTreesPixels) {
 
 TEST(ForestRenderer, VariantsShareTheImpostorOfTheirSpeciesAndAgeClass) {
   test::useHeadlessGl();
-  const TreeLibrary library({test::loadNamedSpecies("shrub")},
+  const TreeLibrary library({test::namedLibrarySpecies("shrub")},
                             LibrarySettings{.variants = 3, .ageClasses = {0.3, 1.0}});
   FrameUniformBuffer uniforms;
   ForestRenderer renderer(library, {}, uniforms);

@@ -16,8 +16,13 @@ Species loadNamedSpecies(const std::string& name) {
   return loadSpecies(std::filesystem::path(ECOFOREST_DATA_DIR) / "species" / (name + ".toml"));
 }
 
+LibrarySpecies namedLibrarySpecies(const std::string& name) {
+  return loadLibrarySpecies(std::filesystem::path(ECOFOREST_DATA_DIR) / "species" /
+                            (name + ".toml"));
+}
+
 const TreeLibrary& smallLibrary() {
-  static const TreeLibrary library({loadNamedSpecies("beech"), loadNamedSpecies("maple")},
+  static const TreeLibrary library({namedLibrarySpecies("beech"), namedLibrarySpecies("maple")},
                                    LibrarySettings{.variants = 1, .ageClasses = {0.4, 1.0}});
   return library;
 }

@@ -19,6 +19,8 @@ namespace eco::test {
 void useHeadlessGl();
 
 Species loadNamedSpecies(const std::string& name);
+// The same with its ecology, for a TreeLibrary.
+LibrarySpecies namedLibrarySpecies(const std::string& name);
 // A library of the named species with one variant and two age classes (young, mature):
 // small enough to build in a moment. Built once per program and shared.
 const TreeLibrary& smallLibrary();

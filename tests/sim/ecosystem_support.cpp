@@ -13,7 +13,7 @@ std::string withoutEcology(const std::string& name) {
   return text.substr(0, text.find("\n# Ecology for the ecosystem simulation"));
 }
 
-Species testSpecies(const std::string& name, const TestEcology& e) {
+EcosystemSpecies testSpecies(const std::string& name, const TestEcology& e) {
   const std::string text =
       withoutEcology("beech") + fmt::format(R"(
 [ecology]
@@ -44,9 +44,15 @@ dispersal_mean_m = {}
   const std::filesystem::path folder = freshDirectory("species_" + name);
   const std::filesystem::path file = folder / (name + ".toml");
   writeFile(file, text);
-  Species species = loadSpecies(file);
-  species.name = name;
+  EcosystemSpecies species = readEcosystemSpecies(file, {file.string()});
+  species.species.name = name;
   return species;
+}
+
+EcosystemSpecies shippedSpecies(const std::string& name) {
+  const std::filesystem::path file =
+      std::filesystem::path(ECOFOREST_DATA_DIR) / "species" / (name + ".toml");
+  return readEcosystemSpecies(file, {file.string()});
 }
 
 ConditionFields uniformConditions(const Terrain& terrain) {
@@ -62,13 +68,11 @@ ConditionFields uniformConditions(const Terrain& terrain) {
   return f;
 }
 
-EcosystemSpecies inEcosystem(Species species, const ConditionFields& fields,
+EcosystemSpecies inEcosystem(EcosystemSpecies species, const ConditionFields& fields,
                              double seedRainPerHaPerYear) {
-  EcosystemSpecies s;
-  s.suitability = siteSuitability(species.ecology->tolerance, fields, SuitabilityRule::Minimum);
-  s.species = std::move(species);
-  s.seedRainPerHaPerYear = seedRainPerHaPerYear;
-  return s;
+  species.suitability = siteSuitability(species.ecology.tolerance, fields, SuitabilityRule::Minimum);
+  species.seedRainPerHaPerYear = seedRainPerHaPerYear;
+  return species;
 }
 
 }  // namespace eco::test

@@ -26,13 +26,15 @@ struct TestEcology {
   std::string dispersal = "animal";
 };
 
-// Writes a species file named NAME in a fresh folder and loads it.
-Species testSpecies(const std::string& name, const TestEcology& ecology);
+// Writes a species file named NAME in a fresh folder and loads it with its ecology.
+EcosystemSpecies testSpecies(const std::string& name, const TestEcology& ecology);
+// scenarios/species/NAME.toml with its ecology.
+EcosystemSpecies shippedSpecies(const std::string& name);
 
 // Conditions that every default tolerance finds ideal, on the terrain's grid.
 ConditionFields uniformConditions(const Terrain& terrain);
 
-EcosystemSpecies inEcosystem(Species species, const ConditionFields& fields,
+EcosystemSpecies inEcosystem(EcosystemSpecies species, const ConditionFields& fields,
                              double seedRainPerHaPerYear = 0.0);
 
 }  // namespace eco::test

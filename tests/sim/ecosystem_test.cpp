@@ -105,8 +105,8 @@ TEST(Ecosystem, LightUnderADenseCanopyIsLowerThanInAGap) {
 TEST(Ecosystem, ShadeTolerantBeechReplacesPioneerPine) {
   const Terrain terrain = flat(24, 10.0);
   const ConditionFields fields = test::uniformConditions(terrain);
-  Species beech = loadSpecies(std::filesystem::path(ECOFOREST_DATA_DIR) / "species/beech.toml");
-  Species pine = loadSpecies(std::filesystem::path(ECOFOREST_DATA_DIR) / "species/pine.toml");
+  EcosystemSpecies beech = test::shippedSpecies("beech");
+  EcosystemSpecies pine = test::shippedSpecies("pine");
   Ecosystem ecosystem(
       terrain, {test::inEcosystem(beech, fields, 2.0), test::inEcosystem(pine, fields, 20.0)},
       settingsWith());

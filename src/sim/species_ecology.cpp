@@ -1,4 +1,4 @@
-#include "model/ecology.hpp"
+#include "sim/species_ecology.hpp"
 
 #include <cmath>
 #include <limits>
@@ -199,6 +199,14 @@ Ecology parseEcology(TomlTable& table) {
   life->finish();
   table.finish();
   return ecology;
+}
+
+std::optional<Ecology> readEcology(const std::filesystem::path& speciesFile) {
+  TomlDocument document = TomlDocument::load(speciesFile);
+  TomlTable root = document.root();
+  std::optional<TomlTable> ecology = root.table("ecology");
+  if (!ecology) return std::nullopt;
+  return parseEcology(*ecology);
 }
 
 }  // namespace eco

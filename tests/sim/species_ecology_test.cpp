@@ -1,4 +1,4 @@
-#include "model/ecology.hpp"
+#include "sim/species_ecology.hpp"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/toml_reader.hpp"
-#include "test_support.hpp"
+#include "test_files.hpp"
 
 namespace eco {
 namespace {
@@ -147,17 +147,33 @@ TEST(Ecology, BadValuesAreReportedAtTheirLine) {
 }
 
 TEST(Ecology, ShippedSpeciesCarryTheirEllenbergValues) {
-  const Species beech = test::loadNamed("beech"), pine = test::loadNamed("pine");
-  const Species maple = test::loadNamed("maple"), hazel = test::loadNamed("shrub");
-  ASSERT_TRUE(beech.ecology && pine.ecology && maple.ecology && hazel.ecology);
-  EXPECT_EQ(beech.ecology->ellenberg.light, 3);
-  EXPECT_EQ(pine.ecology->ellenberg.light, 7);
-  EXPECT_EQ(maple.ecology->ellenberg.moisture, 6);
-  EXPECT_EQ(hazel.ecology->ellenberg.moisture, 0);
+  auto shipped = [](const char* name) {
+    return readEcology(std::filesystem::path(ECOFOREST_DATA_DIR) / "species" /
+                       (std::string(name) + ".toml"));
+  };
+  const std::optional<Ecology> beech = shipped("beech"), pine = shipped("pine");
+  const std::optional<Ecology> maple = shipped("maple"), hazel = shipped("shrub");
+  ASSERT_TRUE(beech && pine && maple && hazel);
+  EXPECT_EQ(beech->ellenberg.light, 3);
+  EXPECT_EQ(pine->ellenberg.light, 7);
+  EXPECT_EQ(maple->ellenberg.moisture, 6);
+  EXPECT_EQ(hazel->ellenberg.moisture, 0);
   // Shade tolerance orders as the light values do.
-  EXPECT_LT(beech.ecology->lightResponse(0.05), 1.0);
-  EXPECT_GT(beech.ecology->lightResponse(0.05), maple.ecology->lightResponse(0.05));
-  EXPECT_EQ(pine.ecology->lightResponse(0.05), 0.0);
+  EXPECT_LT(beech->lightResponse(0.05), 1.0);
+  EXPECT_GT(beech->lightResponse(0.05), maple->lightResponse(0.05));
+  EXPECT_EQ(pine->lightResponse(0.05), 0.0);
+}
+
+}  // namespace
+}  // namespace eco
+
+namespace eco {
+namespace {
+
+TEST(Ecology, ASpeciesWithoutEcologyHasNone) {
+  const auto file = test::freshDirectory("no_ecology") / "tree.toml";
+  test::writeFile(file, "name = \"tree\"\n");
+  EXPECT_FALSE(readEcology(file).has_value());
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <array>
+#include <filesystem>
+#include <optional>
 
 #include "core/polyline.hpp"
 
@@ -85,5 +87,7 @@ ToleranceCurves deriveTolerances(const Ellenberg& values);
 
 // Reads an [ecology] table; throws InputError at the file, line and key at fault.
 Ecology parseEcology(TomlTable& table);
+// The [ecology] table of a species file, or nothing when it has none.
+std::optional<Ecology> readEcology(const std::filesystem::path& speciesFile);
 
 }  // namespace eco

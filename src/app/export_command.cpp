@@ -8,7 +8,7 @@
 
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
-#include "render/forest_gltf.hpp"
+#include "render/forest_export.hpp"
 
 namespace eco {
 namespace {
@@ -31,8 +31,8 @@ void runExport(const ExportArgs& args) {
   source.buildLibrary();
   const Forest forest = source.forestOf(year, 0);
   const ForestGltfSummary summary =
-      writeForestGltf(source.terrain, *source.library, forest, out,
-                      args.lod == "all" ? kAllLods : std::stoi(args.lod));
+      exportForest(source.terrain, *source.library, forest, out,
+                   args.lod == "all" ? kAllLods : std::stoi(args.lod));
   std::cout << fmt::format(
       "{}: year {}, {} trees as instances of {} tree types (LOD {}), terrain of {} triangles\n",
       args.out, year, summary.instances, summary.treeMeshes, args.lod, summary.terrainTriangles);

@@ -1,4 +1,4 @@
-#include "render/forest_gltf.hpp"
+#include "render/forest_export.hpp"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -51,7 +51,7 @@ TEST(ForestGltf, EveryTreeIsOneInstanceWithConsistentAccessors) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf") / "forest.glb";
   const ForestGltfSummary summary =
-      writeForestGltf(scene.terrain, test::smallLibrary(), scene.forest, file);
+      exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
   EXPECT_EQ(summary.instances, scene.forest.size());
   const tinygltf::Model model = readBack(file);
   EXPECT_EQ(model.extensionsRequired, std::vector<std::string>{"EXT_mesh_gpu_instancing"});
@@ -80,7 +80,7 @@ TEST(ForestGltf, EveryTreeIsOneInstanceWithConsistentAccessors) {
 TEST(ForestGltf, TheTerrainsBoundingBoxIsTheHeightmaps) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf_box") / "forest.gltf";
-  writeForestGltf(scene.terrain, test::smallLibrary(), scene.forest, file);
+  exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
   const tinygltf::Model model = readBack(file);
   const tinygltf::Mesh& terrain = model.meshes[model.nodes[0].mesh];
   ASSERT_EQ(terrain.name, "terrain");
@@ -102,7 +102,7 @@ TEST(ForestGltf, AllLevelsOfDetailThroughMsftLod) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf_lods") / "forest.glb";
   const ForestGltfSummary summary =
-      writeForestGltf(scene.terrain, test::smallLibrary(), scene.forest, file, kAllLods);
+      exportForest(scene.terrain, test::smallLibrary(), scene.forest, file, kAllLods);
   const tinygltf::Model model = readBack(file);
   EXPECT_EQ(model.extensionsUsed,
             (std::vector<std::string>{"EXT_mesh_gpu_instancing", "MSFT_lod"}));
@@ -143,7 +143,7 @@ TEST(ForestGltf, InstanceRotationMatchesTheRenderersYaw) {
   Scene scene = smallScene();
   scene.forest.yaw[0] = 0.7f;
   const auto file = test::freshDirectory("forest_gltf_yaw") / "forest.glb";
-  writeForestGltf(scene.terrain, test::smallLibrary(), scene.forest, file);
+  exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
   const tinygltf::Model model = readBack(file);
   for (const tinygltf::Node& node : model.nodes) {
     if (!node.extensions.count("EXT_mesh_gpu_instancing")) continue;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "render/gl_context.hpp"
+#include "render/scene_renderer.hpp"
 #include "render/timelapse.hpp"
 #include "sim/simulation.hpp"
 
@@ -43,7 +44,8 @@ int main(int argc, char** argv) {
   auto sink = mp4 ? eco::mp4Sink(work / "growth.mp4", settings.frame, settings.fps)
                   : eco::pngFolderSink(work / "frames");
   const eco::TimelapseTimings t =
-      eco::renderTimelapse(folder, library, renderer, settings, *sink, {});
+      eco::renderTimelapse(folder, library, terrain, eco::frameDrawer(renderer, settings.frame),
+                           settings, *sink, {});
   std::printf("%s, growth 0-%d of %s, %dx%d, %d frames into %s\n", eco::glDescription().c_str(),
               folder.snapshotYears.back(), folder.scenario.name.c_str(), settings.frame.width,
               settings.frame.height, t.frames, mp4 ? "H.264 MP4" : "PNG frames");

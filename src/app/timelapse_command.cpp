@@ -93,7 +93,8 @@ void runTimelapse(const TimelapseArgs& args) {
   const bool terminal = Progress::stderrIsTerminal();
   const auto start = std::chrono::steady_clock::now();
   const TimelapseTimings t =
-      renderTimelapse(run, *source.library, renderer, settings, *sink, [&](int done, int frames) {
+      renderTimelapse(run, *source.library, source.terrain, frameDrawer(renderer, settings.frame),
+                      settings, *sink, [&](int done, int frames) {
         if (!terminal) return;
         const double elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

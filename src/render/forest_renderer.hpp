@@ -17,19 +17,11 @@
 #include "render/frame_uniforms.hpp"
 #include "render/gl_objects.hpp"
 #include "render/impostor.hpp"
+#include "render/render_options.hpp"
 #include "render/shader.hpp"
 #include "render/tree_library.hpp"
 
 namespace eco {
-
-struct ForestStats {
-  std::array<std::size_t, kLevelCount> instances{};  // per level, cross-fades counted twice
-  std::size_t culled = 0;                            // outside the frustum
-  std::size_t tooSmall = 0;                          // under the LOD settings' minimum size
-  std::size_t triangles = 0;                         // drawn in the colour pass
-  std::size_t lod0Triangles = 0;                     // the same trees all at LOD0, for comparison
-  std::size_t shadowCasters = 0;
-};
 
 // Where trees cast shadows: within `halfSize_m` of `centre`, and only trees drawn as meshes.
 struct ShadowBox {

@@ -128,4 +128,13 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   return stats;
 }
 
+DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size) {
+  auto target = std::make_shared<RenderTarget>(RenderTarget::create(size.width, size.height));
+  return [&renderer, target](const Forest& forest, const Camera& camera,
+                             const RenderOptions& options) {
+    renderer.render(&forest, camera, options, *target);
+    return readPixels(target->width, target->height);
+  };
+}
+
 }  // namespace eco

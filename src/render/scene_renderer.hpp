@@ -13,40 +13,14 @@
 #include "render/frame_uniforms.hpp"
 #include "render/gl_objects.hpp"
 #include "render/impostor.hpp"
+#include "render/render_options.hpp"
 #include "render/shader.hpp"
 #include "render/sun.hpp"
 #include "render/terrain_renderer.hpp"
+#include "render/timelapse.hpp"
 #include "render/tree_library.hpp"
-#include "sim/scenario.hpp"
 
 namespace eco {
-
-struct SceneWind {
-  // Where the wind comes from (0 north, 90 east): a scenario's prevailing wind.
-  double fromBearing_deg = Climate{}.prevailingWindFrom_deg;
-  double directed_wg = 0.0;        // w_g of the horizontal wind
-  double sway_ws = 0.0;            // w_s of the undirected sway
-  double gust = 0.25;              // relative swing of the directed wind over time
-  double time = 0.0;               // t of the sway, radians
-};
-
-struct RenderOptions {
-  SunTime sun;
-  SceneWind wind;
-  LodSettings lod;
-  bool shadows = true;
-  float shadowRange_m = 150.0f;  // half the side of the shadowed square ahead of the camera
-  int shadowMapSize = 2048;
-  std::optional<float> fogDensity;  // per metre; default clear air (100 km visibility)
-};
-
-struct FrameStats {
-  ForestStats forest;
-  std::size_t terrainTriangles = 0;
-  double prepareMs = 0.0;  // culling, LOD choice, instance upload (CPU)
-  double frameMs = 0.0;    // the whole frame until the GPU finished
-  std::size_t triangles() const { return forest.triangles + terrainTriangles; }
-};
 
 class SceneRenderer {
  public:
@@ -74,5 +48,9 @@ class SceneRenderer {
   GlName shadowFramebuffer_, shadowDepth_;
   int shadowSize_ = 0;
 };
+
+// The renderer as a time-lapse's back end: each call draws into one target of `size` and
+// reads the pixels back.
+DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size);
 
 }  // namespace eco

@@ -97,15 +97,15 @@ void drawOverlay(Image& frame, double year, double metresPerPixel) {
 }
 
 TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& library,
-                                 SceneRenderer& renderer, const TimelapseSettings& settings,
-                                 FrameSink& sink, const std::function<void(int, int)>& progress) {
+                                 const Terrain& terrain, const DrawFrame& draw,
+                                 const TimelapseSettings& settings, FrameSink& sink,
+                                 const std::function<void(int, int)>& progress) {
   const auto start = Clock::now();
   TimelapseTimings timings;
   const int frames = settings.frameCount();
   SnapshotCache snapshots(run);
   std::vector<int> years{0};
   years.insert(years.end(), run.snapshotYears.begin(), run.snapshotYears.end());
-  const RenderTarget target = RenderTarget::create(settings.frame.width, settings.frame.height);
   Forest forest;
   for (int frame = 0; frame < frames; ++frame) {
     auto phase = Clock::now();
@@ -129,14 +129,13 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
     phase = Clock::now();
     const double u = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
     const Camera camera = settings.camera(u);
-    renderer.render(&forest, camera, options, target);
-    Image image = readPixels(settings.frame.width, settings.frame.height);
+    Image image = draw(forest, camera, options);
     timings.render_s += secondsSince(phase);
 
     phase = Clock::now();
     if (settings.overlay)
       drawOverlay(image, year,
-                  metresPerPixelAtCentre(camera, renderer.terrainData(), settings.frame.height));
+                  metresPerPixelAtCentre(camera, terrain, settings.frame.height));
     sink.add(image);
     timings.encode_s += secondsSince(phase);
     if (progress) progress(frame + 1, frames);

@@ -1,7 +1,8 @@
 // Time-lapses of a run (docs/rendering.md): growth, the forest growing continuously from
 // year to year between its snapshots; or wind, one year with the wind's time advancing. Each
-// frame is rendered headless, optionally overlaid with the year and a scale bar, and handed
-// to a FrameSink (PNG frames or MP4).
+// frame is drawn by the back end it is given (the OpenGL scene renderer, headless),
+// optionally overlaid with the year and a scale bar, and handed to a FrameSink (PNG frames or
+// MP4).
 #pragma once
 
 #include <functional>
@@ -9,7 +10,8 @@
 #include "render/camera_path.hpp"
 #include "render/frame_sink.hpp"
 #include "render/frame_size.hpp"
-#include "render/scene_renderer.hpp"
+#include "render/forest.hpp"
+#include "render/render_options.hpp"
 #include "render/tree_library.hpp"
 #include "sim/run_folder.hpp"
 
@@ -41,10 +43,15 @@ struct TimelapseTimings {
   double total_s = 0.0;
 };
 
-// `progress(frame done, frames)` after each frame. `where` names the run for errors.
+// Draws one frame of the terrain and a forest and reads it back.
+using DrawFrame =
+    std::function<Image(const Forest& forest, const Camera& camera, const RenderOptions& options)>;
+
+// `progress(frame done, frames)` after each frame. `terrain` is the run's, for the scale bar.
 TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& library,
-                                 SceneRenderer& renderer, const TimelapseSettings& settings,
-                                 FrameSink& sink, const std::function<void(int, int)>& progress);
+                                 const Terrain& terrain, const DrawFrame& draw,
+                                 const TimelapseSettings& settings, FrameSink& sink,
+                                 const std::function<void(int, int)>& progress);
 
 // Draws the year (top left) and a scale bar for the view's centre (bottom left) into `frame`.
 void drawOverlay(Image& frame, double year, double metresPerPixel);

@@ -1,5 +1,6 @@
 #include "render/scene_renderer.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -93,6 +94,63 @@ TEST(SceneRenderer, TreesCastShadowsOnTheGround) {
   scene.options.shadows = false;
   const Image unshadowed = renderScene(scene, 160, 96);
   EXPECT_LT(test::meanColor(shadowed).g, test::meanColor(unshadowed).g);
+}
+
+class CollectingSink : public FrameSink {
+ public:
+  void add(const Image& frame) override { frames.push_back(frame); }
+  void finish() override { finished = true; }
+  std::vector<Image> frames;
+  bool finished = false;
+};
+
+// A single maple planted at year 0 grows through three snapshots; its silhouette in a fixed
+// view grows frame after frame (allowing for the dither of age-class blends).
+TEST(SceneRenderer, DrawsATimelapseInWhichOneTreesSilhouetteGrows) {
+  test::useHeadlessGl();
+  const auto dir = test::freshDirectory("timelapse_run");
+  std::filesystem::create_directories(dir / "trees");
+  const char* header =
+      "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n";
+  const std::pair<int, double> sizes[] = {{10, 2.0}, {20, 6.0}, {30, 11.0}};
+  RunFolder run;
+  run.dir = dir;
+  for (auto [year, height] : sizes) {
+    test::writeFile(dir / "trees" / fmt::format("year_{:04d}.csv", year),
+                    std::string(header) + fmt::format("1,maple,160,160,100,{},{},{},0.1,0.9,1\n",
+                                                      year - 2, height, 0.3 * height));
+    run.snapshotYears.push_back(year);
+  }
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer renderer(terrain, 46.0, &test::smallLibrary());
+  TimelapseSettings settings;
+  settings.fromYear = 8.0;  // the tree established in year 8
+  settings.toYear = 30.0;
+  settings.seconds = 1.2;
+  settings.fps = 10;
+  settings.frame = {96, 96};
+  settings.render.shadows = false;
+  settings.camera = [](double) {
+    return lookingAt(worldFromMap(160, 130, 106), worldFromMap(160, 160, 105));
+  };
+  CollectingSink sink;
+  const TimelapseTimings t =
+      renderTimelapse(run, test::smallLibrary(), terrain, frameDrawer(renderer, settings.frame),
+                      settings, sink, {});
+  ASSERT_EQ(t.frames, 12);
+  ASSERT_EQ(sink.frames.size(), 12u);
+  EXPECT_TRUE(sink.finished);
+  Forest empty;
+  const RenderTarget target = RenderTarget::create(96, 96);
+  renderer.render(&empty, settings.camera(0.0), settings.render, target);
+  const Image background = readPixels(96, 96);
+  double previous = 0.0;
+  for (std::size_t f = 0; f < sink.frames.size(); ++f) {
+    const double area = test::compareImages(sink.frames[f], background).differingShare;
+    EXPECT_GE(area, previous * 0.95) << "frame " << f;
+    previous = std::max(previous, area);
+  }
+  EXPECT_GT(previous, 5.0 * test::compareImages(sink.frames[1], background).differingShare);
 }
 
 }  // namespace

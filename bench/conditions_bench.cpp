@@ -10,8 +10,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "sim/conditions.hpp"
-#include "sim/slope.hpp"
+#include "sim/conditions/conditions.hpp"
+#include "sim/conditions/slope.hpp"
 
 int main(int argc, char** argv) {
   using Clock = std::chrono::steady_clock;

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/simulation.hpp"
+#include "sim/run/simulation.hpp"
 
 int main(int argc, char** argv) {
   const std::filesystem::path scenario =

@@ -8,9 +8,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "model/lsystem_deriver.hpp"
-#include "model/lsystem_parser.hpp"
-#include "model/lsystem_turtle.hpp"
+#include "model/lsystem/deriver.hpp"
+#include "model/lsystem/parser.hpp"
+#include "model/lsystem/turtle.hpp"
 
 namespace {
 

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <string>
 
-#include "render/gl_context.hpp"
-#include "render/scene_renderer.hpp"
-#include "render/timelapse.hpp"
-#include "sim/simulation.hpp"
+#include "render/gl/gl_context.hpp"
+#include "render/gl/scene_renderer.hpp"
+#include "render/scene/timelapse.hpp"
+#include "sim/run/simulation.hpp"
 
 int main(int argc, char** argv) {
   const std::filesystem::path scenario =

@@ -2,9 +2,9 @@
 // beech skeleton + LOD0 mesh < 2 ms, pine < 10 ms). Run: build/bench/tree_bench
 #include <benchmark/benchmark.h>
 
-#include "model/lod.hpp"
+#include "model/mesh/lod.hpp"
 #include "model/strand_model.hpp"
-#include "model/tree_mesher.hpp"
+#include "model/mesh/tree_mesher.hpp"
 
 namespace {
 

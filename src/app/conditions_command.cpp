@@ -10,8 +10,8 @@
 #include "app/data_paths.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
-#include "sim/condition_maps.hpp"
-#include "sim/conditions.hpp"
+#include "sim/conditions/condition_maps.hpp"
+#include "sim/conditions/conditions.hpp"
 
 namespace eco {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
-#include "render/forest_export.hpp"
+#include "render/scene/forest_export.hpp"
 
 namespace eco {
 namespace {

@@ -9,7 +9,7 @@
 #include "app/scene_source.hpp"
 #include "app/view_options.hpp"
 #include "core/error.hpp"
-#include "render/gl_context.hpp"
+#include "render/gl/gl_context.hpp"
 #include "sim/image_io.hpp"
 
 namespace eco {

@@ -12,7 +12,7 @@
 #include "app/data_paths.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
-#include "sim/simulation.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace eco {
 namespace {

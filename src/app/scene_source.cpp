@@ -4,7 +4,7 @@
 
 #include "app/data_paths.hpp"
 #include "core/error.hpp"
-#include "sim/conditions.hpp"
+#include "sim/conditions/conditions.hpp"
 #include "sim/image_io.hpp"
 
 namespace eco {

@@ -7,10 +7,10 @@
 #include <optional>
 #include <string>
 
-#include "render/forest.hpp"
-#include "render/tree_library.hpp"
+#include "render/scene/forest.hpp"
+#include "render/scene/tree_library.hpp"
 #include "sim/grid.hpp"
-#include "sim/run_folder.hpp"
+#include "sim/run/run_folder.hpp"
 #include "sim/scenario.hpp"
 #include "sim/terrain.hpp"
 

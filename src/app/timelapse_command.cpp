@@ -11,8 +11,8 @@
 #include "app/view_options.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
-#include "render/gl_context.hpp"
-#include "render/timelapse.hpp"
+#include "render/gl/gl_context.hpp"
+#include "render/scene/timelapse.hpp"
 
 namespace eco {
 namespace {

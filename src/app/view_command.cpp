@@ -8,8 +8,8 @@
 #include "app/scene_source.hpp"
 #include "app/view_options.hpp"
 #include "app/view_panel.hpp"
-#include "render/camera_controller.hpp"
-#include "render/window.hpp"
+#include "render/scene/camera_controller.hpp"
+#include "render/gl/window.hpp"
 #include "sim/image_io.hpp"
 
 namespace eco {

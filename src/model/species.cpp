@@ -1,9 +1,9 @@
 #include "model/species.hpp"
 
 #include "core/toml_reader.hpp"
-#include "model/lsystem_deriver.hpp"
-#include "model/lsystem_parser.hpp"
-#include "model/lsystem_turtle.hpp"
+#include "model/lsystem/deriver.hpp"
+#include "model/lsystem/parser.hpp"
+#include "model/lsystem/turtle.hpp"
 
 namespace eco {
 namespace {

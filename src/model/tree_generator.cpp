@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "model/lsystem_deriver.hpp"
-#include "model/lsystem_turtle.hpp"
+#include "model/lsystem/deriver.hpp"
+#include "model/lsystem/turtle.hpp"
 #include "model/strand_model.hpp"
 #include "model/wind.hpp"
 

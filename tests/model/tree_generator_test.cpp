@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
-#include "model/lod.hpp"
+#include "model/mesh/lod.hpp"
 #include "model/strand_model.hpp"
 #include "test_support.hpp"
 

@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "model/lsystem_deriver.hpp"
-#include "model/lsystem_parser.hpp"
-#include "model/lsystem_turtle.hpp"
+#include "model/lsystem/deriver.hpp"
+#include "model/lsystem/parser.hpp"
+#include "model/lsystem/turtle.hpp"
 
 namespace eco {
 namespace {

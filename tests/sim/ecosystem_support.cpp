@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "sim/suitability.hpp"
+#include "sim/ecology/suitability.hpp"
 #include "test_files.hpp"
 
 namespace eco::test {

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <string>
 
-#include "sim/conditions.hpp"
-#include "sim/ecosystem.hpp"
+#include "sim/conditions/conditions.hpp"
+#include "sim/ecology/ecosystem.hpp"
 
 namespace eco::test {
 

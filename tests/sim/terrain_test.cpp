@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/conditions.hpp"
+#include "sim/conditions/conditions.hpp"
 #include "sim/image_io.hpp"
 #include "terrain_support.hpp"
 #include "test_files.hpp"

@@ -1,0 +1,35 @@
+// Levels of detail of one tree (billboards and impostors come with the renderer):
+//   LOD0  the full mesh: every segment, every leaf;
+//   LOD1  fewer ring sides, twigs of fewer than 4 strands dropped (strand model only),
+//         leaves gathered into clusters of crossed cards textured with many small leaves,
+//         keeping the visible leaf area (card area times the opaque fraction of its
+//         texture);
+//   LOD2  a crown-volume proxy of a few hundred triangles, a star-shaped hull around the
+//         leaves that keeps the silhouette, on a low-poly stem.
+#pragma once
+
+#include "model/mesh/mesh.hpp"
+#include "model/skeleton.hpp"
+#include "model/species.hpp"
+
+namespace eco {
+
+inline constexpr int kLodCount = 3;
+inline constexpr int kLod1MinStrands = 4;
+inline constexpr int kLod1ClusterStrands = 4;  // leaves under one such branch form a cluster
+
+// Whether a species' LOD1 clusters show needles rather than broadleaves.
+bool clustersOfNeedles(const Species& species);
+// Visible (opaque) area of one LOD0 leaf of the species, m^2.
+float visibleLeafArea(const Species& species, float size_m);
+
+// maxSides: ring sides of the stem at LOD0 (LOD1 uses at most 5, never more than this).
+inline constexpr int kDefaultMaxSides = 8;
+
+TreeMesh buildLod(const TreeSkeleton& skeleton, const Species& species, int lod,
+                  int maxSides = kDefaultMaxSides);
+// The same into a mesh the caller owns (LOD0 reuses its capacity).
+void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod, TreeMesh& out,
+                  int maxSides = kDefaultMaxSides);
+
+}  // namespace eco

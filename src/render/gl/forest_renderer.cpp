@@ -1,0 +1,375 @@
+#include "render/gl/forest_renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
+
+#include "model/mesh/textures.hpp"
+
+namespace eco {
+namespace {
+
+constexpr int kMaterialKinds = 5;
+
+glm::vec3 linearFromSrgb(glm::vec3 c) {
+  return glm::pow(c, glm::vec3(2.2f));
+}
+
+}  // namespace
+
+PackedTreeVertex packVertex(const TreeVertex& v) {
+  PackedTreeVertex p;
+  p.position = v.position;
+  p.normal = glm::packSnorm3x10_1x2(glm::vec4(v.normal, 0.0f));
+  p.uv = v.uv;
+  const glm::vec3* bases[] = {&v.swaySin, &v.swayCos, &v.bendEast, &v.bendSouth};
+  for (int b = 0; b < 4; ++b)
+    for (int c = 0; c < 3; ++c) p.wind[b * 3 + c] = glm::packHalf1x16((*bases[b])[c]);
+  return p;
+}
+
+void setTreeVertexLayout(GLuint vao) {
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(PackedTreeVertex, position));
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 1, 4, GL_INT_2_10_10_10_REV, GL_TRUE,
+                            offsetof(PackedTreeVertex, normal));
+  glEnableVertexArrayAttrib(vao, 2);
+  glVertexArrayAttribFormat(vao, 2, 2, GL_FLOAT, GL_FALSE, offsetof(PackedTreeVertex, uv));
+  for (GLuint b = 0; b < 4; ++b) {  // the wind bases, attributes 3-6
+    glEnableVertexArrayAttrib(vao, 3 + b);
+    glVertexArrayAttribFormat(vao, 3 + b, 3, GL_HALF_FLOAT, GL_FALSE,
+                              offsetof(PackedTreeVertex, wind) + b * 3 * sizeof(std::uint16_t));
+  }
+  for (GLuint a = 0; a < 7; ++a) glVertexArrayAttribBinding(vao, a, 0);
+}
+
+// Instance attributes 8-10 come from binding 1, one element per instance.
+void setInstanceLayout(GLuint vao) {
+  for (GLuint a = 0; a < 3; ++a) {
+    glEnableVertexArrayAttrib(vao, 8 + a);
+    glVertexArrayAttribFormat(vao, 8 + a, 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
+    glVertexArrayAttribBinding(vao, 8 + a, 1);
+  }
+  glVertexArrayBindingDivisor(vao, 1, 1);
+}
+
+ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
+                               const FrameUniformBuffer& uniforms)
+    : library_(library),
+      impostorSettings_(impostors),
+      meshProgram_({{GL_VERTEX_SHADER, "tree.vert"}, {GL_FRAGMENT_SHADER, "tree.frag"}}),
+      meshShadowProgram_({{GL_VERTEX_SHADER, "tree.vert"}, {GL_FRAGMENT_SHADER, "tree.frag"}},
+                         {"SHADOW_PASS"}),
+      bakeProgram_({{GL_VERTEX_SHADER, "tree.vert"}, {GL_FRAGMENT_SHADER, "tree.frag"}}, {"BAKE"}),
+      impostorProgram_(
+          {{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}}) {
+  // Every mesh into one vertex and one index buffer.
+  std::vector<PackedTreeVertex> vertices;
+  std::vector<std::uint32_t> indices;
+  const auto& types = library.types();
+  std::size_t vertexCount = 0, indexCount = 0;
+  for (const TreeType& type : types)
+    for (const WindMesh& mesh : type.meshes.lods)
+      for (const WindPart& part : mesh.parts)
+        vertexCount += part.vertices.size(), indexCount += part.indices.size();
+  vertices.reserve(vertexCount);
+  indices.reserve(indexCount);
+  ranges_.resize(types.size());
+  triangles_.resize(types.size());
+  for (std::size_t t = 0; t < types.size(); ++t)
+    for (int lod = 0; lod < kLodCount; ++lod) {
+      const WindMesh& mesh = types[t].meshes.lods[lod];
+      triangles_[t][lod] = mesh.triangleCount();
+      for (const WindPart& part : mesh.parts) {
+        ranges_[t][lod].push_back({part.material, static_cast<GLsizei>(part.indices.size()),
+                                   indices.size() * sizeof(std::uint32_t),
+                                   static_cast<GLint>(vertices.size())});
+        for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
+        indices.insert(indices.end(), part.indices.begin(), part.indices.end());
+      }
+    }
+  vertices_ = makeBuffer(std::span<const PackedTreeVertex>(vertices));
+  indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  instances_ = GlName(GlKind::Buffer, id);
+
+  meshArray_ = makeVertexArray();
+  glVertexArrayVertexBuffer(meshArray_.id(), 0, vertices_.id(), 0, sizeof(PackedTreeVertex));
+  glVertexArrayElementBuffer(meshArray_.id(), indices_.id());
+  setTreeVertexLayout(meshArray_.id());
+  setInstanceLayout(meshArray_.id());
+
+  impostorArray_ = makeVertexArray();  // instance attributes only: one sprite per tree
+  setInstanceLayout(impostorArray_.id());
+
+  // Materials of each species, textures generated as the exporters do (in parallel: the
+  // procedural textures take a moment each), then uploaded.
+  const std::size_t speciesCount = library.species().size();
+  std::vector<eco::Material> sources(speciesCount * kMaterialKinds);
+  tbb::parallel_for(std::size_t{0}, sources.size(), [&](std::size_t i) {
+    sources[i] = makeMaterial(static_cast<MaterialKind>(i % kMaterialKinds),
+                              library.species()[i / kMaterialKinds]);
+  });
+  for (std::size_t s = 0; s < speciesCount; ++s) {
+    std::vector<Material>& kinds = materials_.emplace_back(kMaterialKinds);
+    for (int k = 0; k < kMaterialKinds; ++k) {
+      const auto kind = static_cast<MaterialKind>(k);
+      const eco::Material& source = sources[s * kMaterialKinds + k];
+      Material& m = kinds[k];
+      if (source.texture) m.texture = makeTexture(*source.texture, source.repeat);
+      m.baseColor = glm::vec4(linearFromSrgb(glm::vec3(source.baseColor)), source.baseColor.a);
+      m.alphaMask = source.alphaMask;
+      m.doubleSided = source.doubleSided;
+      // Thin leaves pass light; bark and the closed crown proxies do not.
+      m.translucency = kind == MaterialKind::Bark || kind == MaterialKind::Crown ? 0.0f : 0.35f;
+    }
+  }
+  bakeImpostors(uniforms);
+}
+
+void ForestRenderer::bindMaterial(const Program& program, int species, MaterialKind kind) const {
+  const Material& m = materials_[species][static_cast<int>(kind)];
+  program.set("uBaseColor", m.baseColor);
+  program.set("uHasTexture", m.texture ? 1 : 0);
+  program.set("uAlphaMask", m.alphaMask ? 1 : 0);
+  program.set("uTranslucency", m.translucency);
+  program.set("uLeafyNoise", kind == MaterialKind::Crown ? 1 : 0);
+  if (m.texture) glBindTextureUnit(0, m.texture.id());
+  if (m.doubleSided)
+    glDisable(GL_CULL_FACE);
+  else
+    glEnable(GL_CULL_FACE);
+}
+
+void ForestRenderer::drawRanges(const std::vector<DrawRange>& ranges, int species, Bucket bucket,
+                                const Program& program) const {
+  if (bucket.count == 0) return;
+  for (const DrawRange& range : ranges) {
+    bindMaterial(program, species, range.material);
+    glDrawElementsInstancedBaseVertexBaseInstance(GL_TRIANGLES, range.count, GL_UNSIGNED_INT,
+                                                  reinterpret_cast<const void*>(range.firstIndex),
+                                                  bucket.count, range.baseVertex, bucket.first);
+  }
+}
+
+int ForestRenderer::impostorSource(int type) const {
+  const TreeType& t = library_.types()[type];
+  return library_.typeIndex(t.species, 0, t.ageClass);
+}
+
+void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
+  const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
+  const int size = frames * tile;
+  RenderTarget target = RenderTarget::create(size, size, true);
+  const Instance identity{glm::vec4(0.0f), glm::vec4(1.0f, 1.0f, 0.0f, 0.0f), glm::vec4(1.0f)};
+  glNamedBufferData(instances_.id(), sizeof(Instance), &identity, GL_DYNAMIC_DRAW);
+  instanceCapacity_ = 1;
+  glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
+
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  glBindVertexArray(meshArray_.id());
+  bakeProgram_.use();
+  const auto& types = library_.types();
+  atlases_.resize(types.size());
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    const TreeType& type = types[t];
+    if (impostorSource(static_cast<int>(t)) != static_cast<int>(t)) continue;
+    const glm::vec3 centre(type.bounds);
+    const float radius = type.bounds.w;
+    target.bind();
+    // Transparent texels carry the leaf colour so that filtering at the edges stays green.
+    const Species& species = library_.species()[type.species];
+    const glm::vec4 edge(linearFromSrgb(species.appearance.leafColor), 0.0f);
+    const glm::vec4 flatNormal(0.5f, 1.0f, 0.5f, 0.0f);
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &edge.x);
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 1, &flatNormal.x);
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
+    for (int row = 0; row < frames; ++row)
+      for (int column = 0; column < frames; ++column) {
+        const glm::vec3 f = frameDirection({column, row}, frames);
+        glm::vec3 right, up;
+        frameAxes(f, right, up);
+        FrameUniforms u;
+        const glm::mat4 view = glm::lookAt(centre + 2.0f * radius * f, centre, up);
+        u.viewProj = glm::ortho(-radius, radius, -radius, radius, 0.0f, 4.0f * radius) * view;
+        u.camera = glm::vec4(centre + 100.0f * radius * f, 0.0f);
+        uniforms.upload(u);
+        // OpenGL's convention throughout: row 0 at the bottom of the atlas, up is +v.
+        glViewport(column * tile, row * tile, tile, tile);
+        drawRanges(ranges_[t][impostorSettings_.bakeLod], type.species, {0, 1}, bakeProgram_);
+      }
+    Atlas& atlas = atlases_[t];
+    // Copy the two attachments into mipmapped textures of their own.
+    const int levels = 1 + static_cast<int>(std::log2(tile));  // mip down to 1 texel per tile
+    for (int attachment = 0; attachment < 2; ++attachment) {
+      GlName texture =
+          makeTextureStorage(attachment == 0 ? GL_SRGB8_ALPHA8 : GL_RGBA8, size, size, levels);
+      glCopyImageSubData(attachment == 0 ? target.color.id() : target.extraColor.id(),
+                         GL_TEXTURE_2D, 0, 0, 0, 0, texture.id(), GL_TEXTURE_2D, 0, 0, 0, 0, size,
+                         size, 1);
+      glGenerateTextureMipmap(texture.id());
+      (attachment == 0 ? atlas.albedo : atlas.normal) = std::move(texture);
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, int width,
+                                    int height, const LodSettings& lod, const ShadowBox& shadows) {
+  ForestStats stats;
+  const auto& types = library_.types();
+  const Frustum frustum =
+      Frustum::fromMatrix(camera.projection(static_cast<float>(width) / height) * camera.view());
+  const float pixelsPerRadian = camera.pixelsPerRadian(height);
+  pixelsPerUnit_ = pixelsPerRadian;
+  const std::size_t n = forest.size();
+  choices_.assign(n, LodChoice{});
+  casts_.assign(n, 0);
+  std::vector<std::uint8_t> outside(n, 0);
+  distances_.resize(n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const TreeType& type = types[forest.type[i]];
+      const float sx = forest.scaleXZ[i], sy = forest.scaleY[i];
+      const float c = std::cos(forest.yaw[i]), s = std::sin(forest.yaw[i]);
+      const glm::vec3 local(type.bounds.x * sx, type.bounds.y * sy, type.bounds.z * sx);
+      const glm::vec3 centre = forest.position[i] + glm::vec3(c * local.x - s * local.z, local.y,
+                                                              s * local.x + c * local.z);
+      const float radius = type.bounds.w * std::max(sx, sy);
+      if (!frustum.intersectsSphere(centre, radius)) {
+        outside[i] = 1;
+        continue;
+      }
+      const float distance = glm::length(centre - camera.position);
+      distances_[i] = distance;
+      choices_[i] =
+          chooseLevel(projectedPixels(type.height_m * sy, distance, pixelsPerRadian), lod);
+      const glm::vec3 d = glm::abs(centre - shadows.centre);
+      casts_[i] = choices_[i].level >= 0 && choices_[i].level < kLevelImpostor &&
+                  shadows.halfSize_m > 0.0f && std::max(d.x, d.z) < shadows.halfSize_m + radius;
+    }
+  });
+
+  // Buckets in a fixed order (type, level), trees front to back within each (ties by
+  // index): near trees fill the depth buffer first, so the depth test rejects most hidden
+  // fragments of the ones behind before they are shaded — a third of the frame at 300k
+  // trees. A total order, so the frame does not depend on the thread count.
+  buckets_.assign(types.size() * kLevelCount, Bucket{});
+  shadowBuckets_.assign(types.size(), Bucket{});
+  // Every draw of tree i: its type (and the type it blends into) split its presence range,
+  // and a level cross-fade splits each type's range again.
+  auto forEachDraw = [&](std::size_t i, auto&& draw) {
+    const LodChoice& c = choices_[i];
+    const float presence = forest.presence[i];
+    const float split = presence * (forest.blendType[i] >= 0 ? 1.0f - forest.blendWeight[i] : 1.0f);
+    // `scale` turns the tree's scales, meant for its own type's mesh, to another type's.
+    auto levels = [&](int type, float scale, float lo, float hi) {
+      if (hi <= lo) return;
+      if (c.fadeTo < 0) return draw(type, c.level, scale, lo, hi);
+      const float cut = lo + c.fade * (hi - lo);  // the coarser level takes the lower share
+      if (hi > cut) draw(type, c.level, scale, cut, hi);
+      if (cut > lo) draw(type, c.fadeTo, scale, lo, cut);
+    };
+    levels(forest.type[i], 1.0f, 0.0f, split);
+    if (forest.blendType[i] >= 0)
+      levels(forest.blendType[i],
+             types[forest.type[i]].height_m / types[forest.blendType[i]].height_m, split, presence);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (outside[i])
+      ++stats.culled;
+    else if (choices_[i].level < 0)
+      ++stats.tooSmall;
+    if (choices_[i].level < 0) continue;
+    forEachDraw(i, [&](int type, int level, float, float, float) {
+      ++buckets_[type * kLevelCount + level].count;
+    });
+    if (casts_[i]) ++shadowBuckets_[forest.type[i]].count;
+  }
+  GLuint next = 0;
+  for (Bucket& b : buckets_) b.first = next, next += b.count, b.count = 0;
+  for (Bucket& b : shadowBuckets_) b.first = next, next += b.count, b.count = 0;
+  staging_.resize(next);
+  order_.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (choices_[i].level >= 0) order_.push_back(static_cast<std::uint32_t>(i));
+  tbb::parallel_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return distances_[a] < distances_[b] || (distances_[a] == distances_[b] && a < b);
+  });
+  for (const std::uint32_t i : order_) {
+    auto put = [&](Bucket& bucket, float scale, float lo, float hi) {
+      staging_[bucket.first + bucket.count++] = {
+          glm::vec4(forest.position[i], forest.yaw[i]),
+          glm::vec4(scale * forest.scaleXZ[i], scale * forest.scaleY[i], lo, forest.phase[i]),
+          glm::vec4(forest.tint[i], hi)};
+    };
+    forEachDraw(i, [&](int type, int level, float scale, float lo, float hi) {
+      put(buckets_[type * kLevelCount + level], scale, lo, hi);
+    });
+    if (casts_[i]) put(shadowBuckets_[forest.type[i]], 1.0f, 0.0f, forest.presence[i]);
+  }
+  if (staging_.size() > instanceCapacity_) {
+    instanceCapacity_ = std::max<std::size_t>(staging_.size() + staging_.size() / 2, 1024);
+    glNamedBufferData(instances_.id(), instanceCapacity_ * sizeof(Instance), nullptr,
+                      GL_STREAM_DRAW);
+  }
+  glNamedBufferSubData(instances_.id(), 0, staging_.size() * sizeof(Instance), staging_.data());
+
+  for (std::size_t t = 0; t < types.size(); ++t)
+    for (int level = 0; level < kLevelCount; ++level) {
+      const std::size_t count = buckets_[t * kLevelCount + level].count;
+      stats.instances[level] += count;
+      stats.triangles += count * (level < kLevelImpostor ? triangles_[t][level] : 2);
+      stats.lod0Triangles += count * triangles_[t][0];
+    }
+  for (std::size_t t = 0; t < types.size(); ++t) stats.shadowCasters += shadowBuckets_[t].count;
+  return stats;
+}
+
+void ForestRenderer::draw() const {
+  const auto& types = library_.types();
+  glBindVertexArray(meshArray_.id());
+  glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
+  meshProgram_.use();
+  for (std::size_t t = 0; t < types.size(); ++t)
+    for (int level = 0; level < kLevelImpostor; ++level)
+      drawRanges(ranges_[t][level], types[t].species, buckets_[t * kLevelCount + level],
+                 meshProgram_);
+
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glBindVertexArray(impostorArray_.id());
+  glVertexArrayVertexBuffer(impostorArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
+  impostorProgram_.use();
+  impostorProgram_.set("uFrames", impostorSettings_.frames);
+  impostorProgram_.set("uPixelsPerUnit", pixelsPerUnit_);
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    const Bucket& bucket = buckets_[t * kLevelCount + kLevelImpostor];
+    if (bucket.count == 0) continue;
+    const int source = impostorSource(static_cast<int>(t));
+    impostorProgram_.set("uBounds", types[source].bounds);
+    glBindTextureUnit(1, atlases_[source].albedo.id());
+    glBindTextureUnit(2, atlases_[source].normal.id());
+    glDrawArraysInstancedBaseInstance(GL_POINTS, 0, 1, bucket.count, bucket.first);
+  }
+}
+
+void ForestRenderer::drawShadows() const {
+  const auto& types = library_.types();
+  glBindVertexArray(meshArray_.id());
+  glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
+  meshShadowProgram_.use();
+  // Crown proxies cast the shadows: the shadow map is too coarse for twigs to matter.
+  for (std::size_t t = 0; t < types.size(); ++t)
+    drawRanges(ranges_[t][2], types[t].species, shadowBuckets_[t], meshShadowProgram_);
+}
+
+}  // namespace eco

@@ -1,0 +1,119 @@
+// Draws a Forest with a TreeLibrary on the GPU: every mesh of the library in one vertex and
+// one index buffer, one impostor atlas per type, and per frame one instance buffer filled
+// from the forest's arrays after culling and LOD choice, drawn with one instanced call per
+// (type, level, material part) — never a draw call per tree.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "render/scene/camera.hpp"
+#include "render/scene/culling.hpp"
+#include "render/scene/forest.hpp"
+#include "render/gl/frame_uniforms.hpp"
+#include "render/gl/gl_objects.hpp"
+#include "render/scene/impostor.hpp"
+#include "render/scene/render_options.hpp"
+#include "render/gl/shader.hpp"
+#include "render/scene/tree_library.hpp"
+
+namespace eco {
+
+// Where trees cast shadows: within `halfSize_m` of `centre`, and only trees drawn as meshes.
+struct ShadowBox {
+  glm::vec3 centre{0.0f};
+  float halfSize_m = 0.0f;  // 0: no shadow pass
+};
+
+// One tree instance as the shaders read it (attributes 8-10).
+struct InstanceAttributes {
+  glm::vec4 positionYaw;  // stem base (world), yaw (radians)
+  glm::vec4 scale;        // horizontal, vertical, lowest dither threshold kept, wind phase
+  glm::vec4 tint;         // rgb; a: the dither thresholds kept end here (ditherKeeps)
+};
+// A TreeVertex as the GPU holds it, 48 bytes instead of 80: the normal in 10-bit signed
+// components, the four wind bases in half floats (millimetres at the metre scale of the
+// wind's reach).
+struct PackedTreeVertex {
+  glm::vec3 position;
+  std::uint32_t normal;  // GL_INT_2_10_10_10_REV
+  glm::vec2 uv;
+  std::uint16_t wind[12];  // swaySin, swayCos, bendEast, bendSouth as half floats
+};
+static_assert(sizeof(PackedTreeVertex) == 48);
+PackedTreeVertex packVertex(const TreeVertex& vertex);
+
+// Vertex layouts of the tree shaders: PackedTreeVertex at binding 0, InstanceAttributes at
+// binding 1 (one per instance).
+void setTreeVertexLayout(GLuint vertexArray);
+void setInstanceLayout(GLuint vertexArray);
+
+class ForestRenderer {
+ public:
+  ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
+                 const FrameUniformBuffer& uniforms);
+
+  // Culls, picks levels and fills the instance buffer for this camera.
+  ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
+                      const LodSettings& lod, const ShadowBox& shadows);
+  void draw() const;         // the colour pass of what prepare() chose
+  void drawShadows() const;  // the shadow casters into the bound depth target
+
+  // The type whose impostor draws `type`: the variants of a species and age class share
+  // the first one's. Below the impostor switch (100 px) the variants differ by a few pixels
+  // while each tree's own yaw already picks a different frame; sharing bakes a third.
+  int impostorSource(int type) const;
+
+ private:
+  struct DrawRange {
+    MaterialKind material;
+    GLsizei count;
+    std::uintptr_t firstIndex;
+    GLint baseVertex;
+  };
+  struct Material {
+    GlName texture;
+    glm::vec4 baseColor{1.0f};  // linear
+    bool alphaMask = false;
+    bool doubleSided = false;
+    float translucency = 0.0f;
+  };
+  struct Atlas {
+    GlName albedo, normal;
+  };
+  struct Bucket {  // instances of one type at one level, contiguous in the instance buffer
+    GLuint first = 0;
+    GLsizei count = 0;
+  };
+  using Instance = InstanceAttributes;
+
+  void drawRanges(const std::vector<DrawRange>& ranges, int species, Bucket bucket,
+                  const Program& program) const;
+  void bakeImpostors(const FrameUniformBuffer& uniforms);
+  void bindMaterial(const Program& program, int species, MaterialKind kind) const;
+
+  const TreeLibrary& library_;
+  ImpostorSettings impostorSettings_;
+  Program meshProgram_, meshShadowProgram_, bakeProgram_, impostorProgram_;
+  GlName vertices_, indices_, meshArray_, impostorArray_, instances_;
+  std::size_t instanceCapacity_ = 0;
+  float pixelsPerUnit_ = 1.0f;  // of the prepared frame: sprite sizes
+  std::vector<std::array<std::vector<DrawRange>, kLodCount>> ranges_;  // [type][lod]
+  std::vector<std::array<std::size_t, kLodCount>> triangles_;
+  std::vector<std::vector<Material>> materials_;  // [species][MaterialKind]
+  std::vector<Atlas> atlases_;                    // [type]; baked for impostor sources only
+  std::vector<Bucket> buckets_;                   // [type * kLevelCount + level]
+  std::vector<Bucket> shadowBuckets_;             // [type]
+  // Scratch of prepare(), kept to avoid reallocating every frame.
+  std::vector<LodChoice> choices_;
+  std::vector<std::uint8_t> casts_;
+  std::vector<float> distances_;
+  std::vector<std::uint32_t> order_;
+  std::vector<Instance> staging_;
+};
+
+}  // namespace eco

@@ -1,0 +1,119 @@
+#include "render/gl/gl_objects.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace eco {
+
+void GlName::reset() {
+  if (!id_) return;
+  switch (kind_) {
+    case GlKind::Buffer:
+      glDeleteBuffers(1, &id_);
+      break;
+    case GlKind::VertexArray:
+      glDeleteVertexArrays(1, &id_);
+      break;
+    case GlKind::Texture:
+      glDeleteTextures(1, &id_);
+      break;
+    case GlKind::Framebuffer:
+      glDeleteFramebuffers(1, &id_);
+      break;
+    case GlKind::Program:
+      glDeleteProgram(id_);
+      break;
+    case GlKind::Query:
+      glDeleteQueries(1, &id_);
+      break;
+  }
+  id_ = 0;
+}
+
+GlName makeBuffer(const void* data, std::size_t bytes, GLbitfield flags) {
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  // Zero-sized buffers are invalid for glNamedBufferStorage; keep one byte.
+  glNamedBufferStorage(id, bytes ? static_cast<GLsizeiptr>(bytes) : 1, bytes ? data : nullptr,
+                       flags);
+  return {GlKind::Buffer, id};
+}
+
+GlName makeVertexArray() {
+  GLuint id = 0;
+  glCreateVertexArrays(1, &id);
+  return {GlKind::VertexArray, id};
+}
+
+GlName makeTextureStorage(GLenum format, int width, int height, int levels, bool repeat) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, levels, format, width, height);
+  const GLint wrap = repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, wrap);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, wrap);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  return {GlKind::Texture, id};
+}
+
+GlName makeTexture(const Image& image, bool repeat) {
+  int levels = 1;
+  for (int size = std::max(image.width, image.height); size > 1; size /= 2) ++levels;
+  GlName texture = makeTextureStorage(GL_SRGB8_ALPHA8, image.width, image.height, levels, repeat);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                      image.rgba.data());
+  glGenerateTextureMipmap(texture.id());
+  return texture;
+}
+
+RenderTarget RenderTarget::create(int width, int height, bool extraColor) {
+  RenderTarget t;
+  t.width = width;
+  t.height = height;
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  t.framebuffer = GlName(GlKind::Framebuffer, id);
+  auto attach = [&](GLenum format, GLenum attachment) {
+    GlName texture = makeTextureStorage(format, width, height);
+    glNamedFramebufferTexture(id, attachment, texture.id(), 0);
+    return texture;
+  };
+  t.color = attach(GL_SRGB8_ALPHA8, GL_COLOR_ATTACHMENT0);
+  if (extraColor) {
+    t.extraColor = attach(GL_RGBA8, GL_COLOR_ATTACHMENT1);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(id, 2, buffers);
+  }
+  t.depth = attach(GL_DEPTH_COMPONENT32F, GL_DEPTH_ATTACHMENT);
+  if (glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error(fmt::format("OpenGL: incomplete {}x{} framebuffer", width, height));
+  return t;
+}
+
+void RenderTarget::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  glViewport(0, 0, width, height);
+}
+
+Image readPixels(int width, int height, GLenum attachment) {
+  Image image(width, height);
+  glReadBuffer(attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  // OpenGL's row 0 is the bottom one.
+  const std::size_t row = static_cast<std::size_t>(width) * 4;
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(image.rgba.begin() + y * row, image.rgba.begin() + (y + 1) * row,
+                     image.rgba.begin() + (height - 1 - y) * row);
+  return image;
+}
+
+void checkGl(const char* where) {
+  GLenum error = glGetError();
+  if (error != GL_NO_ERROR)
+    throw std::runtime_error(fmt::format("OpenGL error 0x{:x} in {}", error, where));
+}
+
+}  // namespace eco

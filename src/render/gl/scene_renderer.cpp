@@ -1,0 +1,140 @@
+#include "render/gl/scene_renderer.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/frames.hpp"
+
+namespace eco {
+namespace {
+
+// Clear air: a meteorological visibility of 100 km (Koschmieder: 3.9 / density).
+constexpr float kClearAirFogDensity = 3.9f / 100000.0f;
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
+                             const TreeLibrary* library, const ImpostorSettings& impostors)
+    : terrainData_(terrain),
+      latitude_deg_(latitude_deg),
+      terrain_(terrain),
+      sky_({{GL_VERTEX_SHADER, "sky.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}),
+      skyArray_(makeVertexArray()) {
+  if (library) forest_ = std::make_unique<ForestRenderer>(*library, impostors, uniforms_);
+}
+
+void SceneRenderer::renderShadowMap(const RenderOptions& options, const FrameUniforms& u,
+                                    bool forestCasts) {
+  if (shadowSize_ != options.shadowMapSize) {
+    shadowSize_ = options.shadowMapSize;
+    shadowDepth_ = makeTextureStorage(GL_DEPTH_COMPONENT32F, shadowSize_, shadowSize_);
+    glTextureParameteri(shadowDepth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(shadowDepth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    GLuint framebuffer = 0;
+    glCreateFramebuffers(1, &framebuffer);
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, shadowDepth_.id(), 0);
+    glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
+    shadowFramebuffer_ = GlName(GlKind::Framebuffer, framebuffer);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_.id());
+  glViewport(0, 0, shadowSize_, shadowSize_);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  uniforms_.upload(u);
+  terrain_.draw(Frustum::fromMatrix(u.lightViewProj), true);
+  if (forestCasts) forest_->drawShadows();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
+                                 const RenderOptions& options, const RenderTarget& target) {
+  const auto start = std::chrono::steady_clock::now();
+  FrameStats stats;
+  const Lighting light = lightingFor(latitude_deg_, options.sun);
+  const float aspect = static_cast<float>(target.width) / static_cast<float>(target.height);
+
+  // The shadowed square lies ahead of the camera on the ground plane.
+  glm::vec3 ahead = camera.forward();
+  ahead.y = 0.0f;
+  ahead = glm::length(ahead) > 1e-4f ? glm::normalize(ahead) : glm::vec3(0.0f, 0.0f, -1.0f);
+  ShadowBox box;
+  const bool shadows = options.shadows && light.toSun.y > 0.02f;
+  if (shadows) {
+    box.centre = camera.position + ahead * (0.7f * options.shadowRange_m);
+    box.halfSize_m = options.shadowRange_m;
+  }
+
+  FrameUniforms u;
+  const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
+  u.viewProj = viewProj;
+  u.inverseViewProj = glm::inverse(viewProj);
+  if (shadows) {
+    const float depth = 4000.0f;
+    const glm::mat4 lightView =
+        glm::lookAt(box.centre + light.toSun * (0.5f * depth), box.centre,
+                    std::abs(light.toSun.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1));
+    const float r = box.halfSize_m * 1.5f;  // the square seen from a slanted sun
+    u.lightViewProj = glm::ortho(-r, r, -r, r, 0.0f, depth) * lightView;
+  }
+  u.camera = glm::vec4(camera.position, static_cast<float>(options.wind.time));
+  u.toSun = glm::vec4(light.toSun, shadows ? 1.0f : 0.0f);
+  u.sunColor = glm::vec4(light.sunColor, options.fogDensity.value_or(kClearAirFogDensity));
+  u.skyZenith = glm::vec4(light.skyZenith, 0.0f);
+  u.skyHorizon = glm::vec4(light.skyHorizon, 0.0f);
+  u.ambient = glm::vec4(light.ambient, 0.0f);
+  const glm::dvec3 toward = worldDownwindOf(options.wind.fromBearing_deg);
+  const double directed = options.wind.directed_wg / kBendBasis_wg;
+  u.wind =
+      glm::vec4(static_cast<float>(toward.x * directed), static_cast<float>(toward.z * directed),
+                static_cast<float>(options.wind.sway_ws / kSwayBasis_ws),
+                static_cast<float>(options.wind.gust));
+
+  if (forest_ && forest)
+    stats.forest = forest_->prepare(*forest, camera, target.width, target.height, options.lod, box);
+  stats.prepareMs = millisecondsSince(start);
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  if (shadows) renderShadowMap(options, u, forest_ && forest && stats.forest.shadowCasters);
+  glBindTextureUnit(4, shadowDepth_.id());
+
+  target.bind();
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  uniforms_.upload(u);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  sky_.use();
+  glBindVertexArray(skyArray_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_DEPTH_TEST);
+  stats.terrainTriangles = terrain_.draw(Frustum::fromMatrix(viewProj), false);
+  if (forest_ && forest) forest_->draw();
+  glFinish();
+  checkGl("SceneRenderer::render");
+  stats.frameMs = millisecondsSince(start);
+  return stats;
+}
+
+DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size) {
+  auto target = std::make_shared<RenderTarget>(RenderTarget::create(size.width, size.height));
+  return [&renderer, target](const Forest& forest, const Camera& camera,
+                             const RenderOptions& options) {
+    renderer.render(&forest, camera, options, *target);
+    return readPixels(target->width, target->height);
+  };
+}
+
+}  // namespace eco

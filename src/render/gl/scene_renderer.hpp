@@ -1,0 +1,56 @@
+// One frame of a scene: sky, terrain and forest, lit by the sun with a shadow map for the
+// near field, fogged with distance, into a render target. `ecoforest render`, `view`, the
+// tests and the benchmark all draw through this.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "render/scene/camera.hpp"
+#include "render/scene/culling.hpp"
+#include "render/scene/forest.hpp"
+#include "render/gl/forest_renderer.hpp"
+#include "render/gl/frame_uniforms.hpp"
+#include "render/gl/gl_objects.hpp"
+#include "render/scene/impostor.hpp"
+#include "render/scene/render_options.hpp"
+#include "render/gl/shader.hpp"
+#include "render/scene/sun.hpp"
+#include "render/gl/terrain_renderer.hpp"
+#include "render/scene/timelapse.hpp"
+#include "render/scene/tree_library.hpp"
+
+namespace eco {
+
+class SceneRenderer {
+ public:
+  // `library` may be null (terrain only); it and the terrain must outlive the renderer.
+  SceneRenderer(const Terrain& terrain, double latitude_deg, const TreeLibrary* library,
+                const ImpostorSettings& impostors = {});
+
+  FrameStats render(const Forest* forest, const Camera& camera, const RenderOptions& options,
+                    const RenderTarget& target);
+
+  TerrainRenderer& terrain() { return terrain_; }
+  const Terrain& terrainData() const { return terrainData_; }
+  ForestRenderer* forest() { return forest_.get(); }
+
+ private:
+  void renderShadowMap(const RenderOptions& options, const FrameUniforms& u, bool forestCasts);
+
+  const Terrain& terrainData_;  // the caller's, as for the library
+  double latitude_deg_;
+  FrameUniformBuffer uniforms_;
+  TerrainRenderer terrain_;
+  std::unique_ptr<ForestRenderer> forest_;
+  Program sky_;
+  GlName skyArray_;
+  GlName shadowFramebuffer_, shadowDepth_;
+  int shadowSize_ = 0;
+};
+
+// The renderer as a time-lapse's back end: each call draws into one target of `size` and
+// reads the pixels back.
+DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size);
+
+}  // namespace eco

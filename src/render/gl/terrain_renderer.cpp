@@ -1,0 +1,118 @@
+#include "render/gl/terrain_renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/scene/camera.hpp"
+#include "sim/conditions/condition_maps.hpp"
+#include "sim/terrain_mesh.hpp"
+
+namespace eco {
+namespace {
+
+struct TerrainVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 mapUv;
+};
+
+}  // namespace
+
+TerrainRenderer::TerrainRenderer(const Terrain& terrain)
+    : grid_(terrain.grid),
+      program_({{GL_VERTEX_SHADER, "terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain.frag"}}),
+      shadowProgram_({{GL_VERTEX_SHADER, "terrain.vert"}, {GL_FRAGMENT_SHADER, "terrain.frag"}},
+                     {"SHADOW_PASS"}) {
+  const Grid& g = terrain.grid;
+  const FieldStats range = statsOf(terrain.height_m);
+  lowest_m_ = static_cast<float>(range.min);
+  highest_m_ = static_cast<float>(range.max);
+  std::vector<TerrainVertex> vertices(g.cellCount());
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      TerrainVertex& v = vertices[g.index(x, y)];
+      v.position = worldFromMap(cellPosition(terrain, x, y));
+      v.normal = worldDirectionFromMap(terrainNormal(terrain, x, y));
+      v.mapUv = {(x + 0.5f) / g.width, (y + 0.5f) / g.height};
+    }
+  // Triangles in square chunks of kChunkCells, each with a bounding sphere for culling.
+  std::vector<std::uint32_t> indices;
+  indices.reserve(static_cast<std::size_t>(g.width - 1) * (g.height - 1) * 6);
+  for (int cy = 0; cy + 1 < g.height; cy += kChunkCells)
+    for (int cx = 0; cx + 1 < g.width; cx += kChunkCells) {
+      Chunk chunk;
+      chunk.firstIndex = indices.size();
+      glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+      for (int y = cy; y + 1 < g.height && y < cy + kChunkCells; ++y)
+        for (int x = cx; x + 1 < g.width && x < cx + kChunkCells; ++x) {
+          const std::array<std::uint32_t, 6> square = squareTriangles(g, x, y);
+          indices.insert(indices.end(), square.begin(), square.end());
+          for (std::uint32_t corner : square) {
+            lo = glm::min(lo, vertices[corner].position);
+            hi = glm::max(hi, vertices[corner].position);
+          }
+        }
+      chunk.indexCount = static_cast<GLsizei>(indices.size() - chunk.firstIndex);
+      chunk.centre = 0.5f * (lo + hi);
+      chunk.radius = 0.5f * glm::length(hi - lo);
+      chunks_.push_back(chunk);
+    }
+  indexCount_ = static_cast<GLsizei>(indices.size());
+  vertices_ = makeBuffer(std::span<const TerrainVertex>(vertices));
+  indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
+  vertexArray_ = makeVertexArray();
+  const GLuint vao = vertexArray_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(TerrainVertex));
+  glVertexArrayElementBuffer(vao, indices_.id());
+  const GLuint offsets[] = {offsetof(TerrainVertex, position), offsetof(TerrainVertex, normal),
+                            offsetof(TerrainVertex, mapUv)};
+  const GLint sizes[] = {3, 3, 2};
+  for (GLuint a = 0; a < 3; ++a) {
+    glEnableVertexArrayAttrib(vao, a);
+    glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+    glVertexArrayAttribBinding(vao, a, 0);
+  }
+  program_.set("uAltitudeRange", glm::vec2(lowest_m_, highest_m_));
+}
+
+void TerrainRenderer::setOverlay(const std::string& name, const Field& values) {
+  const FieldStats range = statsOf(values);
+  Image image(grid_.width, grid_.height);
+  for (int y = 0; y < grid_.height; ++y)
+    for (int x = 0; x < grid_.width; ++x) {
+      const double t = range.max > range.min
+                           ? (values[grid_.index(x, y)] - range.min) / (range.max - range.min)
+                           : 0.5;
+      image.set(x, y, glm::vec4(rampColor(name, t), 1.0f));
+    }
+  overlay_ = makeTexture(image, false);
+}
+
+std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass) const {
+  counts_.clear();
+  offsets_.clear();
+  std::size_t triangles = 0;
+  for (const Chunk& chunk : chunks_)
+    if (frustum.intersectsSphere(chunk.centre, chunk.radius)) {
+      counts_.push_back(chunk.indexCount);
+      offsets_.push_back(reinterpret_cast<const void*>(chunk.firstIndex * sizeof(std::uint32_t)));
+      triangles += chunk.indexCount / 3;
+    }
+  if (counts_.empty()) return 0;
+  const Program& program = shadowPass ? shadowProgram_ : program_;
+  program.use();
+  program.set("uHasOverlay", hasOverlay() ? 1 : 0);
+  if (hasOverlay()) glBindTextureUnit(3, overlay_.id());
+  glBindVertexArray(vertexArray_.id());
+  glMultiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(),
+                      static_cast<GLsizei>(counts_.size()));
+  return triangles;
+}
+
+}  // namespace eco

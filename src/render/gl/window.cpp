@@ -1,0 +1,133 @@
+#include "render/gl/window.hpp"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include "core/error.hpp"
+#include "render/gl/gl_context.hpp"
+
+namespace eco {
+namespace {
+
+std::optional<ViewKey> viewKeyOf(int key) {
+  switch (key) {
+    case GLFW_KEY_W:
+      return ViewKey::Forward;
+    case GLFW_KEY_S:
+      return ViewKey::Back;
+    case GLFW_KEY_A:
+      return ViewKey::Left;
+    case GLFW_KEY_D:
+      return ViewKey::Right;
+    case GLFW_KEY_Q:
+      return ViewKey::Down;
+    case GLFW_KEY_E:
+      return ViewKey::Up;
+    case GLFW_KEY_LEFT_SHIFT:
+    case GLFW_KEY_RIGHT_SHIFT:
+      return ViewKey::Fast;
+    case GLFW_KEY_G:
+      return ViewKey::Walk;
+    case GLFW_KEY_P:
+      return ViewKey::Screenshot;
+    case GLFW_KEY_SPACE:
+      return ViewKey::Play;
+    default:
+      return std::nullopt;
+  }
+}
+
+}  // namespace
+
+Window::Window(const std::string& title, FrameSize size) {
+  if (!glfwInit())
+    throw EnvironmentError(
+        "`view` needs a display and none could be opened; `ecoforest render` draws stills "
+        "without one");
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, kGlMajor);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kGlMinor);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_TRUE);
+  window_ = glfwCreateWindow(size.width, size.height, title.c_str(), nullptr, nullptr);
+  if (!window_) {
+    glfwTerminate();
+    throw EnvironmentError("`view` could not open an OpenGL 4.5 window on this display");
+  }
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(1);
+  glfwSetWindowUserPointer(window_, this);
+  // Installed before ImGui's, which chains to it.
+  glfwSetKeyCallback(window_, onKey);
+  glfwGetCursorPos(window_, &lastX_, &lastY_);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+Window::~Window() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+void Window::onKey(GLFWwindow* window, int key, int, int action, int) {
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+  const std::optional<ViewKey> viewKey = viewKeyOf(key);
+  if (!self || !viewKey || action == GLFW_REPEAT) return;
+  self->input_.key(*viewKey, action == GLFW_PRESS);
+}
+
+bool Window::shouldClose() const {
+  return glfwWindowShouldClose(window_);
+}
+
+double Window::seconds() const {
+  return glfwGetTime();
+}
+
+const ViewInput& Window::beginFrame() {
+  input_.nextFrame();
+  glfwPollEvents();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const ImGuiIO& io = ImGui::GetIO();
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window_, &x, &y);
+  if (!io.WantCaptureMouse && glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS)
+    input_.lookDelta = {x - lastX_, y - lastY_};
+  lastX_ = x, lastY_ = y;
+  input_.keyboardTaken = io.WantCaptureKeyboard;
+  return input_;
+}
+
+FrameSize Window::framebufferSize() const {
+  FrameSize size{0, 0};
+  glfwGetFramebufferSize(window_, &size.width, &size.height);
+  return size;
+}
+
+void Window::present(const RenderTarget& target) {
+  if (target.width > 0) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, target.width, target.height, 0, 0, target.width, target.height,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDisable(GL_FRAMEBUFFER_SRGB);  // ImGui's colours are already sRGB
+  }
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(window_);
+}
+
+}  // namespace eco

@@ -1,0 +1,118 @@
+#include "render/scene/forest.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/common.hpp>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "render/scene/camera.hpp"
+
+namespace eco {
+
+void Forest::reserve(std::size_t n) {
+  type.reserve(n);
+  position.reserve(n);
+  yaw.reserve(n);
+  scaleXZ.reserve(n);
+  scaleY.reserve(n);
+  tint.reserve(n);
+  phase.reserve(n);
+  presence.reserve(n);
+  blendType.reserve(n);
+  blendWeight.reserve(n);
+}
+
+void Forest::append(const Forest& from, std::size_t i) {
+  type.push_back(from.type[i]);
+  position.push_back(from.position[i]);
+  yaw.push_back(from.yaw[i]);
+  scaleXZ.push_back(from.scaleXZ[i]);
+  scaleY.push_back(from.scaleY[i]);
+  tint.push_back(from.tint[i]);
+  phase.push_back(from.phase[i]);
+  presence.push_back(from.presence[i]);
+  blendType.push_back(from.blendType[i]);
+  blendWeight.push_back(from.blendWeight[i]);
+}
+
+void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
+                 float crownRadius_m, float vigor, std::uint64_t individual) {
+  const TreeType& t = library.types()[typeIndex];
+  Rng rng(streamKey(individual, purpose("render.instance")));
+  const float vertical = std::max(height_m, 0.01f) / t.height_m;
+  // The crown may be narrower or wider than the type's (shade, open growth), within limits
+  // that keep the mesh believable.
+  const float widthRatio =
+      crownRadius_m > 0.0f ? std::clamp(crownRadius_m / (t.crownRadius_m * vertical), 0.7f, 1.4f)
+                           : 1.0f;
+  type.push_back(typeIndex);
+  position.push_back(base);
+  yaw.push_back(static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)));
+  scaleY.push_back(vertical);
+  scaleXZ.push_back(vertical * widthRatio);
+  // Weak trees pale toward yellow; each tree varies a little in brightness.
+  const float brightness = static_cast<float>(rng.uniform(0.9, 1.1));
+  const glm::vec3 stressed(1.15f, 1.05f, 0.6f);
+  tint.push_back(brightness * glm::mix(stressed, glm::vec3(1.0f), std::clamp(vigor, 0.0f, 1.0f)));
+  phase.push_back(static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)));
+  presence.push_back(1.0f);
+  blendType.push_back(-1);
+  blendWeight.push_back(0.0f);
+}
+
+std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
+                                  const std::string& where) {
+  std::vector<int> librarySpecies;
+  for (const std::string& name : snapshot.speciesNames) {
+    const auto& all = library.species();
+    auto found =
+        std::find_if(all.begin(), all.end(), [&](const Species& s) { return s.name == name; });
+    if (found == all.end())
+      throw InputError({where, 0, "species"},
+                       "the trees name species '" + name + "', which the scenario does not have");
+    librarySpecies.push_back(static_cast<int>(found - all.begin()));
+  }
+  return librarySpecies;
+}
+
+Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
+                          const std::string& where) {
+  const std::vector<int> librarySpecies = librarySpeciesOf(snapshot, library, where);
+  Forest forest;
+  forest.reserve(snapshot.trees.size());
+  for (const TreeRow& tree : snapshot.trees) {
+    const int species = librarySpecies[tree.species];
+    const int type = library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species));
+    forest.add(library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), tree.height_m,
+               tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
+  }
+  return forest;
+}
+
+Forest demoForest(const Terrain& terrain, const TreeLibrary& library, std::size_t count,
+                  std::uint64_t seed) {
+  Forest forest;
+  forest.reserve(count);
+  const Grid& g = terrain.grid;
+  const int speciesCount = static_cast<int>(library.species().size());
+  if (speciesCount == 0) return forest;
+  for (std::size_t i = 0; i < count; ++i) {
+    Rng rng(streamKey(seed, i, purpose("render.demo")));
+    const double east = rng.uniform(0.0, g.eastOf(g.width - 1));
+    const double north = rng.uniform(0.0, g.northOf(0));
+    const int species = static_cast<int>(rng.uniform() * speciesCount);
+    const float maxHeight = library.maxHeight_m(species);
+    // Mostly grown trees with some regeneration: the square root leans toward tall.
+    const float height = maxHeight * static_cast<float>(0.05 + 0.95 * std::sqrt(rng.uniform()));
+    const std::uint64_t individual = rng.nextBits();
+    const int type = library.typeFor(species, individual, height, maxHeight);
+    forest.add(library, type, worldFromMap(east, north, terrain.altitudeAt(east, north)), height,
+               0.0f, static_cast<float>(rng.uniform(0.5, 1.0)), individual);
+  }
+  return forest;
+}
+
+}  // namespace eco

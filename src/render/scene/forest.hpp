@@ -1,0 +1,56 @@
+// The trees of one frame as parallel arrays: which library type draws each, where it stands
+// and how it is turned, scaled and tinted. Built from a run's snapshot or, for a scenario
+// without a run, from a demo planting.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/scene/tree_library.hpp"
+#include "sim/run/run_folder.hpp"
+#include "sim/terrain.hpp"
+
+namespace eco {
+
+struct Forest {
+  std::vector<std::int32_t> type;
+  std::vector<glm::vec3> position;  // world position of the stem base
+  std::vector<float> yaw;           // radians
+  std::vector<float> scaleXZ;       // horizontal scale of the type's mesh
+  std::vector<float> scaleY;        // vertical scale
+  std::vector<glm::vec3> tint;      // multiplies the albedo
+  std::vector<float> phase;         // wind time offset, so that trees sway out of step
+  // Growth between snapshots (time-lapse): the share of the tree's pixels drawn (a seedling
+  // appearing, a dead tree fading), and a second type it is cross-fading into (the next age
+  // class) with that type's share. add() sets 1, -1, 0: a whole tree of one type.
+  std::vector<float> presence;
+  std::vector<std::int32_t> blendType;
+  std::vector<float> blendWeight;
+
+  std::size_t size() const { return type.size(); }
+  void reserve(std::size_t n);
+  // Appends tree i of `from`, every array alike (a subset of a forest: species shown).
+  void append(const Forest& from, std::size_t i);
+  // One plant, drawn by `typeIndex` at its height and crown radius.
+  void add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
+           float crownRadius_m, float vigor, std::uint64_t individual);
+};
+
+// The library's species index of each of the snapshot's species names; an InputError
+// (at `where`) names a species the library does not have.
+std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
+                                  const std::string& where);
+
+// Every plant of a snapshot; species are matched to the library by name. An InputError
+// names a species the library does not have.
+Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
+                          const std::string& where);
+
+// `count` trees spread uniformly over the terrain with species drawn evenly and heights from
+// seedlings to mature (the terrain-with-trees view of a scenario without a run).
+Forest demoForest(const Terrain& terrain, const TreeLibrary& library, std::size_t count,
+                  std::uint64_t seed);
+
+}  // namespace eco

@@ -1,0 +1,117 @@
+#include "render/scene/frame_sink.hpp"
+
+#include <unistd.h>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "sim/image_io.hpp"
+
+namespace eco {
+namespace {
+
+// "frames/" names the folder "frames".
+std::filesystem::path withoutTrailingSeparator(const std::filesystem::path& folder) {
+  return folder.has_filename() ? folder : folder.parent_path();
+}
+
+class PngFolderSink : public FrameSink {
+ public:
+  explicit PngFolderSink(const std::filesystem::path& folder)
+      : folder_(withoutTrailingSeparator(folder)), partial_(folder_.string() + ".partial") {
+    if (std::filesystem::exists(folder_) && !std::filesystem::is_empty(folder_))
+      throw InputError({folder_.string(), 0, "--out"}, "the frame folder exists and is not empty");
+    std::filesystem::remove_all(partial_);
+    std::filesystem::create_directories(partial_);
+  }
+  ~PngFolderSink() override {
+    if (!finished_) std::filesystem::remove_all(partial_);
+  }
+  void add(const Image& frame) override {
+    writeRgb8Image(partial_ / fmt::format("frame_{:05d}.png", count_++), frame);
+  }
+  void finish() override {
+    std::filesystem::remove(folder_);  // an empty folder the user made
+    std::filesystem::rename(partial_, folder_);
+    finished_ = true;
+  }
+
+ private:
+  std::filesystem::path folder_, partial_;
+  int count_ = 0;
+  bool finished_ = false;
+};
+
+class Mp4Sink : public FrameSink {
+ public:
+  Mp4Sink(const std::filesystem::path& file, int width, int height, int fps)
+      : file_(file), partial_(file.parent_path() / (".partial_" + file.filename().string())) {
+    if (!programOnPath("ffmpeg"))
+      throw EnvironmentError(
+          "MP4 output needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg); or "
+          "write PNG frames into a folder");
+    // Raw RGB frames in; H.264 in yuv420p, which needs even sizes: pad by a pixel if odd.
+    const std::string command = fmt::format(
+        "ffmpeg -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s {}x{} -r {} -i - "
+        "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset fast -crf 20 -pix_fmt yuv420p "
+        "-movflags +faststart -f mp4 '{}'",
+        width, height, fps, partial_.string());
+    std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give an error, not kill us
+    pipe_ = popen(command.c_str(), "w");
+    if (!pipe_) throw EnvironmentError(std::string("could not start ffmpeg: ") + std::strerror(errno));
+  }
+  ~Mp4Sink() override {
+    if (pipe_) pclose(pipe_);
+    if (!finished_) std::filesystem::remove(partial_);
+  }
+  void add(const Image& frame) override {
+    const std::vector<std::uint8_t> rgb = frame.rgb();
+    if (std::fwrite(rgb.data(), 1, rgb.size(), pipe_) != rgb.size()) fail();
+  }
+  void finish() override {
+    const int status = pclose(pipe_);
+    pipe_ = nullptr;
+    if (status != 0) fail();
+    std::filesystem::rename(partial_, file_);
+    finished_ = true;
+  }
+
+ private:
+  [[noreturn]] void fail() {
+    if (pipe_) pclose(pipe_);
+    pipe_ = nullptr;
+    throw EnvironmentError(file_.string() + ": ffmpeg failed to encode it (its messages are above)");
+  }
+
+  std::filesystem::path file_, partial_;
+  FILE* pipe_ = nullptr;
+  bool finished_ = false;
+};
+
+}  // namespace
+
+bool programOnPath(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  std::stringstream folders(path);
+  for (std::string folder; std::getline(folders, folder, ':');)
+    if (!folder.empty() && access((std::filesystem::path(folder) / name).c_str(), X_OK) == 0)
+      return true;
+  return false;
+}
+
+std::unique_ptr<FrameSink> pngFolderSink(const std::filesystem::path& folder) {
+  return std::make_unique<PngFolderSink>(folder);
+}
+
+std::unique_ptr<FrameSink> mp4Sink(const std::filesystem::path& file, FrameSize size, int fps) {
+  return std::make_unique<Mp4Sink>(file, size.width, size.height, fps);
+}
+
+}  // namespace eco

@@ -1,0 +1,40 @@
+#include "render/scene/impostor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+namespace eco {
+
+glm::vec2 hemiOctEncode(glm::vec3 d) {
+  d /= std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+  return glm::vec2(d.x + d.z, d.x - d.z) * 0.5f + 0.5f;
+}
+
+glm::vec3 hemiOctDecode(glm::vec2 uv) {
+  const glm::vec2 e = uv * 2.0f - 1.0f;
+  glm::vec3 d((e.x + e.y) * 0.5f, 0.0f, (e.x - e.y) * 0.5f);
+  d.y = 1.0f - std::abs(d.x) - std::abs(d.z);
+  return glm::normalize(d);
+}
+
+glm::ivec2 impostorFrame(glm::vec3 direction, int frames) {
+  direction.y = std::max(direction.y, 0.0f);
+  const glm::vec2 cell = glm::floor(hemiOctEncode(direction) * static_cast<float>(frames));
+  return glm::clamp(glm::ivec2(cell), glm::ivec2(0), glm::ivec2(frames - 1));
+}
+
+glm::vec3 frameDirection(glm::ivec2 frame, int frames) {
+  return hemiOctDecode((glm::vec2(frame) + 0.5f) / static_cast<float>(frames));
+}
+
+void frameAxes(glm::vec3 f, glm::vec3& right, glm::vec3& up) {
+  const glm::vec3 reference = std::abs(f.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1);
+  right = glm::normalize(glm::cross(reference, f));
+  up = glm::cross(f, right);
+}
+
+}  // namespace eco

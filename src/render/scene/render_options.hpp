@@ -1,0 +1,52 @@
+// What a frame is drawn with and what drawing it cost: the sun, the wind, the levels of
+// detail and shadows asked for, and the statistics the back end reports. Plain settings
+// without OpenGL, shared by the renderer, the time-lapse and the command line.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+
+#include "render/scene/culling.hpp"
+#include "render/scene/sun.hpp"
+#include "sim/scenario.hpp"
+
+namespace eco {
+
+struct SceneWind {
+  // Where the wind comes from (0 north, 90 east): a scenario's prevailing wind.
+  double fromBearing_deg = Climate{}.prevailingWindFrom_deg;
+  double directed_wg = 0.0;        // w_g of the horizontal wind
+  double sway_ws = 0.0;            // w_s of the undirected sway
+  double gust = 0.25;              // relative swing of the directed wind over time
+  double time = 0.0;               // t of the sway, radians
+};
+
+struct RenderOptions {
+  SunTime sun;
+  SceneWind wind;
+  LodSettings lod;
+  bool shadows = true;
+  float shadowRange_m = 150.0f;  // half the side of the shadowed square ahead of the camera
+  int shadowMapSize = 2048;
+  std::optional<float> fogDensity;  // per metre; default clear air (100 km visibility)
+};
+
+struct ForestStats {
+  std::array<std::size_t, kLevelCount> instances{};  // per level, cross-fades counted twice
+  std::size_t culled = 0;                            // outside the frustum
+  std::size_t tooSmall = 0;                          // under the LOD settings' minimum size
+  std::size_t triangles = 0;                         // drawn in the colour pass
+  std::size_t lod0Triangles = 0;                     // the same trees all at LOD0, for comparison
+  std::size_t shadowCasters = 0;
+};
+
+struct FrameStats {
+  ForestStats forest;
+  std::size_t terrainTriangles = 0;
+  double prepareMs = 0.0;  // culling, LOD choice, instance upload (CPU)
+  double frameMs = 0.0;    // the whole frame until the GPU finished
+  std::size_t triangles() const { return forest.triangles + terrainTriangles; }
+};
+
+}  // namespace eco

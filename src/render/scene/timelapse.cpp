@@ -1,0 +1,151 @@
+#include "render/scene/timelapse.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <fmt/format.h>
+#include <glm/trigonometric.hpp>
+
+#include "core/error.hpp"
+#include "render/scene/growth_timeline.hpp"
+
+namespace eco {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Snapshots of a run, read once each; year 0 is the bare landscape before the first.
+class SnapshotCache {
+ public:
+  explicit SnapshotCache(const RunFolder& run) : run_(run) {}
+  // The snapshot of a year. References stay valid until forgetBefore() drops that year.
+  const TreeSnapshot& at(int year) {
+    auto it = cache_.find(year);
+    if (it != cache_.end()) return it->second;
+    TreeSnapshot snapshot;
+    if (year == 0)
+      snapshot.year = 0;
+    else
+      snapshot = readSnapshot(run_, year);
+    return cache_.emplace(year, std::move(snapshot)).first->second;
+  }
+  // Frames move forward through the years: snapshots before `year` are not needed again.
+  void forgetBefore(int year) { cache_.erase(cache_.begin(), cache_.lower_bound(year)); }
+
+ private:
+  const RunFolder& run_;
+  std::map<int, TreeSnapshot> cache_;
+};
+
+}  // namespace
+
+int TimelapseSettings::frameCount() const {
+  return std::max(1, static_cast<int>(std::lround(seconds * fps)));
+}
+
+double TimelapseSettings::yearOfFrame(int frame) const {
+  const int frames = frameCount();
+  if (kind == TimelapseKind::Wind || frames == 1) return fromYear;
+  return fromYear + (toYear - fromYear) * frame / (frames - 1);
+}
+
+double metresPerPixelAtCentre(const Camera& camera, const Terrain& terrain, int height) {
+  double distance = 1000.0;
+  const glm::vec3 d = camera.forward();
+  for (double t = 1.0; t < 20000.0; t += std::max(1.0, 0.01 * t)) {
+    const glm::vec3 p = camera.position + static_cast<float>(t) * d;
+    if (p.y <= groundBelow(terrain, p)) {
+      distance = t;
+      break;
+    }
+  }
+  return 2.0 * distance * std::tan(0.5 * radians(camera.fovY_deg)) / height;
+}
+
+void drawOverlay(Image& frame, double year, double metresPerPixel) {
+  OIIO::ImageBuf buffer(OIIO::ImageSpec(frame.width, frame.height, 4, OIIO::TypeDesc::UINT8),
+                        frame.rgba.data());
+  const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  const float shadow[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  const int size = std::max(14, frame.height / 24);
+  const std::string label = fmt::format("year {:.0f}", std::floor(year + 1e-6));
+  // DejaVu Sans from fonts-dejavu-core; a missing font leaves the bar without labels.
+  OIIO::ImageBufAlgo::render_text(buffer, 13, 11 + size, label, size, "DejaVuSans", shadow);
+  OIIO::ImageBufAlgo::render_text(buffer, 12, 10 + size, label, size, "DejaVuSans", white);
+  // A bar of a round length (1, 2 or 5 times a power of ten) near a fifth of the width.
+  const double target = 0.2 * frame.width * metresPerPixel;
+  const double power = std::pow(10.0, std::floor(std::log10(target)));
+  double length = power;
+  for (double m : {2.0, 5.0})
+    if (m * power <= target) length = m * power;
+  const int pixels = static_cast<int>(std::lround(length / metresPerPixel));
+  const int x0 = 12, y0 = frame.height - 14;
+  OIIO::ImageBufAlgo::fill(buffer, shadow, OIIO::ROI(x0 - 1, x0 + pixels + 1, y0 - 5, y0 + 2));
+  OIIO::ImageBufAlgo::fill(buffer, white, OIIO::ROI(x0, x0 + pixels, y0 - 4, y0 + 1));
+  const std::string text =
+      length >= 1000.0 ? fmt::format("{:g} km", length / 1000.0) : fmt::format("{:g} m", length);
+  OIIO::ImageBufAlgo::render_text(buffer, x0 + pixels + 8, y0 + 1, text, size * 3 / 4, "DejaVuSans",
+                                  white);
+  buffer.geterror();
+}
+
+TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& library,
+                                 const Terrain& terrain, const DrawFrame& draw,
+                                 const TimelapseSettings& settings, FrameSink& sink,
+                                 const std::function<void(int, int)>& progress) {
+  const auto start = Clock::now();
+  TimelapseTimings timings;
+  const int frames = settings.frameCount();
+  SnapshotCache snapshots(run);
+  std::vector<int> years{0};
+  years.insert(years.end(), run.snapshotYears.begin(), run.snapshotYears.end());
+  Forest forest;
+  for (int frame = 0; frame < frames; ++frame) {
+    auto phase = Clock::now();
+    const double year = settings.yearOfFrame(frame);
+    RenderOptions options = settings.render;
+    if (settings.kind == TimelapseKind::Wind) {
+      options.wind.time += frame * settings.windRadiansPerSecond / settings.fps;
+      if (frame == 0)
+        forest =
+            forestFromSnapshot(snapshots.at(static_cast<int>(year)), library, run.dir.string());
+    } else {
+      // The snapshots around the year (the last pair at the end of the run).
+      std::size_t after = 1;
+      while (after + 1 < years.size() && years[after] < year) ++after;
+      snapshots.forgetBefore(years[after - 1]);
+      forest = forestBetween(snapshots.at(years[after - 1]), snapshots.at(years[after]), year,
+                             library, run.dir.string());
+    }
+    timings.instances_s += secondsSince(phase);
+
+    phase = Clock::now();
+    const double u = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
+    const Camera camera = settings.camera(u);
+    Image image = draw(forest, camera, options);
+    timings.render_s += secondsSince(phase);
+
+    phase = Clock::now();
+    if (settings.overlay)
+      drawOverlay(image, year,
+                  metresPerPixelAtCentre(camera, terrain, settings.frame.height));
+    sink.add(image);
+    timings.encode_s += secondsSince(phase);
+    if (progress) progress(frame + 1, frames);
+  }
+  const auto phase = Clock::now();
+  sink.finish();
+  timings.encode_s += secondsSince(phase);
+  timings.frames = frames;
+  timings.total_s = secondsSince(start);
+  return timings;
+}
+
+}  // namespace eco

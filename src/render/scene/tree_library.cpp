@@ -1,0 +1,106 @@
+#include "render/scene/tree_library.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
+
+#include "core/error.hpp"
+
+namespace eco {
+namespace {
+
+glm::vec4 boundingSphere(const WindLods& meshes) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const WindMesh& lod : meshes.lods)
+    for (const WindPart& part : lod.parts)
+      for (const TreeVertex& v : part.vertices) {
+        lo = glm::min(lo, v.position);
+        hi = glm::max(hi, v.position);
+      }
+  const glm::vec3 centre(0.0f, 0.5f * (lo.y + hi.y), 0.0f);  // on the stem axis
+  float radius = 0.0f;
+  for (const WindMesh& lod : meshes.lods)
+    for (const WindPart& part : lod.parts)
+      for (const TreeVertex& v : part.vertices)
+        radius = std::max(radius, glm::length(v.position - centre));
+  return {centre, radius};
+}
+
+}  // namespace
+
+LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file) {
+  return {loadSpecies(file), readEcology(file)};
+}
+
+TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySettings& settings)
+    : settings_(settings) {
+  for (LibrarySpecies& s : species) species_.push_back(std::move(s.model));
+  ECO_ASSERT(settings.variants >= 1 && !settings.ageClasses.empty(),
+             "variants=" << settings.variants);
+  for (int s = 0; s < static_cast<int>(species_.size()); ++s)
+    for (int v = 0; v < settings.variants; ++v)
+      for (int a = 0; a < static_cast<int>(settings.ageClasses.size()); ++a) {
+        TreeType& type = types_.emplace_back();
+        type.species = s;
+        type.variant = v;
+        type.ageClass = a;
+        type.seed = variantSeed(v);
+        type.age = settings.ageClasses[a];
+      }
+  tbb::parallel_for(std::size_t{0}, types_.size(), [&](std::size_t i) {
+    TreeType& type = types_[i];
+    const Species& s = species_[type.species];
+    type.meshes = buildWindLods(s, type.seed, type.age);
+    const SkeletonMeasures measures =
+        measure(buildTree(s, windBuildOptions(s, type.seed, type.age, {}, 0.0)));
+    // An L-system may draw nothing in its first steps: such a type is empty, not a /0.
+    type.height_m = std::max(static_cast<float>(measures.height_m), 1e-3f);
+    type.crownRadius_m = static_cast<float>(measures.crownRadius_m);
+    type.bounds = boundingSphere(type.meshes);
+  });
+  const int classes = static_cast<int>(settings.ageClasses.size());
+  for (int s = 0; s < static_cast<int>(species.size()); ++s) {
+    const std::optional<Ecology>& ecology = species[s].ecology;
+    maxHeight_m_.push_back(ecology ? static_cast<float>(ecology->life.height_m.max)
+                                   : types_[typeIndex(s, 0, classes - 1)].height_m);
+    seedlingHeight_m_.push_back(
+        static_cast<float>((ecology ? ecology->life : LifeHistory{}).seedlingHeight_m));
+  }
+}
+
+int TreeLibrary::typeIndex(int species, int variant, int ageClass) const {
+  const int classes = static_cast<int>(settings_.ageClasses.size());
+  return (species * settings_.variants + variant) * classes + ageClass;
+}
+
+TreeLibrary::Blend TreeLibrary::blendFor(int species, std::uint64_t variantSeed, float height_m,
+                                         float speciesMaxHeight_m) const {
+  const int variant =
+      static_cast<int>(variantSeed % static_cast<std::uint64_t>(settings_.variants));
+  const int classes = static_cast<int>(settings_.ageClasses.size());
+  const float mature = types_[typeIndex(species, variant, classes - 1)].height_m;
+  const float relative = std::max(height_m, 1e-3f) / std::max(speciesMaxHeight_m, 1e-3f);
+  auto classRelative = [&](int a) {
+    return types_[typeIndex(species, variant, a)].height_m / mature;
+  };
+  if (relative <= classRelative(0)) return {typeIndex(species, variant, 0)};
+  for (int a = 0; a + 1 < classes; ++a)
+    if (relative < classRelative(a + 1))
+      return {typeIndex(species, variant, a), typeIndex(species, variant, a + 1),
+              std::log(relative / classRelative(a)) /
+                  std::log(classRelative(a + 1) / classRelative(a))};
+  return {typeIndex(species, variant, classes - 1)};
+}
+
+int TreeLibrary::typeFor(int species, std::uint64_t variantSeed, float height_m,
+                         float speciesMaxHeight_m) const {
+  // The nearer of the two classes around the plant (class heights grow with age), in
+  // logarithms: the blend's weight rounded.
+  const Blend blend = blendFor(species, variantSeed, height_m, speciesMaxHeight_m);
+  return blend.blendType >= 0 && blend.blendWeight > 0.5f ? blend.blendType : blend.type;
+}
+
+}  // namespace eco

@@ -1,0 +1,85 @@
+// The trees a renderer can draw: for each species a few variants (seeds) times a few age
+// classes, each built once by the model with its three LODs and wind bases. A plant of a run
+// is drawn as the type of its species, variant (its variant seed) and nearest age class,
+// scaled to its height and crown.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "model/species.hpp"
+#include "sim/ecology/species_ecology.hpp"
+#include "render/scene/wind_mesh.hpp"
+
+namespace eco {
+
+// A species as the renderer draws it: its tree model and, for a species that grows in an
+// ecosystem, the [ecology] of its file (how tall it grows, how small a seedling is).
+struct LibrarySpecies {
+  Species model;
+  std::optional<Ecology> ecology;
+};
+// The species file's tree model and ecology.
+LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file);
+
+struct LibrarySettings {
+  int variants = 3;
+  std::vector<double> ageClasses{0.15, 0.4, 0.7, 1.0};  // the model's age parameter
+};
+
+struct TreeType {
+  int species = 0;
+  int variant = 0;
+  int ageClass = 0;
+  std::uint64_t seed = 1;
+  double age = 1.0;
+  float height_m = 0.0f;  // of the rest mesh
+  float crownRadius_m = 0.0f;
+  glm::vec4 bounds{0.0f};  // centre (tree frame) and radius of a sphere around every LOD
+  WindLods meshes;
+};
+
+class TreeLibrary {
+ public:
+  TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySettings& settings);
+
+  const std::vector<Species>& species() const { return species_; }
+  // The largest height a species reaches (its growth curve's maximum, or its mature tree).
+  float maxHeight_m(int species) const { return maxHeight_m_[species]; }
+  // The height of a seedling in its first year.
+  float seedlingHeight_m(int species) const { return seedlingHeight_m_[species]; }
+  const std::vector<TreeType>& types() const { return types_; }
+  const LibrarySettings& settings() const { return settings_; }
+  int typeIndex(int species, int variant, int ageClass) const;
+  // The type that draws a plant of this species, variant seed and height: its species'
+  // variant (seed modulo the variants) at the age class whose tree is nearest in height
+  // relative to the species' largest (compared in logarithms).
+  int typeFor(int species, std::uint64_t variantSeed, float height_m,
+              float speciesMaxHeight_m) const;
+  // The same as two neighbouring age classes blended by relative height (in logarithms), for
+  // growth that changes class without a jump: `type` is the younger class, `blendType` the
+  // older (or -1 outside the classes' range) and `blendWeight` the older's share.
+  struct Blend {
+    int type = 0;
+    int blendType = -1;
+    float blendWeight = 0.0f;
+  };
+  Blend blendFor(int species, std::uint64_t variantSeed, float height_m,
+                 float speciesMaxHeight_m) const;
+  // The seed of a variant: the model's individual of that variant.
+  static std::uint64_t variantSeed(int variant) {
+    return 1 + 7919 * static_cast<std::uint64_t>(variant);
+  }
+
+ private:
+  std::vector<Species> species_;
+  std::vector<float> maxHeight_m_, seedlingHeight_m_;
+  LibrarySettings settings_;
+  std::vector<TreeType> types_;
+};
+
+}  // namespace eco

@@ -1,0 +1,73 @@
+// Tree meshes with their wind bases, ready for the GPU.
+//
+// EcoMod's wind turns every branch by small angles: the undirected sway
+// alpha_x(t) = sin(t + R_x) w_s (1 - k_f) l_0 (likewise alpha_z), and the directed tilt
+// (S_0 / S) w_g toward the wind. To first order in those angles a vertex moves by
+//   sin(t) * swaySin + cos(t) * swayCos            (sway: a sum of sines over its branches)
+// + wind_east * bendEast + wind_south * bendSouth  (directed: linear in the horizontal wind)
+// and the four vectors per vertex are exact differences of meshes the CPU model builds:
+// swaySin at t = pi/2, swayCos at t = 0 (with w_s = kSwayBasis_ws), the bends with a
+// horizontal wind of kBendBasis_wg toward east and toward south, each minus the rest pose
+// (the species' own directed growth, no sway, no horizontal wind). docs/rendering.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "model/mesh/lod.hpp"
+#include "model/mesh/mesh.hpp"
+#include "model/species.hpp"
+#include "model/tree_generator.hpp"
+
+namespace eco {
+
+inline constexpr double kSwayBasis_ws = 1.0;  // w_s of the sway bases, degrees per metre
+inline constexpr double kBendBasis_wg = 1.0;  // horizontal w_g of the bend bases
+
+struct TreeVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+  glm::vec3 swaySin;
+  glm::vec3 swayCos;
+  glm::vec3 bendEast;
+  glm::vec3 bendSouth;
+};
+static_assert(sizeof(TreeVertex) == 80);
+
+struct WindPart {
+  MaterialKind material = MaterialKind::Bark;
+  std::vector<TreeVertex> vertices;
+  std::vector<std::uint32_t> indices;
+};
+
+struct WindMesh {
+  std::vector<WindPart> parts;
+  std::size_t triangleCount() const;
+};
+
+// The wind of a scene in a tree's frame: w_s of the sway and the horizontal directed wind
+// (w_g times the unit direction toward which it blows, x east and z south).
+struct TreeWind {
+  double sway_ws = 0.0;
+  glm::dvec2 directed{0.0};  // (east, south)
+};
+
+// The CPU model's build options for one tree under a scene wind at time t: the species'
+// directed growth and the horizontal wind add as vectors (docs/rendering.md).
+TreeBuildOptions windBuildOptions(const Species& species, std::uint64_t seed, double age,
+                                  const TreeWind& wind, double t);
+
+// LOD0..2 of one tree with wind bases. Where a level's topology changes with the wind (it
+// should not: wind only turns frames), its bases stay zero and `windless` counts it.
+struct WindLods {
+  std::array<WindMesh, kLodCount> lods;
+  int windless = 0;
+};
+WindLods buildWindLods(const Species& species, std::uint64_t seed, double age);
+
+}  // namespace eco

@@ -1,0 +1,23 @@
+// What `ecoforest conditions` writes: maps/<field>.exr (raw floats), maps/<field>.png
+// (colour-mapped, with a legend strip giving the range and unit) and conditions.json.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "sim/conditions/conditions.hpp"
+
+namespace eco {
+
+// RGB of a field value on the field's colour ramp; t in [0, 1].
+glm::vec3 rampColor(const std::string& field, double t);
+
+// One map: <folder>/<name>.exr and <name>.png with its legend. Names pick the colour ramp
+// (a condition's, "suitability_*" or "canopy_height"); unit "0-1" fixes the range to [0, 1].
+FieldStats writeFieldMap(const std::filesystem::path& folder, const std::string& name,
+                         const std::string& unit, const Field& values, const Grid& grid);
+
+void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport& report,
+                           const Scenario& scenario, const std::filesystem::path& folder);
+
+}  // namespace eco

@@ -1,0 +1,46 @@
+// The five living conditions of the EcoMod paper (altitude, slope, moisture, windiness,
+// sunniness) plus aspect, as parallel float arrays on the terrain's grid.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sim/scenario.hpp"
+#include "sim/conditions/sunlight.hpp"
+#include "sim/terrain.hpp"
+
+namespace eco {
+
+struct ConditionFields {
+  Grid grid;
+  Field altitude_m;
+  Field slope_deg;
+  Field aspect_deg;  // compass bearing faced, -1 where flat
+  Field moisture;    // 0..1
+  Field windiness;   // 0..1
+  Field sunniness;   // 0..1
+};
+
+// Name, unit and member of each field, in output order.
+struct FieldInfo {
+  const char* name;
+  const char* unit;
+  Field ConditionFields::*field;
+};
+const std::vector<FieldInfo>& conditionFieldInfo();
+
+struct ConditionsReport {
+  std::vector<std::pair<std::string, double>> fieldMilliseconds;
+  std::uint64_t sunRays = 0;
+  double sunRaysPerSecond = 0.0;
+};
+
+// `progress(field, fraction)` is called as work advances (possibly from several threads).
+ConditionFields computeConditions(const Terrain& terrain, const Climate& climate,
+                                  const SunlightSettings& sunlight,
+                                  ConditionsReport* report = nullptr,
+                                  const std::function<void(const char*, double)>& progress = {});
+
+}  // namespace eco

@@ -1,0 +1,30 @@
+// Reading a run folder back (docs/simulation.md): its scenario, the years it holds tree
+// snapshots for, and a snapshot's trees (run_format.hpp reads the files). The renderer and
+// exporters read runs only here.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sim/run/run_format.hpp"
+#include "sim/scenario.hpp"
+
+namespace eco {
+
+struct RunFolder {
+  std::filesystem::path dir;
+  Scenario scenario;               // as run.json names it
+  std::vector<int> snapshotYears;  // ascending; the years of trees/year_NNNN.csv
+};
+
+// Throws InputError (naming the folder or run.json) when the folder, run.json or its
+// scenario is missing or unreadable.
+RunFolder openRunFolder(const std::filesystem::path& dir);
+
+// An InputError listing the years there are unless the run has a snapshot of `year`.
+void requireSnapshotYear(const RunFolder& run, int year);
+// The snapshot of `year`; an InputError lists the years there are when it is not one.
+TreeSnapshot readSnapshot(const RunFolder& run, int year);
+}  // namespace eco

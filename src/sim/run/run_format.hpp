@@ -1,0 +1,99 @@
+// The files of a run folder (docs/simulation.md), each writer beside its reader: the paths,
+// run.json, stats.csv and trees/year_NNNN.csv. Maps and conditions.json are written by
+// condition_maps.hpp (`ecoforest conditions` writes the same layout), checkpoint.bin by
+// checkpoint.hpp.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sim/ecology/ecosystem.hpp"
+
+namespace eco {
+
+// Where each file of a run folder lives.
+struct RunPaths {
+  std::filesystem::path dir;
+
+  std::filesystem::path runJson() const { return dir / "run.json"; }
+  std::filesystem::path stats() const { return dir / "stats.csv"; }
+  std::filesystem::path checkpoint() const { return dir / "checkpoint.bin"; }
+  std::filesystem::path treesFolder() const { return dir / "trees"; }
+  std::filesystem::path snapshot(int year) const;  // trees/year_NNNN.csv
+  std::filesystem::path conditionsJson() const { return dir / "conditions.json"; }
+  std::filesystem::path mapsFolder() const { return dir / "maps"; }
+  std::filesystem::path map(const std::string& name) const;  // maps/NAME.exr, raw floats
+  // The years of the snapshots there are, ascending.
+  std::vector<int> snapshotYears() const;
+  // The names of the maps there are (maps/*.exr), sorted.
+  std::vector<std::string> mapNames() const;
+};
+
+// One line of stats.csv. Plain numbers without padding so that checkpoints can hold rows.
+struct StatsRow {
+  std::int32_t year = 0;
+  std::int32_t species = 0;
+  std::int64_t alive = 0, born = 0, died = 0;
+  double meanHeight_m = 0.0;
+  double basalArea_m2PerHa = 0.0;  // stem cross-sections at breast height per hectare
+  double coverFraction = 0.0;      // share of cell centres under a crown of the species
+};
+
+void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow>& rows,
+                   const std::vector<EcosystemSpecies>& species);
+
+// A snapshot: one row per living plant.
+struct TreeRow {
+  std::uint64_t id = 0;
+  int species = 0;  // index into TreeSnapshot::speciesNames
+  double east_m = 0.0, north_m = 0.0, ground_m = 0.0;
+  int age_years = 0;
+  float height_m = 0.0f, crownRadius_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
+  std::uint64_t variantSeed = 0;
+};
+
+struct TreeSnapshot {
+  int year = 0;
+  std::vector<std::string> speciesNames;  // in order of first appearance
+  std::vector<TreeRow> trees;
+};
+
+void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem);
+// Parses one trees CSV; errors give the file and line.
+TreeSnapshot readTreesCsv(const std::filesystem::path& file);
+
+// What a species looks like at the end of a run (run.json's final_counts).
+struct SpeciesCount {
+  std::string name;
+  std::int64_t alive = 0;
+  std::int64_t over5m = 0;  // taller than 5 m
+  // Where those taller than 5 m stand: the mean of each condition field over their cells,
+  // in conditionFieldInfo() order (empty where none is that tall).
+  std::vector<double> meanSiteOver5m;
+};
+
+// run.json: what ran, how far it got, and what grew.
+struct RunRecord {
+  std::string version;
+  std::string status;  // running | complete | interrupted
+  std::filesystem::path scenarioFile;
+  std::string scenarioName;
+  std::uint64_t fingerprint = 0;  // scenarioFingerprint() of the scenario it ran
+  std::string scenarioText;       // the scenario file as it was
+  std::uint64_t seed = 0;
+  int years = 0;
+  int lastYear = 0;
+  int threads = 0;
+  double conditionsSeconds = 0.0, simulationSeconds = 0.0, plantYearsPerSecond = 0.0;
+  std::vector<SpeciesCount> counts;
+  std::vector<double> meanSite;  // each condition field's mean over the map
+};
+
+void writeRunJson(const RunPaths& run, const RunRecord& record);
+// The record's scenario, fingerprint, status and years; InputError naming run.json when it
+// is missing or malformed.
+RunRecord readRunJson(const RunPaths& run);
+
+}  // namespace eco

@@ -1,0 +1,18 @@
+// What a run measures (docs/simulation.md): yearly statistics per species (stats.csv,
+// written by run_format.hpp) and the canopy height map.
+#pragma once
+
+#include <vector>
+
+#include "sim/ecology/ecosystem.hpp"
+#include "sim/run/run_format.hpp"
+
+namespace eco {
+
+// The rows of the year just stepped, one per species.
+std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem);
+
+// The height of the tallest plant whose crown covers each cell centre, 0 where none does.
+Field canopyHeight(const Ecosystem& ecosystem);
+
+}  // namespace eco

@@ -1,0 +1,215 @@
+#include "sim/run/simulation.hpp"
+
+#include <chrono>
+#include <numeric>
+
+#include <fmt/format.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include "core/binary_io.hpp"
+#include "core/error.hpp"
+#include "sim/run/checkpoint.hpp"
+#include "sim/conditions/condition_maps.hpp"
+#include "sim/run/run_outputs.hpp"
+#include "sim/ecology/suitability.hpp"
+
+namespace eco {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A file's bytes; empty if it cannot be read (the scenario and its files were read already).
+std::string fileBytes(const std::filesystem::path& file) {
+  return readFileBytes(file).value_or(std::string());
+}
+
+void createFolder(const std::filesystem::path& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error)
+    throw InputError({folder.string(), 0, ""},
+                     "cannot create the output folder: " + error.message());
+}
+
+std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem, const ConditionFields& fields) {
+  const std::vector<FieldInfo>& info = conditionFieldInfo();
+  std::vector<SpeciesCount> counts;
+  for (const EcosystemSpecies& s : ecosystem.species())
+    counts.push_back({s.species.name, 0, 0, std::vector<double>(info.size(), 0.0)});
+  const Plants& p = ecosystem.plants();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    SpeciesCount& c = counts[p.species[i]];
+    ++c.alive;
+    if (p.height_m[i] <= 5.0f) continue;
+    ++c.over5m;
+    for (std::size_t f = 0; f < info.size(); ++f)
+      c.meanSiteOver5m[f] += (fields.*info[f].field)[p.cell[i]];
+  }
+  for (SpeciesCount& c : counts) {
+    if (c.over5m == 0) c.meanSiteOver5m.clear();
+    for (double& sum : c.meanSiteOver5m) sum /= static_cast<double>(c.over5m);
+  }
+  return counts;
+}
+
+std::vector<double> meanSiteOf(const ConditionFields& fields) {
+  std::vector<double> means;
+  for (const FieldInfo& f : conditionFieldInfo()) {
+    const Field& field = fields.*f.field;
+    means.push_back(std::accumulate(field.begin(), field.end(), 0.0) /
+                    static_cast<double>(field.size()));
+  }
+  return means;
+}
+
+RunRecord runRecord(const Scenario& scenario, const RunOptions& options,
+                    std::uint64_t fingerprint, const RunSummary& summary, std::string status) {
+  RunRecord r;
+  r.version = options.programVersion;
+  r.status = std::move(status);
+  r.scenarioFile = scenario.file;
+  r.scenarioName = scenario.name;
+  r.fingerprint = fingerprint;
+  r.scenarioText = fileBytes(scenario.file);
+  r.seed = scenario.seed;
+  r.years = summary.targetYears;
+  r.lastYear = summary.lastYear;
+  r.threads = tbb::this_task_arena::max_concurrency();
+  r.conditionsSeconds = summary.conditionsSeconds;
+  r.simulationSeconds = summary.simulationSeconds;
+  r.plantYearsPerSecond =
+      summary.simulationSeconds > 0.0 ? summary.plantYears / summary.simulationSeconds : 0.0;
+  r.counts = summary.counts;
+  r.meanSite = summary.meanSite;
+  return r;
+}
+
+// Plants from a checkpoint must fit this scenario's grid and species list.
+void checkState(const EcosystemState& state, const Ecosystem& ecosystem,
+                const std::filesystem::path& file) {
+  const Plants& p = state.plants;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.species[i] >= ecosystem.species().size() || p.cell[i] < 0 ||
+        static_cast<std::size_t>(p.cell[i]) >= ecosystem.grid().cellCount())
+      throw InputError({file.string(), 0, ""},
+                       "checkpoint does not fit this scenario's terrain or species");
+}
+
+}  // namespace
+
+std::uint64_t scenarioFingerprint(const Scenario& scenario) {
+  std::uint64_t hash = fnv1a64(fileBytes(scenario.file));
+  if (scenario.terrain.heightmap) hash = fnv1a64(fileBytes(*scenario.terrain.heightmap), hash);
+  for (const ScenarioSpecies& s : scenario.species) hash = fnv1a64(fileBytes(s.file), hash);
+  return hash;
+}
+
+std::vector<EcosystemSpecies> loadEcosystemSpecies(const Scenario& scenario,
+                                                   const ConditionFields& fields) {
+  if (scenario.species.empty())
+    throw InputError({scenario.file.string(), 0, "species"},
+                     "the scenario lists no species: add [[species]] tables with a file each");
+  if (scenario.species.size() > 255)
+    throw InputError(scenario.species[255].where, "at most 255 species per scenario");
+  std::vector<EcosystemSpecies> result;
+  for (const ScenarioSpecies& entry : scenario.species) {
+    EcosystemSpecies s = readEcosystemSpecies(entry.file, entry.where);
+    s.seedRainPerHaPerYear = entry.seedRainPerHaPerYear;
+    s.suitability = siteSuitability(s.ecology.tolerance, fields, scenario.simulation.suitability);
+    result.push_back(std::move(s));
+  }
+  return result;
+}
+
+RunSummary runSimulation(const RunOptions& options) {
+  Scenario scenario = loadScenario(options.scenarioFile);
+  RunSummary summary;
+  summary.targetYears = options.years.value_or(scenario.simulation.years);
+  if (summary.targetYears < 1)
+    throw InputError({scenario.file.string(), 0, "years"}, "years must be at least 1");
+  summary.folder = options.out.value_or(scenario.output.dir);
+  const RunPaths run{summary.folder};
+  const std::uint64_t fingerprint = scenarioFingerprint(scenario);
+  if (std::all_of(scenario.species.begin(), scenario.species.end(),
+                  [](const ScenarioSpecies& s) { return s.seedRainPerHaPerYear <= 0.0; }) &&
+      !scenario.species.empty() && options.warn)
+    options.warn(fmt::format(
+        "{}: every species has seed_rain_per_ha_per_year = 0 and the landscape starts empty, "
+        "so nothing will grow; give at least one species a seed rain",
+        scenario.file.string()));
+
+  // Read the checkpoint before anything is written, so a refused resume changes nothing.
+  std::optional<Checkpoint> checkpoint;
+  if (options.resume) checkpoint = readCheckpoint(run.checkpoint(), fingerprint);
+
+  const auto conditionsStart = Clock::now();
+  Terrain terrain = loadTerrain(scenario);
+  ConditionsReport report;
+  ConditionFields fields =
+      computeConditions(terrain, scenario.climate, SunlightSettings{}, &report);
+  std::vector<EcosystemSpecies> species = loadEcosystemSpecies(scenario, fields);
+  summary.conditionsSeconds = secondsSince(conditionsStart);
+
+  EcosystemSettings settings{scenario.seed, scenario.climate.latitude_deg,
+                             scenario.climate.prevailingWindFrom_deg, scenario.simulation};
+  Ecosystem ecosystem(terrain, std::move(species), settings);
+  std::vector<StatsRow> stats;
+  createFolder(run.mapsFolder());
+  createFolder(run.treesFolder());
+  if (checkpoint) {
+    checkState(checkpoint->state, ecosystem, run.checkpoint());
+    ecosystem.restore(std::move(checkpoint->state));
+    stats = std::move(checkpoint->stats);
+  } else {
+    // A fresh run replaces whatever an earlier run left in the folder.
+    for (const auto& entry : std::filesystem::directory_iterator(run.treesFolder()))
+      if (entry.path().extension() == ".csv") std::filesystem::remove(entry.path());
+    std::filesystem::remove(run.checkpoint());
+    writeConditionOutputs(fields, report, scenario, summary.folder);
+    for (const EcosystemSpecies& s : ecosystem.species())
+      writeFieldMap(run.mapsFolder(), "suitability_" + s.species.name, "0-1", s.suitability,
+                    terrain.grid);
+  }
+  summary.lastYear = ecosystem.year();
+  summary.meanSite = meanSiteOf(fields);
+  summary.counts = countsOf(ecosystem, fields);
+  writeRunJson(run, runRecord(scenario, options, fingerprint, summary, "running"));
+
+  const auto start = Clock::now();
+  const int firstYear = ecosystem.year() + 1;
+  while (ecosystem.year() < summary.targetYears) {
+    summary.plantYears += static_cast<double>(ecosystem.plants().size());
+    ecosystem.step();
+    const int year = ecosystem.year();
+    std::vector<StatsRow> rows = statsOfYear(ecosystem);
+    stats.insert(stats.end(), rows.begin(), rows.end());
+    writeStatsCsv(run.stats(), stats, ecosystem.species());
+    if (year % scenario.output.snapshotEveryYears == 0 || year == summary.targetYears)
+      writeTreesCsv(run.snapshot(year), ecosystem);
+    writeCheckpoint(run.checkpoint(),
+                    {fingerprint, options.programVersion, ecosystem.state(), stats});
+    summary.lastYear = year;
+    if (options.progress)
+      options.progress(
+          {year, summary.targetYears, firstYear, ecosystem.plants().size(), secondsSince(start)});
+    if (options.stop && options.stop->load() && year < summary.targetYears) {
+      summary.interrupted = true;
+      break;
+    }
+  }
+  summary.simulationSeconds = secondsSince(start);
+  summary.counts = countsOf(ecosystem, fields);
+  if (!summary.interrupted)
+    writeFieldMap(run.mapsFolder(), "canopy_height", "m", canopyHeight(ecosystem),
+                  terrain.grid);
+  writeRunJson(run, runRecord(scenario, options, fingerprint, summary,
+                              summary.interrupted ? "interrupted" : "complete"));
+  return summary;
+}
+
+}  // namespace eco

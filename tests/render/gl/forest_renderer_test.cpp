@@ -1,0 +1,260 @@
+#include "render/gl/forest_renderer.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/gtc/packing.hpp>
+
+#include "render/gl/scene_renderer.hpp"
+#include "gl_support.hpp"
+#include "render/gl/frame_uniforms.hpp"
+#include "render/gl/shader.hpp"
+#include "render/scene/impostor.hpp"
+#include "render_support.hpp"
+
+namespace eco {
+namespace {
+
+// A row of mature maples northward from the camera, one every 20 m, and one behind it.
+Forest rowOfTrees(const TreeLibrary& library, int count) {
+  Forest forest;
+  const int type = library.typeIndex(1, 0, 1);
+  const float height = library.types()[type].height_m;
+  for (int i = 0; i < count; ++i)
+    forest.add(library, type, worldFromMap(160, 26 + 20 * i, 100), height, 0.0f, 1.0f, i);
+  forest.add(library, type, worldFromMap(160, 0, 100), height, 0.0f, 1.0f, 99);
+  return forest;
+}
+
+TEST(ForestRenderer, CullsTreesOutsideTheViewAndCoarsensWithDistance) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(65, 10.0);
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  const Forest forest = rowOfTrees(library, 30);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);  // looking north along the row
+  const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, {});
+  EXPECT_EQ(stats.culled, 1u);  // the tree behind
+  std::size_t drawn = 0;
+  for (std::size_t n : stats.instances) drawn += n;
+  EXPECT_GE(drawn, 30u);  // each tree at least once; cross-fading ones twice
+  EXPECT_GT(stats.instances[0], 0u);
+  EXPECT_GT(stats.instances[kLevelImpostor], 0u);
+  EXPECT_LT(stats.triangles, stats.lod0Triangles);
+
+  LodSettings allLod0;
+  allLod0.forcedLevel = 0;
+  const ForestStats lod0 = renderer.prepare(forest, camera, 640, 360, allLod0, {});
+  EXPECT_EQ(lod0.instances[0], 30u);
+  EXPECT_EQ(lod0.triangles, lod0.lod0Triangles);
+  EXPECT_EQ(lod0.triangles, 30u * library.types()[forest.type[0]].meshes.lods[0].triangleCount());
+}
+
+TEST(ForestRenderer, OnlyMeshTreesInTheShadowBoxCastShadows) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  const Forest forest = rowOfTrees(library, 30);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);
+  const ShadowBox box{worldFromMap(160, 60, 100), 50.0f};
+  const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, box);
+  EXPECT_GT(stats.shadowCasters, 0u);
+  EXPECT_LE(stats.shadowCasters, 6u);  // trees within 50 m (plus crown) of north 60
+}
+
+TEST(ForestRenderer, BlendingTreesDrawBothTypesAndAbsentTreesNothing) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  Forest forest = rowOfTrees(library, 3);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);
+  LodSettings lod;
+  lod.forcedLevel = 1;
+  const auto drawn = [&] {
+    const ForestStats stats = renderer.prepare(forest, camera, 640, 360, lod, {});
+    return stats.instances[1];
+  };
+  EXPECT_EQ(drawn(), 3u);
+  forest.blendType[0] = library.typeIndex(1, 0, 0);
+  forest.blendWeight[0] = 0.4f;
+  EXPECT_EQ(drawn(), 4u);  // the first tree as both age classes
+  forest.presence[1] = 0.0f;
+  EXPECT_EQ(drawn(), 3u);  // the second not at all
+}
+
+// A tree at presence p keeps about p of its pixels (dithered), whichever level draws it.
+TEST(ForestRenderer, PresenceKeepsThatShareOfTheTreesPixels) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer scene(terrain, 46.0, &library);
+  Forest forest;
+  const int type = library.typeIndex(1, 0, 1);
+  forest.add(library, type, worldFromMap(160, 160, 100), library.types()[type].height_m, 0.0f, 1.0f,
+             1);
+  Camera camera;
+  camera.position = worldFromMap(160, 140, 100 + 0.5 * library.types()[type].height_m);
+  RenderOptions options;
+  options.shadows = false;
+  const RenderTarget target = RenderTarget::create(96, 96);
+  auto treePixels = [&](float presence) {
+    Forest empty;
+    scene.render(&empty, camera, options, target);
+    const Image background = readPixels(96, 96);
+    forest.presence[0] = presence;
+    scene.render(&forest, camera, options, target);
+    return test::compareImages(readPixels(96, 96), background).differingShare;
+  };
+  const double full = treePixels(1.0f);
+  ASSERT_GT(full, 0.05);
+  EXPECT_NEAR(treePixels(0.5f) / full, 0.5, 0.1);
+  EXPECT_EQ(treePixels(0.0f), 0.0);
+}
+
+TEST(ForestRenderer, VariantsShareTheImpostorOfTheirSpeciesAndAgeClass) {
+  test::useHeadlessGl();
+  const TreeLibrary library({test::namedLibrarySpecies("shrub")},
+                            LibrarySettings{.variants = 3, .ageClasses = {0.3, 1.0}});
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  for (int v = 0; v < 3; ++v)
+    for (int a = 0; a < 2; ++a)
+      EXPECT_EQ(renderer.impostorSource(library.typeIndex(0, v, a)), library.typeIndex(0, 0, a));
+}
+
+TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
+  TreeVertex v{{1.25f, 20.5f, -3.0f}, glm::normalize(glm::vec3(0.3f, 0.9f, -0.2f)),
+               {0.5f, 12.75f},        {0.01f, -0.2f, 0.3f},
+               {1.5f, 0.0f, -0.75f},  {0.002f, 0.0f, 0.0f},
+               {0.0f, 0.0f, 0.6f}};
+  const PackedTreeVertex p = packVertex(v);
+  EXPECT_EQ(p.position, v.position);
+  EXPECT_EQ(p.uv, v.uv);
+  const glm::vec4 normal = glm::unpackSnorm3x10_1x2(p.normal);
+  EXPECT_LT(glm::distance(glm::vec3(normal), v.normal), 2e-3f);
+  EXPECT_NEAR(glm::unpackHalf1x16(p.wind[1]), -0.2f, 1e-4f);
+  EXPECT_NEAR(glm::unpackHalf1x16(p.wind[3]), 1.5f, 1e-3f);
+  EXPECT_NEAR(glm::unpackHalf1x16(p.wind[11]), 0.6f, 1e-3f);
+}
+
+// At its switching size the impostor stands in for the meshes: the mature maple rendered at
+// 60 pixels high as LOD0 and as its impostor, compared as a whole, since single leaves fall
+// on different pixels. Tolerances: the two cover the same number of pixels to within 20 %
+// (leaf cards flicker in and out at this size), and their mean colours over the tree differ
+// by less than 20 of 255 (RMS over the channels; the impostor shows LOD1's clustered leaves
+// from up to 11 degrees off, out of 64-pixel tiles).
+TEST(Impostor, MatchesTheMeshAtTheSwitchingDistance) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer renderer(terrain, 46.0, &library);
+  const int type = library.typeIndex(1, 0, 1);
+  const float height = library.types()[type].height_m;
+  Forest forest;
+  forest.add(library, type, worldFromMap(160, 160, 100), height, 0.0f, 1.0f, 1);
+  Camera camera;
+  RenderOptions options;
+  options.shadows = false;
+  const int size = 128;
+  const float distance = height * camera.pixelsPerRadian(size) / LodSettings{}.switchPixels[2];
+  camera.position = worldFromMap(160, 160 - distance, 100 + 0.5 * height);
+  const RenderTarget target = RenderTarget::create(size, size);
+  Forest empty;
+  renderer.render(&empty, camera, options, target);
+  const Image background = readPixels(size, size);
+  options.lod.forcedLevel = 0;
+  renderer.render(&forest, camera, options, target);
+  const Image mesh = readPixels(size, size);
+  options.lod.forcedLevel = kLevelImpostor;
+  renderer.render(&forest, camera, options, target);
+  const Image impostor = readPixels(size, size);
+
+  // The tree's pixels: where the image differs from the empty scene.
+  auto treePixels = [&](const Image& image, glm::dvec3& meanColor) {
+    std::size_t count = 0;
+    meanColor = glm::dvec3(0.0);
+    for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
+      bool differs = false;
+      for (int c = 0; c < 3; ++c)
+        differs = differs || std::abs(int(image.rgba[p + c]) - int(background.rgba[p + c])) > 8;
+      if (!differs) continue;
+      ++count;
+      meanColor += glm::dvec3(image.rgba[p], image.rgba[p + 1], image.rgba[p + 2]);
+    }
+    meanColor /= std::max<double>(count, 1.0);
+    return count;
+  };
+  glm::dvec3 meshColor, impostorColor;
+  const std::size_t meshPixels = treePixels(mesh, meshColor);
+  const std::size_t impostorPixels = treePixels(impostor, impostorColor);
+  ASSERT_GT(meshPixels, 300u);  // the tree is there and about 60 pixels high
+  const double coverageDifference =
+      std::abs(double(meshPixels) - double(impostorPixels)) / double(meshPixels);
+  EXPECT_LT(coverageDifference, 0.20) << meshPixels << " vs " << impostorPixels;
+  const double colorDifference = glm::length(meshColor - impostorColor) / std::sqrt(3.0);
+  EXPECT_LT(colorDifference, 20.0)
+      << "mesh " << meshColor.r << "," << meshColor.g << "," << meshColor.b << " impostor "
+      << impostorColor.r << "," << impostorColor.g << "," << impostorColor.b;
+  if (test::updatingReferences()) {
+    test::writePng("/tmp/impostor_mesh.png", mesh);
+    test::writePng("/tmp/impostor_impostor.png", impostor);
+  }
+}
+
+// The vertex shader itself, read back with transform feedback: its displaced vertices (the
+// tree frame) against the CPU skeleton's mesh at the same t.
+TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
+  test::useHeadlessGl();
+  const RenderTarget target = RenderTarget::create(16, 16);  // draws need a framebuffer
+  target.bind();
+  const Species maple = test::loadNamedSpecies("maple");
+  const double age = 0.6, t = 2.4;
+  const TreeWind wind{2.0, {0.0, 0.0}};
+  const WindLods lods = buildWindLods(maple, 3, age);
+  const WindMesh& mesh = lods.lods[0];
+  std::vector<PackedTreeVertex> vertices;  // as the renderer uploads them
+  for (const WindPart& part : mesh.parts)
+    for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
+
+  const Program program({{GL_VERTEX_SHADER, "tree.vert"}}, {"FEEDBACK"}, {"fbLocal"});
+  FrameUniformBuffer uniforms;
+  FrameUniforms u;
+  u.camera.w = static_cast<float>(t);
+  u.wind = glm::vec4(0.0f, 0.0f, 2.0f, 0.0f);
+  uniforms.upload(u);
+  const GlName vertexBuffer = makeBuffer(std::span<const PackedTreeVertex>(vertices));
+  // Yaw 0, scale 1, phase 0: the tree frame is the world frame.
+  const InstanceAttributes instance{glm::vec4(0.0f), glm::vec4(1, 1, 0, 0), glm::vec4(1.0f)};
+  const GlName instanceBuffer = makeBuffer(&instance, sizeof(instance));
+  const GlName output = makeBuffer(nullptr, vertices.size() * sizeof(glm::vec3), GL_MAP_READ_BIT);
+  const GlName vao = makeVertexArray();
+  setTreeVertexLayout(vao.id());
+  setInstanceLayout(vao.id());
+  glVertexArrayVertexBuffer(vao.id(), 0, vertexBuffer.id(), 0, sizeof(PackedTreeVertex));
+  glVertexArrayVertexBuffer(vao.id(), 1, instanceBuffer.id(), 0, sizeof(InstanceAttributes));
+
+  program.use();
+  glBindVertexArray(vao.id());
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, output.id());
+  glBeginTransformFeedback(GL_POINTS);
+  glDrawArraysInstanced(GL_POINTS, 0, static_cast<GLsizei>(vertices.size()), 1);
+  glEndTransformFeedback();
+  glDisable(GL_RASTERIZER_DISCARD);
+  std::vector<glm::vec3> shaded(vertices.size());
+  glGetNamedBufferSubData(output.id(), 0, shaded.size() * sizeof(glm::vec3), shaded.data());
+  checkGl("transform feedback");
+
+  const test::Agreement a = test::agreement(mesh, shaded, test::cpuPositions(maple, age, wind, t, 0));
+  EXPECT_GT(a.tipDisplacement, 0.05f);
+  EXPECT_LT(a.tipError, 0.08f * a.tipDisplacement + 0.01f)
+      << "tip moved " << a.tipDisplacement << " m, shader off by " << a.tipError << " m";
+  EXPECT_LT(a.rmsError, 0.1f * a.rmsDisplacement + 0.005f);
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,158 @@
+#include "render/gl/scene_renderer.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "gl_support.hpp"
+#include "render_support.hpp"
+
+namespace eco {
+namespace {
+
+// The reference scene: hilly generated terrain, a small grove of beech and maple of both age
+// classes, a camera at the edge of the grove, the sun of a June morning.
+struct ReferenceScene {
+  Terrain terrain;
+  Forest forest;
+  Camera camera;
+  RenderOptions options;
+};
+
+ReferenceScene referenceScene() {
+  ReferenceScene s;
+  s.terrain = generateMidpoint({33, 0.5, 40.0}, 10.0, 10.0, 200.0, 5);
+  const TreeLibrary& library = test::smallLibrary();
+  for (int i = 0; i < 40; ++i) {
+    const double east = 100 + 13.0 * (i % 8) + 3.0 * (i / 8), north = 120 + 14.0 * (i / 8);
+    const int type = library.typeIndex(i % 2, 0, (i / 3) % 2);
+    const float height = library.types()[type].height_m * (0.8f + 0.05f * (i % 5));
+    s.forest.add(library, type, worldFromMap(east, north, s.terrain.altitudeAt(east, north)),
+                 height, 0.0f, 0.6f + 0.01f * i, static_cast<std::uint64_t>(i));
+  }
+  s.camera.position = worldFromMap(140, 95, s.terrain.altitudeAt(140, 95) + 4.0);
+  s.camera.yaw_deg = 10.0f;
+  s.camera.pitch_deg = 12.0f;
+  s.options.sun = {172.0, 9.0};
+  s.options.wind = {270.0, 1.0, 1.0, 0.25, 0.8};
+  return s;
+}
+
+Image renderScene(const ReferenceScene& s, int width, int height) {
+  SceneRenderer renderer(s.terrain, 46.0, &test::smallLibrary());
+  const RenderTarget target = RenderTarget::create(width, height);
+  renderer.render(&s.forest, s.camera, s.options, target);
+  return readPixels(width, height);
+}
+
+// Compared with tests/render/reference/grove.png (ECOFOREST_UPDATE_REFERENCES=1 rewrites it).
+// llvmpipe is deterministic on one machine; across CPUs (vector widths) rounding can move
+// an alpha-tested leaf edge by a pixel. Tolerances: mean absolute difference at most 1.5 of
+// 255 per channel, and no 4x4 block differing by more than 40 on average (a moved leaf edge
+// changes single pixels fully, never a whole block).
+TEST(SceneRenderer, MatchesTheReferenceImage) {
+  test::useHeadlessGl();
+  const Image image = renderScene(referenceScene(), 192, 128);
+  const std::filesystem::path reference = test::referenceFile("grove.png");
+  if (test::updatingReferences()) test::writePng(reference, image);
+  const Image expected = test::readPng(reference);
+  ASSERT_EQ(expected.width, 192) << "missing " << reference;
+  const test::ImageDifference d = test::compareImages(image, expected);
+  EXPECT_LE(d.mean, 1.5);
+  EXPECT_LE(test::maxBlockDifference(image, expected, 4), 40.0);
+  test::writePng(test::freshDirectory("scene") / "grove.png", image);
+}
+
+TEST(SceneRenderer, IsDeterministicWhateverTheThreadCount) {
+  test::useHeadlessGl();
+  const ReferenceScene scene = referenceScene();
+  Image one, two;
+  {
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+    one = renderScene(scene, 160, 96);
+  }
+  two = renderScene(scene, 160, 96);
+  EXPECT_EQ(test::compareImages(one, two).max, 0);
+}
+
+TEST(SceneRenderer, WindTimeMovesTheTreesAndTheSunSetsTheLight) {
+  test::useHeadlessGl();
+  ReferenceScene scene = referenceScene();
+  scene.options.wind = {270.0, 3.0, 3.0, 0.25, 0.8};
+  const Image still = renderScene(scene, 160, 96);
+  scene.options.wind.time += 1.5;
+  const Image later = renderScene(scene, 160, 96);
+  EXPECT_GT(test::compareImages(still, later).differingShare, 0.002);
+  scene.options.sun.solarHour = 0.0;  // midnight
+  const Image night = renderScene(scene, 160, 96);
+  EXPECT_LT(test::meanColor(night).g, 0.5f * test::meanColor(still).g);
+}
+
+TEST(SceneRenderer, TreesCastShadowsOnTheGround) {
+  test::useHeadlessGl();
+  ReferenceScene scene = referenceScene();
+  const Image shadowed = renderScene(scene, 160, 96);
+  scene.options.shadows = false;
+  const Image unshadowed = renderScene(scene, 160, 96);
+  EXPECT_LT(test::meanColor(shadowed).g, test::meanColor(unshadowed).g);
+}
+
+class CollectingSink : public FrameSink {
+ public:
+  void add(const Image& frame) override { frames.push_back(frame); }
+  void finish() override { finished = true; }
+  std::vector<Image> frames;
+  bool finished = false;
+};
+
+// A single maple planted at year 0 grows through three snapshots; its silhouette in a fixed
+// view grows frame after frame (allowing for the dither of age-class blends).
+TEST(SceneRenderer, DrawsATimelapseInWhichOneTreesSilhouetteGrows) {
+  test::useHeadlessGl();
+  const auto dir = test::freshDirectory("timelapse_run");
+  std::filesystem::create_directories(dir / "trees");
+  const char* header =
+      "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n";
+  const std::pair<int, double> sizes[] = {{10, 2.0}, {20, 6.0}, {30, 11.0}};
+  RunFolder run;
+  run.dir = dir;
+  for (auto [year, height] : sizes) {
+    test::writeFile(dir / "trees" / fmt::format("year_{:04d}.csv", year),
+                    std::string(header) + fmt::format("1,maple,160,160,100,{},{},{},0.1,0.9,1\n",
+                                                      year - 2, height, 0.3 * height));
+    run.snapshotYears.push_back(year);
+  }
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer renderer(terrain, 46.0, &test::smallLibrary());
+  TimelapseSettings settings;
+  settings.fromYear = 8.0;  // the tree established in year 8
+  settings.toYear = 30.0;
+  settings.seconds = 1.2;
+  settings.fps = 10;
+  settings.frame = {96, 96};
+  settings.render.shadows = false;
+  settings.camera = [](double) {
+    return lookingAt(worldFromMap(160, 130, 106), worldFromMap(160, 160, 105));
+  };
+  CollectingSink sink;
+  const TimelapseTimings t =
+      renderTimelapse(run, test::smallLibrary(), terrain, frameDrawer(renderer, settings.frame),
+                      settings, sink, {});
+  ASSERT_EQ(t.frames, 12);
+  ASSERT_EQ(sink.frames.size(), 12u);
+  EXPECT_TRUE(sink.finished);
+  Forest empty;
+  const RenderTarget target = RenderTarget::create(96, 96);
+  renderer.render(&empty, settings.camera(0.0), settings.render, target);
+  const Image background = readPixels(96, 96);
+  double previous = 0.0;
+  for (std::size_t f = 0; f < sink.frames.size(); ++f) {
+    const double area = test::compareImages(sink.frames[f], background).differingShare;
+    EXPECT_GE(area, previous * 0.95) << "frame " << f;
+    previous = std::max(previous, area);
+  }
+  EXPECT_GT(previous, 5.0 * test::compareImages(sink.frames[1], background).differingShare);
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,79 @@
+#include "render/gl/terrain_renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "render/gl/scene_renderer.hpp"
+#include "gl_support.hpp"
+#include "render_support.hpp"
+#include "sim/conditions/condition_maps.hpp"
+
+namespace eco {
+namespace {
+
+Image renderFromAbove(SceneRenderer& renderer, int size) {
+  Camera camera;
+  camera.position = worldFromMap(160, 160, 900);
+  camera.pitch_deg = -90.0f;
+  camera.fovY_deg = 30.0f;
+  RenderOptions options;
+  options.sun = {172.0, 12.0};
+  options.fogDensity = 0.0f;
+  const RenderTarget target = RenderTarget::create(size, size);
+  renderer.render(nullptr, camera, options, target);
+  return readPixels(size, size);
+}
+
+TEST(TerrainRenderer, IsOneTrianglePairPerGridSquare) {
+  test::useHeadlessGl();
+  TerrainRenderer terrain(test::flatTerrain(33, 10.0));
+  EXPECT_EQ(terrain.triangleCount(), 32u * 32u * 2u);
+}
+
+TEST(TerrainRenderer, DrawsOnlyTheChunksInTheFrustum) {
+  test::useHeadlessGl();
+  TerrainRenderer terrain(test::flatTerrain(129, 10.0));  // 4 x 4 chunks of 32 squares
+  Camera camera;
+  camera.position = worldFromMap(640, 640, 5000);
+  camera.pitch_deg = -90.0f;
+  const RenderTarget target = RenderTarget::create(16, 16);
+  target.bind();
+  EXPECT_EQ(terrain.draw(Frustum::fromMatrix(camera.projection(1.0f) * camera.view()), false),
+            terrain.triangleCount());
+  camera.pitch_deg = 90.0f;  // looking up at the sky
+  EXPECT_EQ(terrain.draw(Frustum::fromMatrix(camera.projection(1.0f) * camera.view()), false), 0u);
+  // Low over the south-west corner looking south-west: only the chunks there.
+  camera.position = worldFromMap(100, 100, 120);
+  camera.yaw_deg = 225.0f;
+  camera.pitch_deg = -30.0f;
+  camera.fovY_deg = 30.0f;
+  const std::size_t corner =
+      terrain.draw(Frustum::fromMatrix(camera.projection(1.0f) * camera.view()), false);
+  EXPECT_GT(corner, 0u);
+  EXPECT_LE(corner, terrain.triangleCount() / 4);
+}
+
+TEST(TerrainRenderer, AnOverlayColoursTheGroundByTheMapsRamp) {
+  test::useHeadlessGl();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer renderer(terrain, 46.0, nullptr);
+  const Image plain = renderFromAbove(renderer, 64);
+  // A field growing from west to east.
+  Field field(terrain.grid.cellCount());
+  for (int y = 0; y < 33; ++y)
+    for (int x = 0; x < 33; ++x) field[terrain.grid.index(x, y)] = static_cast<float>(x);
+  renderer.terrain().setOverlay("moisture", field);
+  const Image overlay = renderFromAbove(renderer, 64);
+  EXPECT_GT(test::compareImages(plain, overlay).mean, 10.0);
+  // The west edge takes the ramp's low end, the east edge its high end.
+  auto distance = [&](glm::vec4 c, double t) {
+    return glm::length(glm::normalize(glm::vec3(c)) - glm::normalize(rampColor("moisture", t)));
+  };
+  const glm::vec4 west = overlay.get(12, 32), east = overlay.get(51, 32);
+  EXPECT_LT(distance(west, 0.0), distance(east, 0.0));
+  EXPECT_LT(distance(east, 1.0), distance(west, 1.0));
+  renderer.terrain().clearOverlay();
+  EXPECT_EQ(test::compareImages(plain, renderFromAbove(renderer, 64)).max, 0);
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,67 @@
+#include "render/scene/culling.hpp"
+#include "core/angles.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace eco {
+namespace {
+
+TEST(Frustum, KeepsSpheresInsideOrTouchingAndDropsThoseOutside) {
+  // Looking down -z from the origin, 90 degrees, near 1, far 100.
+  const glm::mat4 m = glm::perspective(radians(90.0f), 1.0f, 1.0f, 100.0f);
+  const Frustum f = Frustum::fromMatrix(m);
+  EXPECT_TRUE(f.intersectsSphere({0, 0, -10}, 0.5f));
+  EXPECT_FALSE(f.intersectsSphere({0, 0, 10}, 0.5f));     // behind
+  EXPECT_FALSE(f.intersectsSphere({0, 0, -150}, 10.0f));  // beyond far
+  EXPECT_FALSE(f.intersectsSphere({-20, 0, -10}, 5.0f));  // left of the 45-degree plane
+  // The left plane is x = z; a sphere centred 2 m outside it (perpendicular 2/sqrt(2) m)
+  // touches it from radius 1.42 on.
+  EXPECT_FALSE(f.intersectsSphere({-12, 0, -10}, 1.40f));
+  EXPECT_TRUE(f.intersectsSphere({-12, 0, -10}, 1.45f));
+}
+
+TEST(LodChoice, FollowsProjectedSizeThroughEveryLevel) {
+  LodSettings s;
+  // Halfway between switches, in no fade band.
+  EXPECT_EQ(chooseLevel(2.0f * s.switchPixels[0], s).level, 0);
+  EXPECT_EQ(chooseLevel(0.5f * (s.switchPixels[0] + s.switchPixels[1]), s).level, 1);
+  EXPECT_EQ(chooseLevel(0.5f * (s.switchPixels[1] + s.switchPixels[2]), s).level, 2);
+  EXPECT_EQ(chooseLevel(0.5f * s.switchPixels[2], s).level, kLevelImpostor);
+  EXPECT_EQ(chooseLevel(0.5f, s).level, -1);  // under a pixel: not drawn
+  s.impostors = false;
+  EXPECT_EQ(chooseLevel(20.0f, s).level, 2);
+  EXPECT_EQ(chooseLevel(s.switchPixels[2], s).fadeTo, -1);
+  s.forcedLevel = 0;
+  EXPECT_EQ(chooseLevel(3.0f, s).level, 0);
+}
+
+TEST(LodChoice, CrossFadesContinuouslyAcrossEachSwitch) {
+  const LodSettings s;
+  for (int level = 0; level < 3; ++level) {
+    const float at = s.switchPixels[level];
+    const LodChoice middle = chooseLevel(at, s);
+    EXPECT_EQ(middle.level, level);
+    EXPECT_EQ(middle.fadeTo, level + 1);
+    EXPECT_NEAR(middle.fade, 0.5f, 1e-5f);
+    // The fade share grows as the tree shrinks, from 0 at the band's top to 1 at its bottom.
+    float previous = -1.0f;
+    for (float px = at * 1.149f; px > at * 0.851f; px -= at * 0.01f) {
+      const LodChoice c = chooseLevel(px, s);
+      ASSERT_EQ(c.fadeTo, level + 1);
+      EXPECT_GT(c.fade, previous);
+      previous = c.fade;
+    }
+    EXPECT_GT(previous, 0.95f);
+    EXPECT_EQ(chooseLevel(at * 1.16f, s).fadeTo, -1);
+    EXPECT_EQ(chooseLevel(at * 0.84f, s).level, level + 1);
+  }
+}
+
+TEST(LodChoice, ProjectedSizeIsInverseInDistance) {
+  EXPECT_FLOAT_EQ(projectedPixels(20.0f, 100.0f, 500.0f), 100.0f);
+  EXPECT_FLOAT_EQ(projectedPixels(20.0f, 200.0f, 500.0f), 50.0f);
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,94 @@
+#include "render/scene/forest.hpp"
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "render/scene/camera.hpp"
+#include "render_support.hpp"
+
+namespace eco {
+namespace {
+
+TEST(Forest, ASnapshotPlantStandsAtItsPlaceAtItsHeight) {
+  const TreeLibrary& library = test::smallLibrary();
+  TreeSnapshot snapshot;
+  snapshot.speciesNames = {"maple", "beech"};
+  snapshot.trees.push_back({.id = 1,
+                            .species = 0,
+                            .east_m = 10,
+                            .north_m = 20,
+                            .ground_m = 300,
+                            .age_years = 30,
+                            .height_m = 12.0f,
+                            .crownRadius_m = 3.0f,
+                            .vigor = 0.8f,
+                            .variantSeed = 5});
+  snapshot.trees.push_back({.id = 2,
+                            .species = 1,
+                            .east_m = 50,
+                            .north_m = 5,
+                            .ground_m = 310,
+                            .age_years = 3,
+                            .height_m = 0.3f,
+                            .vigor = 1.0f,
+                            .variantSeed = 9});
+  const Forest forest = forestFromSnapshot(snapshot, library, "run");
+  ASSERT_EQ(forest.size(), 2u);
+  EXPECT_EQ(forest.position[0], worldFromMap(10, 20, 300));
+  EXPECT_EQ(library.types()[forest.type[0]].species, 1);  // maple is the library's second
+  EXPECT_EQ(library.types()[forest.type[1]].species, 0);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const float height = forest.scaleY[i] * library.types()[forest.type[i]].height_m;
+    EXPECT_NEAR(height, snapshot.trees[i].height_m, 1e-4f);
+    EXPECT_GE(forest.scaleXZ[i], 0.7f * forest.scaleY[i] - 1e-6f);
+    EXPECT_LE(forest.scaleXZ[i], 1.4f * forest.scaleY[i] + 1e-6f);
+  }
+}
+
+TEST(Forest, AppendCopiesEveryArrayOfATree) {
+  const TreeLibrary& library = test::smallLibrary();
+  Forest all;
+  for (int i = 0; i < 3; ++i)
+    all.add(library, library.typeIndex(i % 2, 0, 1), worldFromMap(10.0 * i, 5, 100), 5.0f + i, 0.0f,
+            0.5f, static_cast<std::uint64_t>(i));
+  all.presence[2] = 0.3f;
+  all.blendType[2] = library.typeIndex(0, 0, 0);
+  all.blendWeight[2] = 0.6f;
+  Forest some;
+  some.append(all, 2);
+  ASSERT_EQ(some.size(), 1u);
+  EXPECT_EQ(some.type[0], all.type[2]);
+  EXPECT_EQ(some.position[0], all.position[2]);
+  EXPECT_EQ(some.yaw[0], all.yaw[2]);
+  EXPECT_EQ(some.scaleXZ[0], all.scaleXZ[2]);
+  EXPECT_EQ(some.scaleY[0], all.scaleY[2]);
+  EXPECT_EQ(some.tint[0], all.tint[2]);
+  EXPECT_EQ(some.phase[0], all.phase[2]);
+  EXPECT_EQ(some.presence[0], 0.3f);
+  EXPECT_EQ(some.blendType[0], all.blendType[2]);
+  EXPECT_EQ(some.blendWeight[0], 0.6f);
+}
+
+TEST(Forest, AnUnknownSpeciesIsAnInputError) {
+  TreeSnapshot snapshot;
+  snapshot.speciesNames = {"baobab"};
+  snapshot.trees.push_back({.species = 0, .height_m = 3.0f});
+  EXPECT_THROW(forestFromSnapshot(snapshot, test::smallLibrary(), "run"), InputError);
+}
+
+TEST(Forest, TheDemoPlantingIsDeterministicAndOnTheGround) {
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  const Forest a = demoForest(terrain, test::smallLibrary(), 200, 4);
+  const Forest b = demoForest(terrain, test::smallLibrary(), 200, 4);
+  ASSERT_EQ(a.size(), 200u);
+  EXPECT_EQ(a.position, b.position);
+  EXPECT_EQ(a.type, b.type);
+  for (const glm::vec3& p : a.position) {
+    EXPECT_FLOAT_EQ(p.y, 100.0f);
+    EXPECT_GE(p.x, 0.0f);
+    EXPECT_LE(p.x, 320.0f);
+  }
+}
+
+}  // namespace
+}  // namespace eco

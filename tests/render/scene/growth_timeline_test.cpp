@@ -1,0 +1,119 @@
+#include "render/scene/growth_timeline.hpp"
+
+#include <gtest/gtest.h>
+
+#include "render_support.hpp"
+
+namespace eco {
+namespace {
+
+// Year 10: trees 1 (grows) and 2 (dies). Year 20: tree 1 taller, tree 3 established in year 16.
+struct Pair {
+  TreeSnapshot before, after;
+};
+
+Pair pair() {
+  Pair p;
+  p.before.year = 10;
+  p.before.speciesNames = {"maple"};
+  p.before.trees = {{.id = 1,
+                     .species = 0,
+                     .east_m = 10,
+                     .north_m = 10,
+                     .ground_m = 100,
+                     .age_years = 10,
+                     .height_m = 4.0f,
+                     .crownRadius_m = 1.0f,
+                     .vigor = 0.6f,
+                     .variantSeed = 1},
+                    {.id = 2,
+                     .species = 0,
+                     .east_m = 30,
+                     .north_m = 10,
+                     .ground_m = 100,
+                     .age_years = 30,
+                     .height_m = 9.0f,
+                     .crownRadius_m = 2.0f,
+                     .vigor = 0.2f,
+                     .variantSeed = 2}};
+  p.after.year = 20;
+  p.after.speciesNames = {"beech", "maple"};
+  p.after.trees = {{.id = 3,
+                    .species = 0,
+                    .east_m = 50,
+                    .north_m = 10,
+                    .ground_m = 100,
+                    .age_years = 4,
+                    .height_m = 1.0f,
+                    .crownRadius_m = 0.3f,
+                    .vigor = 1.0f,
+                    .variantSeed = 3},
+                   {.id = 1,
+                    .species = 1,
+                    .east_m = 10,
+                    .north_m = 10,
+                    .ground_m = 100,
+                    .age_years = 20,
+                    .height_m = 8.0f,
+                    .crownRadius_m = 2.0f,
+                    .vigor = 0.8f,
+                    .variantSeed = 1}};
+  return p;
+}
+
+const TreeLibrary& library() {
+  return test::smallLibrary();
+}
+
+float heightOf(const Forest& f, std::size_t i) {
+  return f.scaleY[i] * library().types()[f.type[i]].height_m;
+}
+
+TEST(GrowthTimeline, MatchesTheSnapshotsAtTheirYears) {
+  const Pair p = pair();
+  const Forest start = forestBetween(p.before, p.after, 10.0, library(), "run");
+  ASSERT_EQ(start.size(), 2u);  // tree 3 has not established yet
+  EXPECT_NEAR(heightOf(start, 0), 4.0f, 1e-4f);
+  EXPECT_NEAR(heightOf(start, 1), 9.0f, 1e-4f);
+  EXPECT_FLOAT_EQ(start.presence[1], 1.0f);
+  const Forest end = forestBetween(p.before, p.after, 20.0, library(), "run");
+  ASSERT_EQ(end.size(), 2u);  // tree 2 is gone, tree 3 is there
+  EXPECT_NEAR(heightOf(end, 0), 8.0f, 1e-4f);
+  EXPECT_NEAR(heightOf(end, 1), 1.0f, 1e-4f);
+  EXPECT_FLOAT_EQ(end.presence[1], 1.0f);
+}
+
+TEST(GrowthTimeline, SurvivorsGrowContinuouslyTheDeadFadeAndNewTreesAppearInTheirYear) {
+  const Pair p = pair();
+  float previousHeight = 0.0f, previousPresence = 2.0f;
+  for (double year = 10.0; year < 20.0; year += 0.25) {
+    const Forest f = forestBetween(p.before, p.after, year, library(), "run");
+    EXPECT_GT(heightOf(f, 0), previousHeight) << year;  // tree 1 grows every step
+    previousHeight = heightOf(f, 0);
+    EXPECT_LT(f.presence[1], previousPresence) << year;  // tree 2 fades every step
+    EXPECT_NEAR(f.presence[1], 1.0 - (year - 10.0) / 10.0, 1e-5);
+    previousPresence = f.presence[1];
+    EXPECT_EQ(f.size(), year < 16.0 ? 2u : 3u) << year;  // tree 3 established in year 16
+  }
+  const Forest appearing = forestBetween(p.before, p.after, 16.5, library(), "run");
+  EXPECT_NEAR(appearing.presence[2], 0.5f, 1e-5f);
+  EXPECT_LT(heightOf(appearing, 2), 0.5f);  // a seedling still
+}
+
+TEST(GrowthTimeline, TreesBetweenAgeClassesBlendTheTwo) {
+  const Pair p = pair();
+  const TreeLibrary& lib = library();
+  for (double year = 10.0; year <= 20.0; year += 1.0) {
+    const Forest f = forestBetween(p.before, p.after, year, lib, "run");
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      EXPECT_GE(f.blendWeight[i], 0.0f);
+      EXPECT_LE(f.blendWeight[i], 1.0f);
+      if (f.blendType[i] >= 0) {
+        EXPECT_EQ(lib.types()[f.blendType[i]].ageClass, lib.types()[f.type[i]].ageClass + 1);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,41 @@
+#include "render/scene/impostor.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "render_support.hpp"
+
+namespace eco {
+namespace {
+
+TEST(Impostor, TheHemiOctahedralMapRoundTrips) {
+  for (float azimuth = 0.0f; azimuth < 6.28f; azimuth += 0.37f)
+    for (float elevation = 0.0f; elevation <= 1.5708f; elevation += 0.19f) {
+      const glm::vec3 d(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
+                        std::cos(elevation) * std::sin(azimuth));
+      const glm::vec2 uv = hemiOctEncode(d);
+      EXPECT_GE(uv.x, -1e-6f);
+      EXPECT_LE(uv.x, 1.0f + 1e-6f);
+      EXPECT_LT(glm::distance(hemiOctDecode(uv), d), 1e-5f);
+    }
+}
+
+TEST(Impostor, EachFrameIsChosenFromItsOwnDirectionAndItsAxesAreOrthonormal) {
+  const int frames = 8;
+  for (int row = 0; row < frames; ++row)
+    for (int column = 0; column < frames; ++column) {
+      const glm::vec3 f = frameDirection({column, row}, frames);
+      EXPECT_EQ(impostorFrame(f, frames), glm::ivec2(column, row));
+      glm::vec3 right, up;
+      frameAxes(f, right, up);
+      EXPECT_NEAR(glm::dot(right, f), 0.0f, 1e-5f);
+      EXPECT_NEAR(glm::dot(up, f), 0.0f, 1e-5f);
+      EXPECT_NEAR(glm::dot(right, up), 0.0f, 1e-5f);
+      EXPECT_NEAR(glm::length(glm::cross(right, up) - f), 0.0f, 1e-5f);
+    }
+  // Seen from below the horizon, a tree shows its horizon frame.
+  EXPECT_EQ(impostorFrame({1, -0.5f, 0}, frames), impostorFrame({1, 0, 0}, frames));
+}
+
+}  // namespace
+}  // namespace eco

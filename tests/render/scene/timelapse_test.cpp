@@ -1,0 +1,128 @@
+#include "render/scene/timelapse.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <glm/trigonometric.hpp>
+
+#include "render_support.hpp"
+#include "core/angles.hpp"
+
+namespace eco {
+namespace {
+
+class CollectingSink : public FrameSink {
+ public:
+  void add(const Image& frame) override { frames.push_back(frame); }
+  void finish() override { finished = true; }
+  std::vector<Image> frames;
+  bool finished = false;
+};
+
+TEST(Timelapse, FramesSpanTheYearsEvenly) {
+  TimelapseSettings s;
+  s.fromYear = 0;
+  s.toYear = 60;
+  s.seconds = 2.0;
+  s.fps = 10;
+  EXPECT_EQ(s.frameCount(), 20);
+  EXPECT_DOUBLE_EQ(s.yearOfFrame(0), 0.0);
+  EXPECT_DOUBLE_EQ(s.yearOfFrame(19), 60.0);
+  EXPECT_NEAR(s.yearOfFrame(10), 60.0 * 10 / 19, 1e-12);
+  s.kind = TimelapseKind::Wind;
+  s.fromYear = s.toYear = 30;
+  EXPECT_DOUBLE_EQ(s.yearOfFrame(7), 30.0);
+}
+
+TEST(Timelapse, TheScaleBarMeasuresTheGroundAtTheCentre) {
+  const Terrain terrain = test::flatTerrain(65, 10.0);
+  Camera camera;
+  camera.position = worldFromMap(320, 320, 600);  // 500 m above the ground
+  camera.pitch_deg = -90.0f;
+  EXPECT_NEAR(metresPerPixelAtCentre(camera, terrain, 500),
+              2.0 * 500.0 * std::tan(radians(25.0)) / 500.0, 0.02);
+  Image frame(200, 100);
+  const Image blank = frame;
+  drawOverlay(frame, 12.0, 1.0);
+  EXPECT_GT(test::compareImages(frame, blank).differingShare, 0.01);
+}
+
+// Two snapshots of a one-tree run (the tree appears in year 15), for frames without OpenGL.
+RunFolder oneTreeRun(const std::string& name) {
+  const auto dir = test::freshDirectory(name);
+  std::filesystem::create_directories(dir / "trees");
+  RunFolder run;
+  run.dir = dir;
+  for (auto [year, height] : {std::pair{10, 0.0}, {20, 4.0}}) {
+    std::string rows = "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n";
+    if (height > 0.0) rows += fmt::format("1,maple,160,160,100,5,{},1.0,0.05,0.9,1\n", height);
+    test::writeFile(RunPaths{dir}.snapshot(year), rows);
+    run.snapshotYears.push_back(year);
+  }
+  return run;
+}
+
+// The loop without a back end: what each frame is asked to draw.
+struct Recorded {
+  std::vector<std::size_t> trees;
+  std::vector<double> windTimes;
+  std::vector<glm::vec3> eyes;
+};
+
+TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
+  const RunFolder run = oneTreeRun("timelapse_growth");
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  TimelapseSettings settings;
+  settings.toYear = 20.0;
+  settings.seconds = 2.1;
+  settings.fps = 10;  // 21 frames: years 0, 1, ..., 20
+  settings.frame = {32, 24};
+  settings.camera = [](double u) {
+    return lookingAt(worldFromMap(100 + 100 * u, 10, 300), worldFromMap(160, 160, 100));
+  };
+  Recorded seen;
+  const DrawFrame draw = [&](const Forest& forest, const Camera& camera, const RenderOptions& o) {
+    seen.trees.push_back(forest.size());
+    seen.windTimes.push_back(o.wind.time);
+    seen.eyes.push_back(camera.position);
+    return Image(32, 24);
+  };
+  CollectingSink sink;
+  const TimelapseTimings t =
+      renderTimelapse(run, test::smallLibrary(), terrain, draw, settings, sink, {});
+  ASSERT_EQ(t.frames, 21);
+  EXPECT_EQ(sink.frames.size(), 21u);
+  EXPECT_TRUE(sink.finished);
+  // Before the tree established (year 15: age 5 in year 20) nothing is drawn; from then on
+  // the one tree grows.
+  for (int frame = 0; frame < 21; ++frame)
+    EXPECT_EQ(seen.trees[frame], frame < 15 ? 0u : 1u) << "year " << frame;
+  EXPECT_EQ(seen.windTimes.front(), seen.windTimes.back());  // growth holds the wind's time
+  EXPECT_NEAR(seen.eyes.back().x - seen.eyes.front().x, 100.0f, 1e-3f);  // along the path
+}
+
+TEST(Timelapse, WindHoldsTheYearAndAdvancesTheWindsTime) {
+  const RunFolder run = oneTreeRun("timelapse_wind");
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  TimelapseSettings settings;
+  settings.kind = TimelapseKind::Wind;
+  settings.fromYear = settings.toYear = 20.0;
+  settings.seconds = 1.0;
+  settings.fps = 8;
+  settings.camera = [](double) { return Camera{}; };
+  Recorded seen;
+  const DrawFrame draw = [&](const Forest& forest, const Camera&, const RenderOptions& o) {
+    seen.trees.push_back(forest.size());
+    seen.windTimes.push_back(o.wind.time);
+    return Image(16, 16);
+  };
+  CollectingSink sink;
+  renderTimelapse(run, test::smallLibrary(), terrain, draw, settings, sink, {});
+  ASSERT_EQ(seen.windTimes.size(), 8u);
+  for (std::size_t f = 0; f < 8; ++f) {
+    EXPECT_EQ(seen.trees[f], 1u);
+    EXPECT_NEAR(seen.windTimes[f], f * settings.windRadiansPerSecond / settings.fps, 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,67 @@
+#include "render/scene/tree_library.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "render_support.hpp"
+
+namespace eco {
+namespace {
+
+TEST(TreeLibrary, HoldsEverySpeciesVariantAndAgeClassInOrder) {
+  const TreeLibrary& library = test::smallLibrary();
+  ASSERT_EQ(library.types().size(), 2u * 1u * 2u);
+  for (int s = 0; s < 2; ++s)
+    for (int a = 0; a < 2; ++a) {
+      const TreeType& t = library.types()[library.typeIndex(s, 0, a)];
+      EXPECT_EQ(t.species, s);
+      EXPECT_EQ(t.ageClass, a);
+      EXPECT_GT(t.meshes.lods[0].triangleCount(), t.meshes.lods[1].triangleCount());
+      EXPECT_GT(t.meshes.lods[1].triangleCount(), t.meshes.lods[2].triangleCount());
+    }
+  // Older classes are taller.
+  EXPECT_LT(library.types()[library.typeIndex(0, 0, 0)].height_m,
+            library.types()[library.typeIndex(0, 0, 1)].height_m);
+}
+
+TEST(TreeLibrary, BoundsHoldEveryVertexOfEveryLevel) {
+  for (const TreeType& t : test::smallLibrary().types())
+    for (const WindMesh& lod : t.meshes.lods)
+      for (const WindPart& part : lod.parts)
+        for (const TreeVertex& v : part.vertices)
+          ASSERT_LE(glm::distance(v.position, glm::vec3(t.bounds)), t.bounds.w * 1.0001f);
+}
+
+TEST(TreeLibrary, PlantsTakeTheAgeClassNearestInRelativeHeight) {
+  const TreeLibrary& library = test::smallLibrary();
+  const float young = library.types()[library.typeIndex(0, 0, 0)].height_m;
+  const float mature = library.types()[library.typeIndex(0, 0, 1)].height_m;
+  const float maxHeight = 40.0f;
+  // A plant at the young class's share of the species' height is drawn as the young tree.
+  EXPECT_EQ(library.typeFor(0, 7, maxHeight * young / mature, maxHeight),
+            library.typeIndex(0, 0, 0));
+  EXPECT_EQ(library.typeFor(0, 7, 0.9f * maxHeight, maxHeight), library.typeIndex(0, 0, 1));
+  EXPECT_EQ(library.typeFor(1, 7, 0.1f, maxHeight), library.typeIndex(1, 0, 0));
+}
+
+TEST(TreeLibrary, BlendsMoveSmoothlyFromOneAgeClassToTheNext) {
+  const TreeLibrary& library = test::smallLibrary();
+  const float young = library.types()[library.typeIndex(0, 0, 0)].height_m;
+  const float mature = library.types()[library.typeIndex(0, 0, 1)].height_m;
+  const float maxHeight = 40.0f;
+  const float youngHeight = maxHeight * young / mature;
+  EXPECT_EQ(library.blendFor(0, 7, 0.5f * youngHeight, maxHeight).blendType, -1);
+  EXPECT_EQ(library.blendFor(0, 7, 1.1f * maxHeight, maxHeight).type, library.typeIndex(0, 0, 1));
+  float previous = -1.0f;
+  for (float h = youngHeight * 1.01f; h < maxHeight * 0.99f; h *= 1.05f) {
+    const TreeLibrary::Blend b = library.blendFor(0, 7, h, maxHeight);
+    EXPECT_EQ(b.type, library.typeIndex(0, 0, 0));
+    EXPECT_EQ(b.blendType, library.typeIndex(0, 0, 1));
+    EXPECT_GT(b.blendWeight, previous);
+    previous = b.blendWeight;
+  }
+  EXPECT_GT(previous, 0.9f);  // the last step stops 5 % short of the mature class
+}
+
+}  // namespace
+}  // namespace eco

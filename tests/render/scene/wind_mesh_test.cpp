@@ -1,0 +1,75 @@
+#include "render/scene/wind_mesh.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/gtx/norm.hpp>
+
+#include "model/strand_model.hpp"
+#include "render_support.hpp"
+
+namespace eco {
+namespace {
+
+TEST(WindMesh, EveryLevelOfEverySpeciesKeepsItsTopologyInTheWind) {
+  for (const char* name : {"beech", "maple", "pine", "shrub"}) {
+    const WindLods lods = buildWindLods(test::loadNamedSpecies(name), 3, 0.5);
+    EXPECT_EQ(lods.windless, 0) << name;
+  }
+}
+
+TEST(WindMesh, WithoutWindTheRestPoseIsTheModelsTree) {
+  const Species maple = test::loadNamedSpecies("maple");
+  const WindLods lods = buildWindLods(maple, 3, 0.4);
+  const std::vector<glm::vec3> exact = test::cpuPositions(maple, 0.4, {}, 0.0, 1);
+  std::vector<glm::vec3> predicted;
+  for (const WindPart& part : lods.lods[1].parts)
+    for (const TreeVertex& v : part.vertices) predicted.push_back(test::linearised(v, {}, 2.0));
+  ASSERT_EQ(predicted.size(), exact.size());
+  for (std::size_t i = 0; i < exact.size(); ++i) EXPECT_EQ(predicted[i], exact[i]);
+}
+
+// The linearised sway against the CPU model at several times: exact at t = 0 and pi / 2 by
+// construction; in between the error is second order in the branch angles, a few per cent
+// of the displacement for winds of this strength.
+TEST(WindMesh, LinearisedSwayFollowsTheModelThroughAPeriod) {
+  const Species maple = test::loadNamedSpecies("maple");
+  const double age = 0.6;
+  const WindLods lods = buildWindLods(maple, 3, age);
+  const TreeWind wind{2.0, {0.0, 0.0}};
+  for (double t : {0.0, 0.7, 1.5708, 2.4, 4.0, 5.5}) {
+    std::vector<glm::vec3> predicted;
+    for (const WindPart& part : lods.lods[0].parts)
+      for (const TreeVertex& v : part.vertices) predicted.push_back(test::linearised(v, wind, t));
+    const test::Agreement a = test::agreement(lods.lods[0], predicted, test::cpuPositions(maple, age, wind, t, 0));
+    EXPECT_GT(a.tipDisplacement, 0.05f) << "t=" << t;  // the wind does move the tree
+    EXPECT_LT(a.rmsError, 0.1f * a.rmsDisplacement + 0.005f) << "t=" << t;
+    EXPECT_LT(a.tipError, 0.08f * a.tipDisplacement + 0.01f) << "t=" << t;
+  }
+}
+
+// The horizontal bend bases (a renderer extension, docs/rendering.md): the model's tree under
+// a horizontal wind of the basis strength, exactly; a wind toward east moves the crown east
+// and one toward south moves it south, and half the wind bends about half as far.
+TEST(WindMesh, BendBasesLeanTheCrownDownwind) {
+  const Species beech = test::loadNamedSpecies("beech");
+  const WindLods lods = buildWindLods(beech, 3, 0.7);
+  glm::vec3 east(0.0f), south(0.0f);
+  float highest = -1.0f;
+  for (const WindPart& part : lods.lods[0].parts)
+    for (const TreeVertex& v : part.vertices)
+      if (v.position.y > highest) highest = v.position.y, east = v.bendEast, south = v.bendSouth;
+  EXPECT_GT(east.x, 0.02f);
+  EXPECT_GT(east.x, 3.0f * std::abs(east.z));
+  EXPECT_GT(south.z, 0.02f);
+  EXPECT_GT(south.z, 3.0f * std::abs(south.x));
+  const std::vector<glm::vec3> full = test::cpuPositions(beech, 0.7, {0.0, {kBendBasis_wg, 0.0}}, 0.0, 0);
+  std::size_t i = 0;
+  for (const WindPart& part : lods.lods[0].parts)
+    for (const TreeVertex& v : part.vertices)
+      ASSERT_LT(glm::distance(v.position + v.bendEast, full[i++]), 1e-4f);
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,151 @@
+#include "render_support.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include <OpenImageIO/imageio.h>
+#include <glm/geometric.hpp>
+#include <glm/gtx/norm.hpp>
+
+#include "model/mesh/lod.hpp"
+#include "model/strand_model.hpp"
+
+namespace eco::test {
+
+Species loadNamedSpecies(const std::string& name) {
+  return loadSpecies(std::filesystem::path(ECOFOREST_DATA_DIR) / "species" / (name + ".toml"));
+}
+
+LibrarySpecies namedLibrarySpecies(const std::string& name) {
+  return loadLibrarySpecies(std::filesystem::path(ECOFOREST_DATA_DIR) / "species" /
+                            (name + ".toml"));
+}
+
+const TreeLibrary& smallLibrary() {
+  static const TreeLibrary library({namedLibrarySpecies("beech"), namedLibrarySpecies("maple")},
+                                   LibrarySettings{.variants = 1, .ageClasses = {0.4, 1.0}});
+  return library;
+}
+
+glm::vec3 linearised(const TreeVertex& v, const TreeWind& wind, double t) {
+  const float sway = static_cast<float>(wind.sway_ws / kSwayBasis_ws);
+  return v.position +
+         sway * (static_cast<float>(std::sin(t)) * v.swaySin +
+                 static_cast<float>(std::cos(t)) * v.swayCos) +
+         static_cast<float>(wind.directed.x / kBendBasis_wg) * v.bendEast +
+         static_cast<float>(wind.directed.y / kBendBasis_wg) * v.bendSouth;
+}
+
+std::vector<glm::vec3> cpuPositions(const Species& species, double age, const TreeWind& wind,
+                                    double t, int lod) {
+  const TreeMesh mesh =
+      buildLod(buildStrandTree(species, windBuildOptions(species, 3, age, wind, t)), species, lod);
+  std::vector<glm::vec3> positions;
+  for (const MeshPart& part : mesh.parts)
+    positions.insert(positions.end(), part.positions.begin(), part.positions.end());
+  return positions;
+}
+
+Agreement agreement(const WindMesh& rest, const std::vector<glm::vec3>& predicted,
+                    const std::vector<glm::vec3>& exact) {
+  Agreement a;
+  std::size_t i = 0, tip = 0;
+  float highest = -1.0f;
+  for (const WindPart& part : rest.parts)
+    for (const TreeVertex& v : part.vertices) {
+      a.rmsError += glm::distance2(predicted[i], exact[i]);
+      a.rmsDisplacement += glm::distance2(v.position, exact[i]);
+      if (v.position.y > highest) highest = v.position.y, tip = i;
+      if (i == tip) {
+        a.tipError = glm::distance(predicted[i], exact[i]);
+        a.tipDisplacement = glm::distance(v.position, exact[i]);
+      }
+      ++i;
+    }
+  a.rmsError = std::sqrt(a.rmsError / i);
+  a.rmsDisplacement = std::sqrt(a.rmsDisplacement / i);
+  return a;
+}
+
+Terrain flatTerrain(int size, double cell_m) {
+  Terrain terrain;
+  terrain.grid = Grid{size, size, cell_m, cell_m};
+  terrain.height_m.assign(terrain.grid.cellCount(), 100.0f);
+  return terrain;
+}
+
+ImageDifference compareImages(const Image& a, const Image& b) {
+  ImageDifference d;
+  if (a.width != b.width || a.height != b.height) return {255.0, 255, 1.0};
+  std::size_t differing = 0;
+  double sum = 0.0;
+  for (std::size_t p = 0; p < a.rgba.size(); p += 4) {
+    int pixelMax = 0;
+    for (int c = 0; c < 3; ++c) {
+      const int diff = std::abs(int(a.rgba[p + c]) - int(b.rgba[p + c]));
+      sum += diff;
+      pixelMax = std::max(pixelMax, diff);
+    }
+    d.max = std::max(d.max, pixelMax);
+    differing += pixelMax > 8;
+  }
+  const std::size_t pixels = a.rgba.size() / 4;
+  d.mean = sum / (3.0 * pixels);
+  d.differingShare = static_cast<double>(differing) / pixels;
+  return d;
+}
+
+glm::vec3 meanColor(const Image& image) {
+  glm::dvec3 sum(0.0);
+  for (std::size_t p = 0; p < image.rgba.size(); p += 4)
+    sum += glm::dvec3(image.rgba[p], image.rgba[p + 1], image.rgba[p + 2]);
+  return glm::vec3(sum / (255.0 * image.rgba.size() / 4));
+}
+
+double maxBlockDifference(const Image& a, const Image& b, int block) {
+  double worst = 0.0;
+  for (int by = 0; by + block <= a.height; by += block)
+    for (int bx = 0; bx + block <= a.width; bx += block) {
+      double sum = 0.0;
+      for (int y = by; y < by + block; ++y)
+        for (int x = bx; x < bx + block; ++x)
+          for (int c = 0; c < 3; ++c) {
+            const std::size_t i = (static_cast<std::size_t>(y) * a.width + x) * 4 + c;
+            sum += std::abs(int(a.rgba[i]) - int(b.rgba[i]));
+          }
+      worst = std::max(worst, sum / (3.0 * block * block));
+    }
+  return worst;
+}
+
+Image readPng(const std::filesystem::path& file) {
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  Image image(spec.width, spec.height);
+  std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * spec.height *
+                                   spec.nchannels);
+  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, pixels.data());
+  for (std::size_t i = 0; i < static_cast<std::size_t>(spec.width) * spec.height; ++i)
+    for (int c = 0; c < 4; ++c)
+      image.rgba[i * 4 + c] = c < spec.nchannels ? pixels[i * spec.nchannels + c] : 255;
+  return image;
+}
+
+void writePng(const std::filesystem::path& file, const Image& image) {
+  const std::vector<std::uint8_t> png = encodePng(image);
+  std::ofstream(file, std::ios::binary)
+      .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+}
+
+bool updatingReferences() {
+  const char* value = std::getenv("ECOFOREST_UPDATE_REFERENCES");
+  return value && std::string(value) == "1";
+}
+
+std::filesystem::path referenceFile(const std::string& name) {
+  return std::filesystem::path(ECOFOREST_REFERENCE_DIR) / name;
+}
+
+}  // namespace eco::test

@@ -1,0 +1,70 @@
+#include "sim/conditions/moisture.hpp"
+
+#include <gtest/gtest.h>
+
+#include "sim/conditions/slope.hpp"
+#include "terrain_support.hpp"
+
+namespace eco {
+
+TEST(Moisture, FlatPlaneIsUniform) {
+  Terrain flat = test::analyticTerrain(30, 30, 10, 10, [](double, double) { return 250.0; });
+  Field slope, aspect, moisture;
+  computeSlopeAspect(flat, slope, aspect);
+  computeMoisture(flat, slope, 1100.0, moisture);
+  for (float m : moisture) ASSERT_EQ(m, moisture.front());
+  EXPECT_GT(moisture.front(), 0.0f);
+  EXPECT_LT(moisture.front(), 1.0f);
+}
+
+TEST(Moisture, VValleyGathersFlowInItsLine) {
+  // Sides fall 0.2 m/m toward the valley line at east = 300 m; the line falls south.
+  Terrain valley = test::analyticTerrain(
+      61, 61, 10, 10, [](double e, double n) { return 0.2 * std::abs(e - 300.0) + 0.02 * n; });
+  Field slope, aspect, moisture;
+  computeSlopeAspect(valley, slope, aspect);
+  Field accumulation = flowAccumulation(valley, fillDepressions(valley), slope);
+  computeMoisture(valley, slope, 1100.0, moisture);
+  for (int y = 10; y < 50; ++y) {
+    std::size_t line = valley.grid.index(30, y);
+    for (int x : {5, 15, 25, 35, 45, 55}) {
+      ASSERT_GT(accumulation[line], accumulation[valley.grid.index(x, y)]) << x << "," << y;
+      ASSERT_GT(moisture[line], moisture[valley.grid.index(x, y)]) << x << "," << y;
+    }
+  }
+  // Downstream along the line, more has gathered.
+  EXPECT_GT(accumulation[valley.grid.index(30, 55)], accumulation[valley.grid.index(30, 10)]);
+  // Everything upstream of the line's lowest cell drains through it: about half the map.
+  EXPECT_GT(accumulation[valley.grid.index(30, 59)], 0.4f * valley.grid.cellCount());
+}
+
+TEST(Moisture, PitsFillToTheirSpillLevel) {
+  // A bowl 20 m deep inside a rim at 100 m that slopes down to the map edge.
+  Terrain bowl = test::analyticTerrain(41, 41, 10, 10, [](double e, double n) {
+    double r = std::hypot(e - 200.0, n - 200.0);
+    return r < 100.0 ? 80.0 + 0.2 * r : 100.0 - 0.05 * (r - 100.0);
+  });
+  std::vector<double> filled = fillDepressions(bowl);
+  const std::size_t centre = bowl.grid.index(20, 20);
+  EXPECT_GT(filled[centre], 99.0);  // the pond reaches the rim
+  EXPECT_LT(filled[centre], 100.01);
+  for (std::size_t c = 0; c < filled.size(); ++c) ASSERT_GE(filled[c], bowl.height_m[c]);
+  // The pond is as wet as the climate allows, all over.
+  Field slope(bowl.grid.cellCount(), 5.0f), moisture;
+  computeMoisture(bowl, slope, 1100.0, moisture);
+  const float wettest = static_cast<float>(1.0 - std::exp(-1100.0 / 800.0));
+  EXPECT_FLOAT_EQ(moisture[centre], wettest);
+  EXPECT_FLOAT_EQ(moisture[bowl.grid.index(25, 20)], wettest);
+  EXPECT_LT(moisture[bowl.grid.index(20, 2)], wettest);  // outside the rim
+}
+
+TEST(Moisture, WetterClimateIsWetter) {
+  Terrain slope30 = test::analyticTerrain(20, 20, 10, 10, [](double e, double) { return 0.3 * e; });
+  Field slope, aspect, dry, wet;
+  computeSlopeAspect(slope30, slope, aspect);
+  computeMoisture(slope30, slope, 400.0, dry);
+  computeMoisture(slope30, slope, 2000.0, wet);
+  for (std::size_t c = 0; c < dry.size(); ++c) ASSERT_LT(dry[c], wet[c]);
+}
+
+}  // namespace eco

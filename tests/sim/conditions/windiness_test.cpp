@@ -1,0 +1,44 @@
+#include "sim/conditions/windiness.hpp"
+
+#include <gtest/gtest.h>
+
+#include "terrain_support.hpp"
+
+namespace eco {
+
+TEST(Windiness, FlatPlaneIsUniform) {
+  Terrain flat = test::analyticTerrain(40, 40, 10, 10, [](double, double) { return 500.0; });
+  Field wind;
+  computeWindiness(flat, 270.0, wind);
+  for (float w : wind) ASSERT_FLOAT_EQ(w, wind.front());
+}
+
+TEST(Windiness, LeeOfARidgeIsCalmer) {
+  // A north-south ridge at east = 400 m across a west wind.
+  Terrain ridge = test::analyticTerrain(81, 41, 10, 10, [](double e, double) {
+    return 200.0 + std::max(0.0, 100.0 - 0.5 * std::abs(e - 400.0));
+  });
+  Field sx = upwindSlope(ridge, 270.0);
+  Field wind;
+  computeWindiness(ridge, 270.0, wind);
+  // Cells at the same height on either side: windward (west, x = 30) and lee (east, x = 50).
+  std::size_t windward = ridge.grid.index(30, 20), lee = ridge.grid.index(50, 20);
+  ASSERT_FLOAT_EQ(ridge.height_m[windward], ridge.height_m[lee]);
+  EXPECT_LT(sx[windward], 0.0f);  // open, falling ground upwind
+  EXPECT_GT(sx[lee], 10.0f);      // the ridge stands upwind
+  EXPECT_LT(wind[lee], wind[windward]);
+  // From the east, the sides swap.
+  computeWindiness(ridge, 90.0, wind);
+  EXPECT_GT(wind[lee], wind[windward]);
+}
+
+TEST(Windiness, HigherIsWindierOnOpenGround) {
+  Terrain cone = test::analyticTerrain(41, 41, 10, 10, [](double e, double n) {
+    return 300.0 - 0.1 * std::hypot(e - 200, n - 200);
+  });
+  Field wind;
+  computeWindiness(cone, 0.0, wind);
+  EXPECT_GT(wind[cone.grid.index(20, 20)], wind[cone.grid.index(20, 38)]);
+}
+
+}  // namespace eco

@@ -1,0 +1,135 @@
+#include "sim/run/run_format.hpp"
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "ecosystem_support.hpp"
+#include "sim/run/run_outputs.hpp"
+#include "terrain_support.hpp"
+#include "test_files.hpp"
+
+namespace eco {
+namespace {
+
+const char* kHeader =
+    "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n";
+
+TEST(RunFormat, ReadsATreesFileAndNumbersSpeciesInOrderOfAppearance) {
+  const auto file = test::freshDirectory("run_folder_csv") / "year_0010.csv";
+  test::writeFile(
+      file, std::string(kHeader) +
+                "7,pine,10.500,20.250,412.000,12,6.500,1.200,0.0800,0.900,123\n"
+                "9,beech,1.000,2.000,400.000,3,0.400,0.100,0.0000,1.000,5\n"
+                "11,pine,3.000,4.000,401.000,40,20.000,3.000,0.3000,0.500,18446744073709551615\n");
+  const TreeSnapshot s = readTreesCsv(file);
+  ASSERT_EQ(s.trees.size(), 3u);
+  EXPECT_EQ(s.speciesNames, (std::vector<std::string>{"pine", "beech"}));
+  EXPECT_EQ(s.trees[0].id, 7u);
+  EXPECT_EQ(s.trees[0].species, 0);
+  EXPECT_DOUBLE_EQ(s.trees[0].north_m, 20.25);
+  EXPECT_FLOAT_EQ(s.trees[0].height_m, 6.5f);
+  EXPECT_EQ(s.trees[1].species, 1);
+  EXPECT_EQ(s.trees[2].species, 0);
+  EXPECT_EQ(s.trees[2].variantSeed, 18446744073709551615ull);
+}
+
+TEST(RunFormat, AMalformedTreesFileNamesTheLine) {
+  const auto file = test::freshDirectory("run_folder_bad") / "trees.csv";
+  test::writeFile(file,
+                  std::string(kHeader) + "1,pine,1,2,3,4,5,6,7,8,9\n2,pine,1,2,x,4,5,6,7,8,9\n");
+  try {
+    readTreesCsv(file);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 3);
+  }
+  test::writeFile(file, "id,name\n");
+  EXPECT_THROW(readTreesCsv(file), InputError);
+}
+
+struct RunFormatOneTree : ::testing::Test {
+  Terrain terrain = test::analyticTerrain(10, 10, 10.0, 10.0, [](double, double) { return 50.0; });
+  ConditionFields fields = test::uniformConditions(terrain);
+  Ecosystem ecosystem{
+      terrain, {test::inEcosystem(test::testSpecies("t", {}), fields)}, EcosystemSettings{}};
+};
+
+TEST_F(RunFormatOneTree, CsvFilesHaveTheDocumentedColumns) {
+  ecosystem.plant(0, 12.0, 33.0, 40);
+  const auto folder = test::freshDirectory("run_outputs");
+  writeTreesCsv(folder / "trees.csv", ecosystem);
+  writeStatsCsv(folder / "stats.csv", statsOfYear(ecosystem), ecosystem.species());
+  const std::string trees = test::readFile(folder / "trees.csv");
+  EXPECT_EQ(trees.substr(0, trees.find('\n')),
+            "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed");
+  EXPECT_NE(trees.find("\n1,t,12.000,33.000,50.000,40,"), std::string::npos) << trees;
+  const std::string stats = test::readFile(folder / "stats.csv");
+  EXPECT_EQ(stats.substr(0, stats.find('\n')),
+            "year,species,alive,born,died,mean_height_m,basal_area_m2_per_ha,cover_fraction");
+  EXPECT_NE(stats.find("\n0,t,1,0,0,"), std::string::npos) << stats;
+}
+
+TEST_F(RunFormatOneTree, TheTreesReaderReadsWhatTheWriterWrote) {
+  ecosystem.plant(0, 12.0, 33.0, 40);
+  ecosystem.plant(0, 71.5, 8.25, 3);
+  const auto file = test::freshDirectory("run_format_trees") / "year_0001.csv";
+  writeTreesCsv(file, ecosystem);
+  const TreeSnapshot snapshot = readTreesCsv(file);
+  const Plants& p = ecosystem.plants();
+  ASSERT_EQ(snapshot.trees.size(), p.size());
+  EXPECT_EQ(snapshot.speciesNames, std::vector<std::string>{"t"});
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const TreeRow& row = snapshot.trees[i];
+    EXPECT_EQ(row.id, p.id[i]);
+    EXPECT_NEAR(row.east_m, p.east_m[i], 5e-4);
+    EXPECT_NEAR(row.north_m, p.north_m[i], 5e-4);
+    EXPECT_EQ(row.age_years, p.age_years[i]);
+    EXPECT_NEAR(row.height_m, p.height_m[i], 5e-4);
+    EXPECT_EQ(row.variantSeed, p.variantSeed[i]);
+  }
+}
+
+TEST(RunFormat, RunJsonReadsBackWhatWasWritten) {
+  const RunPaths run{test::freshDirectory("run_format_json")};
+  RunRecord r;
+  r.version = "9.9";
+  r.status = "interrupted";
+  r.scenarioFile = run.dir / "s.toml";
+  r.scenarioName = "s";
+  r.fingerprint = 0xfedcba9876543210ULL;
+  r.scenarioText = "name = \"s\"\n";
+  r.seed = 42;
+  r.years = 60;
+  r.lastYear = 17;
+  r.threads = 2;
+  r.counts = {{"beech", 10, 2, {}}};
+  writeRunJson(run, r);
+  const RunRecord back = readRunJson(run);
+  EXPECT_EQ(back.version, r.version);
+  EXPECT_EQ(back.status, r.status);
+  EXPECT_EQ(back.scenarioFile, r.scenarioFile);
+  EXPECT_EQ(back.scenarioName, r.scenarioName);
+  EXPECT_EQ(back.fingerprint, r.fingerprint);
+  EXPECT_EQ(back.scenarioText, r.scenarioText);
+  EXPECT_EQ(back.seed, r.seed);
+  EXPECT_EQ(back.years, r.years);
+  EXPECT_EQ(back.lastYear, r.lastYear);
+  EXPECT_EQ(back.threads, r.threads);
+}
+
+TEST(RunFormat, PathsListTheSnapshotsAndMapsThereAre) {
+  const RunPaths run{test::freshDirectory("run_format_paths")};
+  EXPECT_TRUE(run.snapshotYears().empty());
+  std::filesystem::create_directories(run.treesFolder());
+  std::filesystem::create_directories(run.mapsFolder());
+  for (int year : {20, 5, 100}) test::writeFile(run.snapshot(year), "");
+  test::writeFile(run.treesFolder() / "notes.txt", "");
+  test::writeFile(run.map("moisture"), "");
+  test::writeFile(run.mapsFolder() / "moisture.png", "");
+  EXPECT_EQ(run.snapshot(5).filename(), "year_0005.csv");
+  EXPECT_EQ(run.snapshotYears(), (std::vector<int>{5, 20, 100}));
+  EXPECT_EQ(run.mapNames(), std::vector<std::string>{"moisture"});
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,220 @@
+#include "sim/run/simulation.hpp"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "core/error.hpp"
+#include "test_files.hpp"
+
+namespace eco {
+namespace {
+
+std::string speciesFile(const std::string& name) {
+  return (std::filesystem::path(ECOFOREST_DATA_DIR) / "species" / (name + ".toml")).string();
+}
+
+// A small generated landscape with the valley's species; `extra` is appended.
+std::filesystem::path smallScenario(const std::string& name, const std::string& extra = "",
+                                    double beechRain = 3.0) {
+  const auto folder = test::freshDirectory("simulation_" + name);
+  const std::string text = R"(name = ")" + name + R"("
+seed = 5
+[terrain]
+cell_size_m = 10.0
+[terrain.generate]
+size = 33
+relief_m = 60.0
+base_altitude_m = 400.0
+[simulation]
+years = 30
+[[species]]
+file = ")" + speciesFile("beech") +
+                           R"("
+seed_rain_per_ha_per_year = )" +
+                           std::to_string(beechRain) + R"(
+[[species]]
+file = ")" + speciesFile("pine") +
+                           R"("
+seed_rain_per_ha_per_year = 3.0
+[[species]]
+file = ")" + speciesFile("shrub") +
+                           R"("
+seed_rain_per_ha_per_year = 3.0
+[output]
+snapshot_every_years = 10
+)" + extra;
+  test::writeFile(folder / "scenario.toml", text);
+  return folder / "scenario.toml";
+}
+
+RunOptions optionsFor(const std::filesystem::path& scenario, const std::filesystem::path& out) {
+  RunOptions o;
+  o.scenarioFile = scenario;
+  o.out = out;
+  return o;
+}
+
+// The outputs that must not depend on threads or interruptions (run.json holds timings).
+std::vector<std::string> outputsOf(const std::filesystem::path& folder) {
+  std::vector<std::string> files = {test::readFile(folder / "stats.csv"),
+                                    test::readFile(folder / "maps/canopy_height.exr")};
+  for (int year : {10, 20, 30})
+    files.push_back(test::readFile(folder / "trees" / ("year_00" + std::to_string(year) + ".csv")));
+  return files;
+}
+
+TEST(Simulation, WritesTheRunFolder) {
+  const auto scenario = smallScenario("folder");
+  const auto out = test::freshDirectory("simulation_folder_out");
+  const RunSummary summary = runSimulation(optionsFor(scenario, out));
+  EXPECT_EQ(summary.lastYear, 30);
+  EXPECT_FALSE(summary.interrupted);
+  for (const char* file :
+       {"run.json", "stats.csv", "checkpoint.bin", "conditions.json", "trees/year_0010.csv",
+        "trees/year_0030.csv", "maps/moisture.png", "maps/suitability_beech.png",
+        "maps/suitability_pine.exr", "maps/canopy_height.png"})
+    EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+  const std::string stats = test::readFile(out / "stats.csv");
+  EXPECT_EQ(std::count(stats.begin(), stats.end(), '\n'), 1 + 30 * 3);
+  const std::string json = test::readFile(out / "run.json");
+  EXPECT_NE(json.find("\"status\": \"complete\""), std::string::npos);
+  EXPECT_NE(json.find("\"fingerprint\""), std::string::npos);
+  EXPECT_NE(json.find("\"mean_site_of_map\""), std::string::npos);
+  EXPECT_NE(json.find("\"mean_site_taller_than_5m\""), std::string::npos);
+  // Where the taller plants stand: a mean of each condition over their cells, so within
+  // the terrain's altitudes (base 400 m, relief 60 m) and the 0..1 of the unitless fields.
+  ASSERT_EQ(summary.meanSite.size(), conditionFieldInfo().size());
+  int speciesWithTallPlants = 0;
+  for (const SpeciesCount& c : summary.counts) {
+    if (c.over5m == 0) {
+      EXPECT_TRUE(c.meanSiteOver5m.empty());
+      continue;
+    }
+    ++speciesWithTallPlants;
+    ASSERT_EQ(c.meanSiteOver5m.size(), summary.meanSite.size());
+    for (std::size_t f = 0; f < c.meanSiteOver5m.size(); ++f) {
+      const std::string name = conditionFieldInfo()[f].name;
+      if (name == "altitude") {
+        EXPECT_GT(c.meanSiteOver5m[f], 340.0);
+        EXPECT_LT(c.meanSiteOver5m[f], 520.0);
+      } else if (name == "moisture" || name == "windiness" || name == "sunniness") {
+        EXPECT_GE(c.meanSiteOver5m[f], 0.0) << name;
+        EXPECT_LE(c.meanSiteOver5m[f], 1.0) << name;
+      }
+    }
+  }
+  EXPECT_GT(speciesWithTallPlants, 0);
+}
+
+TEST(Simulation, SameOutputsWithOneAndTwoThreads) {
+  const auto scenario = smallScenario("threads");
+  auto run = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const auto out = test::freshDirectory("simulation_threads_" + std::to_string(threads));
+    runSimulation(optionsFor(scenario, out));
+    return outputsOf(out);
+  };
+  EXPECT_TRUE(run(1) == run(2));
+}
+
+TEST(Simulation, ResumedRunEndsWithTheSameOutputsAsAnUninterruptedOne) {
+  const auto scenario = smallScenario("resume");
+  const auto whole = test::freshDirectory("simulation_whole");
+  runSimulation(optionsFor(scenario, whole));
+
+  const auto pieces = test::freshDirectory("simulation_pieces");
+  std::atomic<bool> stop{false};
+  RunOptions first = optionsFor(scenario, pieces);
+  first.stop = &stop;
+  first.progress = [&](const RunProgress& p) { stop = p.year >= 13; };
+  const RunSummary interrupted = runSimulation(first);
+  EXPECT_TRUE(interrupted.interrupted);
+  EXPECT_EQ(interrupted.lastYear, 13);
+  EXPECT_NE(test::readFile(pieces / "run.json").find("\"interrupted\""), std::string::npos);
+
+  RunOptions rest = optionsFor(scenario, pieces);
+  rest.resume = true;
+  int firstYear = 0;
+  rest.progress = [&](const RunProgress& p) { firstYear = p.firstYear; };
+  EXPECT_EQ(runSimulation(rest).lastYear, 30);
+  EXPECT_EQ(firstYear, 14);
+  EXPECT_TRUE(outputsOf(whole) == outputsOf(pieces));
+}
+
+TEST(Simulation, RefusesToResumeAnotherScenariosCheckpoint) {
+  const auto out = test::freshDirectory("simulation_foreign");
+  RunOptions options = optionsFor(smallScenario("foreign_a"), out);
+  options.years = 2;
+  runSimulation(options);
+  RunOptions other = optionsFor(smallScenario("foreign_b", "", 1.0), out);
+  other.resume = true;
+  try {
+    runSimulation(other);
+    FAIL() << "resumed a foreign checkpoint";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("another scenario"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Simulation, BadScenariosGiveClearErrors) {
+  auto errorOf = [](const std::filesystem::path& scenario) -> std::string {
+    try {
+      RunOptions o = optionsFor(scenario, test::freshDirectory("simulation_bad_out"));
+      o.years = 1;
+      runSimulation(o);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const auto folder = test::freshDirectory("simulation_bad");
+  test::writeFile(folder / "missing.toml", R"(name = "x"
+[terrain.generate]
+size = 17
+[[species]]
+file = "species/oak.toml"
+)");
+  EXPECT_NE(errorOf(folder / "missing.toml")
+                .find("missing.toml:5: species[0].file: species file not found"),
+            std::string::npos)
+      << errorOf(folder / "missing.toml");
+  test::writeFile(folder / "negative.toml", R"(name = "x"
+[terrain.generate]
+size = 17
+[simulation]
+years = -5
+)");
+  EXPECT_NE(errorOf(folder / "negative.toml").find("negative.toml:5: simulation.years: value -5"),
+            std::string::npos)
+      << errorOf(folder / "negative.toml");
+  test::writeFile(folder / "none.toml", "name = \"x\"\n[terrain.generate]\nsize = 17\n");
+  EXPECT_NE(errorOf(folder / "none.toml").find("no species"), std::string::npos);
+}
+
+TEST(Simulation, WarnsWhenNothingCanArrive) {
+  RunOptions options =
+      optionsFor(smallScenario("no_rain", "", 0.0), test::freshDirectory("simulation_no_rain"));
+  // Only beech's rain is zero here: no warning.
+  std::vector<std::string> warnings;
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  options.years = 1;
+  runSimulation(options);
+  EXPECT_TRUE(warnings.empty());
+
+  const auto folder = test::freshDirectory("simulation_zero");
+  test::writeFile(folder / "zero.toml", R"(name = "zero"
+[terrain.generate]
+size = 17
+[[species]]
+file = ")" + speciesFile("beech") + R"("
+)");
+  options = optionsFor(folder / "zero.toml", folder / "out");
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  options.years = 3;
+  runSimulation(options);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("nothing will grow"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace eco

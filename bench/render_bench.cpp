@@ -17,10 +17,10 @@
 
 #include <tbb/global_control.h>
 
-#include "render/scene/camera.hpp"
-#include "render/scene/frame_size.hpp"
 #include "render/gl/gl_context.hpp"
 #include "render/gl/scene_renderer.hpp"
+#include "render/scene/camera.hpp"
+#include "render/scene/frame_size.hpp"
 #include "sim/scenario.hpp"
 #include "sim/terrain.hpp"
 

@@ -43,9 +43,8 @@ int main(int argc, char** argv) {
   const bool mp4 = eco::programOnPath("ffmpeg");
   auto sink = mp4 ? eco::mp4Sink(work / "growth.mp4", settings.frame, settings.fps)
                   : eco::pngFolderSink(work / "frames");
-  const eco::TimelapseTimings t =
-      eco::renderTimelapse(folder, library, terrain, eco::frameDrawer(renderer, settings.frame),
-                           settings, *sink, {});
+  const eco::TimelapseTimings t = eco::renderTimelapse(
+      folder, library, terrain, eco::frameDrawer(renderer, settings.frame), settings, *sink, {});
   std::printf("%s, growth 0-%d of %s, %dx%d, %d frames into %s\n", eco::glDescription().c_str(),
               folder.snapshotYears.back(), folder.scenario.name.c_str(), settings.frame.width,
               settings.frame.height, t.frames, mp4 ? "H.264 MP4" : "PNG frames");

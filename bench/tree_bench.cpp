@@ -3,8 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include "model/mesh/lod.hpp"
-#include "model/strand_model.hpp"
 #include "model/mesh/tree_mesher.hpp"
+#include "model/strand_model.hpp"
 
 namespace {
 

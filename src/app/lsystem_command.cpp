@@ -9,11 +9,11 @@
 
 #include "app/data_paths.hpp"
 #include "core/error.hpp"
-#include "model/mesh/lod.hpp"
+#include "model/export/tree_export.hpp"
 #include "model/lsystem/deriver.hpp"
 #include "model/lsystem/parser.hpp"
 #include "model/lsystem/turtle.hpp"
-#include "model/export/tree_export.hpp"
+#include "model/mesh/lod.hpp"
 #include "model/tree_generator.hpp"
 
 namespace eco {

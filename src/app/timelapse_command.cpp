@@ -92,9 +92,9 @@ void runTimelapse(const TimelapseArgs& args) {
                          source.library.get());
   const bool terminal = Progress::stderrIsTerminal();
   const auto start = std::chrono::steady_clock::now();
-  const TimelapseTimings t =
-      renderTimelapse(run, *source.library, source.terrain, frameDrawer(renderer, settings.frame),
-                      settings, *sink, [&](int done, int frames) {
+  const TimelapseTimings t = renderTimelapse(
+      run, *source.library, source.terrain, frameDrawer(renderer, settings.frame), settings, *sink,
+      [&](int done, int frames) {
         if (!terminal) return;
         const double elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -9,8 +9,8 @@
 
 #include "app/data_paths.hpp"
 #include "core/frames.hpp"
-#include "model/mesh/lod.hpp"
 #include "model/export/tree_export.hpp"
+#include "model/mesh/lod.hpp"
 #include "model/tree_generator.hpp"
 
 namespace eco {

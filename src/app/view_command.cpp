@@ -8,8 +8,8 @@
 #include "app/scene_source.hpp"
 #include "app/view_options.hpp"
 #include "app/view_panel.hpp"
-#include "render/scene/camera_controller.hpp"
 #include "render/gl/window.hpp"
+#include "render/scene/camera_controller.hpp"
 #include "sim/image_io.hpp"
 
 namespace eco {
@@ -110,8 +110,7 @@ void runView(const ViewArgs& args) {
     const bool yearStepped = state.advance(dt);
     options.wind.time += dt * 2.0;
 
-    const PanelChanges changed =
-        drawViewPanel(state, speciesNames, options, controller, stats);
+    const PanelChanges changed = drawViewPanel(state, speciesNames, options, controller, stats);
     screenshot = screenshot || changed.screenshot;
     if (changed.overlay) {
       if (state.showOverlay)

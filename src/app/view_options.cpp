@@ -12,8 +12,8 @@ void addFrameOptions(CLI::App& command, ViewOptions& o) {
             const std::optional<FrameSize> size = parseFrameSize(text);
             if (!size)
               throw CLI::ValidationError(
-                  "--size", "expected WIDTHxHEIGHT, each " + std::to_string(kMinFrameSide) +
-                                ".." + std::to_string(kMaxFrameSide) + ", got '" + text + "'");
+                  "--size", "expected WIDTHxHEIGHT, each " + std::to_string(kMinFrameSide) + ".." +
+                                std::to_string(kMaxFrameSide) + ", got '" + text + "'");
             o.size = *size;
           },
           "Frame size WIDTHxHEIGHT")
@@ -24,8 +24,9 @@ void addFrameOptions(CLI::App& command, ViewOptions& o) {
   command.add_option("--hour", o.sun.solarHour, "Solar time for the sun, hours")
       ->check(CLI::Range(0.0, 24.0))
       ->capture_default_str();
-  command.add_option("--wind-from", o.windFrom_deg,
-                     "Wind bearing in degrees (default: the scenario's prevailing wind)")
+  command
+      .add_option("--wind-from", o.windFrom_deg,
+                  "Wind bearing in degrees (default: the scenario's prevailing wind)")
       ->check(CLI::Range(0.0, 360.0));
   command.add_option("--wind-wg", o.windDirected_wg, "Directed wind w_g (EcoMod)")
       ->check(CLI::Range(0.0, 10.0))

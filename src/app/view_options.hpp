@@ -8,9 +8,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "render/gl/scene_renderer.hpp"
 #include "render/scene/camera.hpp"
 #include "render/scene/frame_size.hpp"
-#include "render/gl/scene_renderer.hpp"
 #include "sim/scenario.hpp"
 
 namespace eco {

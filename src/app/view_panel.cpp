@@ -19,9 +19,9 @@ PanelChanges drawViewPanel(ViewState& state, const std::vector<std::string>& spe
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::Begin("ecoforest", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   if (state.hasRun) {
-    changed.year = ImGui::SliderInt("snapshot", &state.yearIndex, 0,
-                                    static_cast<int>(state.years.size()) - 1,
-                                    fmt::format("year {}", state.years[state.yearIndex]).c_str());
+    changed.year =
+        ImGui::SliderInt("snapshot", &state.yearIndex, 0, static_cast<int>(state.years.size()) - 1,
+                         fmt::format("year {}", state.years[state.yearIndex]).c_str());
     if (ImGui::Button(state.playing ? "pause" : "play")) state.playing = !state.playing;
   }
   for (std::size_t s = 0; s < speciesNames.size(); ++s) {

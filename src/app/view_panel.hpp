@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "render/scene/camera_controller.hpp"
 #include "render/gl/scene_renderer.hpp"
+#include "render/scene/camera_controller.hpp"
 
 namespace eco {
 

@@ -26,7 +26,8 @@ AtomicFile::AtomicFile(std::filesystem::path target)
     const std::filesystem::path folder =
         target_.parent_path().empty() ? std::filesystem::path(".") : target_.parent_path();
     if (!std::filesystem::is_directory(folder))
-      throw InputError({target_.string(), 0, ""}, "cannot write this file: its folder does not exist");
+      throw InputError({target_.string(), 0, ""},
+                       "cannot write this file: its folder does not exist");
     throw EnvironmentError(target_.string() + ": cannot write this file: " + std::strerror(errno));
   }
 }

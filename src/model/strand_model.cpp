@@ -10,10 +10,10 @@
 
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "core/rotation.hpp"
 #include "model/leaves.hpp"
 #include "model/local_params.hpp"
 #include "model/wind.hpp"
-#include "core/rotation.hpp"
 
 namespace eco {
 namespace {

@@ -29,9 +29,10 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
   if (!spec.heightmap && !spec.generate)
     terrain.fail("heightmap", "give heightmap = \"FILE\" or a [terrain.generate] table");
   // cell_size_m: one number, or [dx, dy] for non-square cells.
-  std::vector<double> cell = terrain.isArray("cell_size_m")
-                                 ? terrain.numbers("cell_size_m", 2)
-                                 : std::vector<double>{terrain.number("cell_size_m", spec.cellDx_m)};
+  std::vector<double> cell =
+      terrain.isArray("cell_size_m")
+          ? terrain.numbers("cell_size_m", 2)
+          : std::vector<double>{terrain.number("cell_size_m", spec.cellDx_m)};
   for (double c : cell)
     if (!(c > 0.0) || c > 100000.0)
       terrain.fail("cell_size_m", "cell size must be a positive number of metres");

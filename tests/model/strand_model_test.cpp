@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "core/angles.hpp"
 #include "model/local_params.hpp"
 #include "test_support.hpp"
-#include "core/angles.hpp"
 
 namespace eco {
 namespace {

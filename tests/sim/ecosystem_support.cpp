@@ -70,7 +70,8 @@ ConditionFields uniformConditions(const Terrain& terrain) {
 
 EcosystemSpecies inEcosystem(EcosystemSpecies species, const ConditionFields& fields,
                              double seedRainPerHaPerYear) {
-  species.suitability = siteSuitability(species.ecology.tolerance, fields, SuitabilityRule::Minimum);
+  species.suitability =
+      siteSuitability(species.ecology.tolerance, fields, SuitabilityRule::Minimum);
   species.seedRainPerHaPerYear = seedRainPerHaPerYear;
   return species;
 }

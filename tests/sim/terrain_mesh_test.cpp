@@ -51,8 +51,13 @@ TEST(TerrainMesh, AltitudeAtIsWhereARayMeetsTheEmbreeTerrainEverywhere) {
     points.emplace_back(rng.uniform(0.0, g.eastOf(g.width - 1)), rng.uniform(0.0, g.northOf(0)));
   for (int y = 0; y + 1 < g.height; ++y)
     for (int x = 0; x + 1 < g.width; ++x)
-      for (auto [fx, fy] : {std::pair{0.5, 0.5}, {0.25, 0.25}, {0.75, 0.75}, {0.5, 0.0}, {0.0, 0.5},
-                            {0.9, 0.3}, {0.1, 0.6}})
+      for (auto [fx, fy] : {std::pair{0.5, 0.5},
+                            {0.25, 0.25},
+                            {0.75, 0.75},
+                            {0.5, 0.0},
+                            {0.0, 0.5},
+                            {0.9, 0.3},
+                            {0.1, 0.6}})
         points.emplace_back(g.eastOf(x) + fx * g.dx_m, g.northOf(y) - fy * g.dy_m);
   double worst = 0.0;
   for (const glm::dvec2 p : points) {
@@ -102,8 +107,9 @@ TEST(TerrainMesh, NormalsOfPlanesAreExactEvenAtTheEdges) {
     for (int y : {0, 3, 8}) EXPECT_LT(glm::distance(terrainNormal(terrain, x, y), expected), 1e-12);
   // Falling toward the north on non-square cells: the normal leans north.
   terrain = test::analyticTerrain(9, 9, 10, 30, [](double, double north) { return 0.25 * north; });
-  EXPECT_LT(glm::distance(terrainNormal(terrain, 8, 0),
-                          glm::normalize(glm::dvec3(0.0, -0.25, 1.0))), 1e-12);
+  EXPECT_LT(
+      glm::distance(terrainNormal(terrain, 8, 0), glm::normalize(glm::dvec3(0.0, -0.25, 1.0))),
+      1e-12);
 }
 
 }  // namespace

@@ -12,9 +12,7 @@
 #include "core/rotation.hpp"
 
 namespace eco {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 Turtle::Turtle(const LSystem& system) : system_(system) {
   state_.width = system.turtle.width;

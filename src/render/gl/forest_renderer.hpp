@@ -11,14 +11,14 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "render/gl/frame_uniforms.hpp"
+#include "render/gl/gl_objects.hpp"
+#include "render/gl/shader.hpp"
 #include "render/scene/camera.hpp"
 #include "render/scene/culling.hpp"
 #include "render/scene/forest.hpp"
-#include "render/gl/frame_uniforms.hpp"
-#include "render/gl/gl_objects.hpp"
 #include "render/scene/impostor.hpp"
 #include "render/scene/render_options.hpp"
-#include "render/gl/shader.hpp"
 #include "render/scene/tree_library.hpp"
 
 namespace eco {

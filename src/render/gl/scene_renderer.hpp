@@ -6,17 +6,17 @@
 #include <memory>
 #include <optional>
 
-#include "render/scene/camera.hpp"
-#include "render/scene/culling.hpp"
-#include "render/scene/forest.hpp"
 #include "render/gl/forest_renderer.hpp"
 #include "render/gl/frame_uniforms.hpp"
 #include "render/gl/gl_objects.hpp"
+#include "render/gl/shader.hpp"
+#include "render/gl/terrain_renderer.hpp"
+#include "render/scene/camera.hpp"
+#include "render/scene/culling.hpp"
+#include "render/scene/forest.hpp"
 #include "render/scene/impostor.hpp"
 #include "render/scene/render_options.hpp"
-#include "render/gl/shader.hpp"
 #include "render/scene/sun.hpp"
-#include "render/gl/terrain_renderer.hpp"
 #include "render/scene/timelapse.hpp"
 #include "render/scene/tree_library.hpp"
 

@@ -8,9 +8,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "render/scene/culling.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader.hpp"
+#include "render/scene/culling.hpp"
 #include "sim/grid.hpp"
 #include "sim/terrain.hpp"
 

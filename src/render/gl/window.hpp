@@ -6,9 +6,9 @@
 
 #include <string>
 
+#include "render/gl/gl_objects.hpp"
 #include "render/scene/camera_controller.hpp"
 #include "render/scene/frame_size.hpp"
-#include "render/gl/gl_objects.hpp"
 
 struct GLFWwindow;
 

@@ -27,10 +27,9 @@ glm::vec3 Camera::right() const {
 
 glm::mat4 Camera::view() const {
   // Straight up or down the world's up is the view axis; the yaw's heading is "up" instead.
-  const glm::vec3 up =
-      std::abs(pitch_deg) > 89.9f
-          ? glm::vec3(std::sin(radians(yaw_deg)), 0.0f, -std::cos(radians(yaw_deg)))
-          : glm::vec3(0.0f, 1.0f, 0.0f);
+  const glm::vec3 up = std::abs(pitch_deg) > 89.9f ? glm::vec3(std::sin(radians(yaw_deg)), 0.0f,
+                                                               -std::cos(radians(yaw_deg)))
+                                                   : glm::vec3(0.0f, 1.0f, 0.0f);
   return glm::lookAt(position, position + forward(), up);
 }
 

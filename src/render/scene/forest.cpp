@@ -85,7 +85,8 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
   forest.reserve(snapshot.trees.size());
   for (const TreeRow& tree : snapshot.trees) {
     const int species = librarySpecies[tree.species];
-    const int type = library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species));
+    const int type =
+        library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species));
     forest.add(library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), tree.height_m,
                tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
   }

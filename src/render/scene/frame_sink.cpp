@@ -3,8 +3,8 @@
 #include <unistd.h>
 #include <cerrno>
 #include <csignal>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -64,7 +64,8 @@ class Mp4Sink : public FrameSink {
         width, height, fps, partial_.string());
     std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give an error, not kill us
     pipe_ = popen(command.c_str(), "w");
-    if (!pipe_) throw EnvironmentError(std::string("could not start ffmpeg: ") + std::strerror(errno));
+    if (!pipe_)
+      throw EnvironmentError(std::string("could not start ffmpeg: ") + std::strerror(errno));
   }
   ~Mp4Sink() override {
     if (pipe_) pclose(pipe_);
@@ -86,7 +87,8 @@ class Mp4Sink : public FrameSink {
   [[noreturn]] void fail() {
     if (pipe_) pclose(pipe_);
     pipe_ = nullptr;
-    throw EnvironmentError(file_.string() + ": ffmpeg failed to encode it (its messages are above)");
+    throw EnvironmentError(file_.string() +
+                           ": ffmpeg failed to encode it (its messages are above)");
   }
 
   std::filesystem::path file_, partial_;

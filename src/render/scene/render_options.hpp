@@ -16,10 +16,10 @@ namespace eco {
 struct SceneWind {
   // Where the wind comes from (0 north, 90 east): a scenario's prevailing wind.
   double fromBearing_deg = Climate{}.prevailingWindFrom_deg;
-  double directed_wg = 0.0;        // w_g of the horizontal wind
-  double sway_ws = 0.0;            // w_s of the undirected sway
-  double gust = 0.25;              // relative swing of the directed wind over time
-  double time = 0.0;               // t of the sway, radians
+  double directed_wg = 0.0;  // w_g of the horizontal wind
+  double sway_ws = 0.0;      // w_s of the undirected sway
+  double gust = 0.25;        // relative swing of the directed wind over time
+  double time = 0.0;         // t of the sway, radians
 };
 
 struct RenderOptions {

@@ -12,8 +12,8 @@
 namespace eco {
 
 glm::vec3 sunWorldDirection(double latitude_deg, SunTime time) {
-  return worldDirectionFromMap(sunDirection(latitude_deg, solarDeclination(time.dayOfYear),
-                                            hourAngleOf(time.solarHour)));
+  return worldDirectionFromMap(
+      sunDirection(latitude_deg, solarDeclination(time.dayOfYear), hourAngleOf(time.solarHour)));
 }
 
 Lighting lightingFor(double latitude_deg, SunTime time) {

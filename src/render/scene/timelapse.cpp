@@ -134,8 +134,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
 
     phase = Clock::now();
     if (settings.overlay)
-      drawOverlay(image, year,
-                  metresPerPixelAtCentre(camera, terrain, settings.frame.height));
+      drawOverlay(image, year, metresPerPixelAtCentre(camera, terrain, settings.frame.height));
     sink.add(image);
     timings.encode_s += secondsSince(phase);
     if (progress) progress(frame + 1, frames);

@@ -8,9 +8,9 @@
 #include <functional>
 
 #include "render/scene/camera_path.hpp"
+#include "render/scene/forest.hpp"
 #include "render/scene/frame_sink.hpp"
 #include "render/scene/frame_size.hpp"
-#include "render/scene/forest.hpp"
 #include "render/scene/render_options.hpp"
 #include "render/scene/tree_library.hpp"
 #include "sim/run/run_folder.hpp"

@@ -12,8 +12,8 @@
 #include <glm/vec4.hpp>
 
 #include "model/species.hpp"
-#include "sim/ecology/species_ecology.hpp"
 #include "render/scene/wind_mesh.hpp"
+#include "sim/ecology/species_ecology.hpp"
 
 namespace eco {
 

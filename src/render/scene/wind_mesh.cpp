@@ -42,8 +42,7 @@ WindLods buildWindLods(const Species& species, std::uint64_t seed, double age) {
   std::array<std::array<TreeMesh, kLodCount>, 5> meshes;
   TreeSkeleton skeleton;
   for (std::size_t w = 0; w < winds.size(); ++w) {
-    buildTreeInto(species, windBuildOptions(species, seed, age, winds[w], times[w]),
-                        skeleton);
+    buildTreeInto(species, windBuildOptions(species, seed, age, winds[w], times[w]), skeleton);
     for (int lod = 0; lod < kLodCount; ++lod) buildLodInto(skeleton, species, lod, meshes[w][lod]);
   }
   for (int lod = 0; lod < kLodCount; ++lod) {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/scenario.hpp"
 #include "sim/conditions/sunlight.hpp"
+#include "sim/scenario.hpp"
 #include "sim/terrain.hpp"
 
 namespace eco {

@@ -11,8 +11,8 @@
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
-#include "sim/embree_device.hpp"
 #include "sim/conditions/sunlight.hpp"
+#include "sim/embree_device.hpp"
 
 namespace eco {
 namespace {

@@ -11,8 +11,8 @@
 #include "model/species.hpp"
 #include "sim/ecology/canopy_light.hpp"
 #include "sim/ecology/plants.hpp"
-#include "sim/scenario.hpp"
 #include "sim/ecology/species_ecology.hpp"
+#include "sim/scenario.hpp"
 
 namespace eco {
 

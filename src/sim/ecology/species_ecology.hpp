@@ -68,8 +68,8 @@ struct LifeHistory {
   // caching nuts, updrafts lifting seeds), which sets how fast a species spreads.
   double longDistanceFraction = 0.0;
   double longDistanceMean_m = 0.0;
-  double stressVigor = 0.1;       // vigor below this is a year of stress
-  int stressYearsTolerated = 5;   // stress years in a row before stress mortality sets in
+  double stressVigor = 0.1;      // vigor below this is a year of stress
+  int stressYearsTolerated = 5;  // stress years in a row before stress mortality sets in
 };
 
 struct Ecology {

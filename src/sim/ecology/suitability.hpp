@@ -6,8 +6,8 @@
 
 #include <array>
 
-#include "sim/ecology/species_ecology.hpp"
 #include "sim/conditions/conditions.hpp"
+#include "sim/ecology/species_ecology.hpp"
 
 namespace eco {
 

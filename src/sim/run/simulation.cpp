@@ -9,10 +9,10 @@
 
 #include "core/binary_io.hpp"
 #include "core/error.hpp"
-#include "sim/run/checkpoint.hpp"
 #include "sim/conditions/condition_maps.hpp"
-#include "sim/run/run_outputs.hpp"
 #include "sim/ecology/suitability.hpp"
+#include "sim/run/checkpoint.hpp"
+#include "sim/run/run_outputs.hpp"
 
 namespace eco {
 namespace {
@@ -67,8 +67,8 @@ std::vector<double> meanSiteOf(const ConditionFields& fields) {
   return means;
 }
 
-RunRecord runRecord(const Scenario& scenario, const RunOptions& options,
-                    std::uint64_t fingerprint, const RunSummary& summary, std::string status) {
+RunRecord runRecord(const Scenario& scenario, const RunOptions& options, std::uint64_t fingerprint,
+                    const RunSummary& summary, std::string status) {
   RunRecord r;
   r.version = options.programVersion;
   r.status = std::move(status);
@@ -205,8 +205,7 @@ RunSummary runSimulation(const RunOptions& options) {
   summary.simulationSeconds = secondsSince(start);
   summary.counts = countsOf(ecosystem, fields);
   if (!summary.interrupted)
-    writeFieldMap(run.mapsFolder(), "canopy_height", "m", canopyHeight(ecosystem),
-                  terrain.grid);
+    writeFieldMap(run.mapsFolder(), "canopy_height", "m", canopyHeight(ecosystem), terrain.grid);
   writeRunJson(run, runRecord(scenario, options, fingerprint, summary,
                               summary.interrupted ? "interrupted" : "complete"));
   return summary;

@@ -59,12 +59,11 @@ TEST(ForestGltf, EachTreeIsAnInstanceTurnedByItsYaw) {
   EXPECT_EQ(model.nodes[1].name, "one_lod1");
   const tinygltf::Value& attributes =
       model.nodes[1].extensions.at("EXT_mesh_gpu_instancing").Get("attributes");
-  const tinygltf::Accessor& rotation =
-      model.accessors[attributes.Get("ROTATION").GetNumberAsInt()];
+  const tinygltf::Accessor& rotation = model.accessors[attributes.Get("ROTATION").GetNumberAsInt()];
   ASSERT_EQ(rotation.count, 2u);
   const tinygltf::BufferView& view = model.bufferViews[rotation.bufferView];
   const auto* q = reinterpret_cast<const float*>(model.buffers[view.buffer].data.data() +
-                                                  view.byteOffset + rotation.byteOffset);
+                                                 view.byteOffset + rotation.byteOffset);
   // The second tree: a quarter turn of x toward z, -90 degrees about y.
   EXPECT_NEAR(q[4 + 1], -std::sqrt(0.5f), 1e-6f);
   EXPECT_NEAR(q[4 + 3], std::sqrt(0.5f), 1e-6f);

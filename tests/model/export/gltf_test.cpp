@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
+#include "model/export/tree_export.hpp"
 #include "model/mesh/lod.hpp"
 #include "model/strand_model.hpp"
-#include "model/export/tree_export.hpp"
 #include "test_support.hpp"
 
 namespace eco {

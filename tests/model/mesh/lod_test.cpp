@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 #include <glm/common.hpp>
 
-#include "model/strand_model.hpp"
-#include "model/mesh/textures.hpp"
 #include "model/export/tree_export.hpp"
+#include "model/mesh/textures.hpp"
 #include "model/mesh/tree_mesher.hpp"
+#include "model/strand_model.hpp"
 #include "test_support.hpp"
 
 namespace eco {

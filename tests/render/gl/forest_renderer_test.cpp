@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/packing.hpp>
 
-#include "render/gl/scene_renderer.hpp"
 #include "gl_support.hpp"
 #include "render/gl/frame_uniforms.hpp"
+#include "render/gl/scene_renderer.hpp"
 #include "render/gl/shader.hpp"
 #include "render/scene/impostor.hpp"
 #include "render_support.hpp"
@@ -249,7 +249,8 @@ TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
   glGetNamedBufferSubData(output.id(), 0, shaded.size() * sizeof(glm::vec3), shaded.data());
   checkGl("transform feedback");
 
-  const test::Agreement a = test::agreement(mesh, shaded, test::cpuPositions(maple, age, wind, t, 0));
+  const test::Agreement a =
+      test::agreement(mesh, shaded, test::cpuPositions(maple, age, wind, t, 0));
   EXPECT_GT(a.tipDisplacement, 0.05f);
   EXPECT_LT(a.tipError, 0.08f * a.tipDisplacement + 0.01f)
       << "tip moved " << a.tipDisplacement << " m, shader off by " << a.tipError << " m";

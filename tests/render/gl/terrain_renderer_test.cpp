@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "render/gl/scene_renderer.hpp"
 #include "gl_support.hpp"
+#include "render/gl/scene_renderer.hpp"
 #include "render_support.hpp"
 #include "sim/conditions/condition_maps.hpp"
 

@@ -42,7 +42,8 @@ TEST(WindMesh, LinearisedSwayFollowsTheModelThroughAPeriod) {
     std::vector<glm::vec3> predicted;
     for (const WindPart& part : lods.lods[0].parts)
       for (const TreeVertex& v : part.vertices) predicted.push_back(test::linearised(v, wind, t));
-    const test::Agreement a = test::agreement(lods.lods[0], predicted, test::cpuPositions(maple, age, wind, t, 0));
+    const test::Agreement a =
+        test::agreement(lods.lods[0], predicted, test::cpuPositions(maple, age, wind, t, 0));
     EXPECT_GT(a.tipDisplacement, 0.05f) << "t=" << t;  // the wind does move the tree
     EXPECT_LT(a.rmsError, 0.1f * a.rmsDisplacement + 0.005f) << "t=" << t;
     EXPECT_LT(a.tipError, 0.08f * a.tipDisplacement + 0.01f) << "t=" << t;
@@ -64,7 +65,8 @@ TEST(WindMesh, BendBasesLeanTheCrownDownwind) {
   EXPECT_GT(east.x, 3.0f * std::abs(east.z));
   EXPECT_GT(south.z, 0.02f);
   EXPECT_GT(south.z, 3.0f * std::abs(south.x));
-  const std::vector<glm::vec3> full = test::cpuPositions(beech, 0.7, {0.0, {kBendBasis_wg, 0.0}}, 0.0, 0);
+  const std::vector<glm::vec3> full =
+      test::cpuPositions(beech, 0.7, {0.0, {kBendBasis_wg, 0.0}}, 0.0, 0);
   std::size_t i = 0;
   for (const WindPart& part : lods.lods[0].parts)
     for (const TreeVertex& v : part.vertices)

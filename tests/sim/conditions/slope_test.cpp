@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "terrain_support.hpp"
 #include "core/angles.hpp"
+#include "terrain_support.hpp"
 
 namespace eco {
 

@@ -6,9 +6,9 @@
 #include <tbb/global_control.h>
 #include <glm/geometric.hpp>
 
+#include "core/angles.hpp"
 #include "sim/conditions/slope.hpp"
 #include "terrain_support.hpp"
-#include "core/angles.hpp"
 
 namespace eco {
 namespace {

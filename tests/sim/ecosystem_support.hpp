@@ -5,8 +5,11 @@
 #include <filesystem>
 #include <string>
 
+#include <gtest/gtest.h>
+
 #include "sim/conditions/conditions.hpp"
 #include "sim/ecology/ecosystem.hpp"
+#include "terrain_support.hpp"
 
 namespace eco::test {
 
@@ -36,5 +39,12 @@ ConditionFields uniformConditions(const Terrain& terrain);
 
 EcosystemSpecies inEcosystem(EcosystemSpecies species, const ConditionFields& fields,
                              double seedRainPerHaPerYear = 0.0);
+
+// A flat hectare (10 x 10 cells of 10 m) with one test species "t" and no plants yet.
+struct OneHectare : ::testing::Test {
+  Terrain terrain = analyticTerrain(10, 10, 10.0, 10.0, [](double, double) { return 50.0; });
+  ConditionFields fields = uniformConditions(terrain);
+  Ecosystem ecosystem{terrain, {inEcosystem(testSpecies("t", {}), fields)}, EcosystemSettings{}};
+};
 
 }  // namespace eco::test

@@ -1,5 +1,8 @@
 #include "render/gl/window.hpp"
 
+#include <optional>
+#include <utility>
+
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -13,32 +16,19 @@
 namespace eco {
 namespace {
 
+// The keys of the view and what each does.
+constexpr std::pair<int, ViewKey> kKeys[] = {
+    {GLFW_KEY_W, ViewKey::Forward},       {GLFW_KEY_S, ViewKey::Back},
+    {GLFW_KEY_A, ViewKey::Left},          {GLFW_KEY_D, ViewKey::Right},
+    {GLFW_KEY_Q, ViewKey::Down},          {GLFW_KEY_E, ViewKey::Up},
+    {GLFW_KEY_LEFT_SHIFT, ViewKey::Fast}, {GLFW_KEY_RIGHT_SHIFT, ViewKey::Fast},
+    {GLFW_KEY_G, ViewKey::Walk},          {GLFW_KEY_P, ViewKey::Screenshot},
+    {GLFW_KEY_SPACE, ViewKey::Play}};
+
 std::optional<ViewKey> viewKeyOf(int key) {
-  switch (key) {
-    case GLFW_KEY_W:
-      return ViewKey::Forward;
-    case GLFW_KEY_S:
-      return ViewKey::Back;
-    case GLFW_KEY_A:
-      return ViewKey::Left;
-    case GLFW_KEY_D:
-      return ViewKey::Right;
-    case GLFW_KEY_Q:
-      return ViewKey::Down;
-    case GLFW_KEY_E:
-      return ViewKey::Up;
-    case GLFW_KEY_LEFT_SHIFT:
-    case GLFW_KEY_RIGHT_SHIFT:
-      return ViewKey::Fast;
-    case GLFW_KEY_G:
-      return ViewKey::Walk;
-    case GLFW_KEY_P:
-      return ViewKey::Screenshot;
-    case GLFW_KEY_SPACE:
-      return ViewKey::Play;
-    default:
-      return std::nullopt;
-  }
+  for (auto [glfwKey, viewKey] : kKeys)
+    if (glfwKey == key) return viewKey;
+  return std::nullopt;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <tiny_gltf.h>
 
 #include "core/angles.hpp"
+#include "gltf_files.hpp"
 #include "test_support.hpp"
 
 namespace eco {
@@ -39,14 +40,6 @@ ForestGltfScene smallScene(const Species& species) {
   return scene;
 }
 
-tinygltf::Model load(const std::filesystem::path& file) {
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string error, warning;
-  EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, file.string())) << error;
-  return model;
-}
-
 TEST(ForestGltf, EachTreeIsAnInstanceTurnedByItsYaw) {
   const Species beech = test::loadNamed("beech");
   const auto file = test::freshDirectory("forest_gltf") / "forest.glb";
@@ -54,7 +47,7 @@ TEST(ForestGltf, EachTreeIsAnInstanceTurnedByItsYaw) {
   EXPECT_EQ(summary.instances, 2u);
   EXPECT_EQ(summary.treeMeshes, 1u);  // the type without trees is left out
   EXPECT_EQ(summary.terrainTriangles, 1u);
-  const tinygltf::Model model = load(file);
+  const tinygltf::Model model = test::loadGltf(file);
   ASSERT_EQ(model.nodes.size(), 2u);  // terrain, type "one"
   EXPECT_EQ(model.nodes[1].name, "one_lod1");
   const tinygltf::Value& attributes =
@@ -73,7 +66,7 @@ TEST(ForestGltf, AllLevelsGoThroughMsftLodWithTheirScreenCoverages) {
   const Species beech = test::loadNamed("beech");
   const auto file = test::freshDirectory("forest_gltf_lods") / "forest.glb";
   writeForestGltf(smallScene(beech), file, kAllLods);
-  const tinygltf::Model model = load(file);
+  const tinygltf::Model model = test::loadGltf(file);
   ASSERT_EQ(model.nodes.size(), 4u);  // terrain, LOD1, LOD2, then LOD0 naming them
   const tinygltf::Node& base = model.nodes.back();
   EXPECT_EQ(base.name, "one_lod0");

@@ -4,23 +4,10 @@
 #include "model/export/tree_export.hpp"
 #include "model/mesh/lod.hpp"
 #include "model/strand_model.hpp"
+#include "gltf_files.hpp"
 #include "test_support.hpp"
 
 namespace eco {
-namespace {
-
-tinygltf::Model load(const std::filesystem::path& file) {
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string error, warning;
-  bool ok = file.extension() == ".glb"
-                ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
-                : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
-  EXPECT_TRUE(ok) << error;
-  return model;
-}
-
-}  // namespace
 
 TEST(ExportGltf, ReadsBackWithTheSameGeometry) {
   auto dir = test::freshDirectory("gltf");
@@ -28,7 +15,7 @@ TEST(ExportGltf, ReadsBackWithTheSameGeometry) {
   TreeMesh mesh = buildLod(buildStrandTree(beech, {}), beech, 0);
   for (const char* name : {"beech.glb", "beech.gltf"}) {
     exportTree(mesh, beech, dir / name);
-    tinygltf::Model model = load(dir / name);
+    tinygltf::Model model = test::loadGltf(dir / name);
     ASSERT_EQ(model.meshes.size(), 1u);
     ASSERT_EQ(model.meshes[0].primitives.size(), mesh.parts.size());
     for (std::size_t p = 0; p < mesh.parts.size(); ++p) {

@@ -97,14 +97,6 @@ TEST(SceneRenderer, TreesCastShadowsOnTheGround) {
   EXPECT_LT(test::meanColor(shadowed).g, test::meanColor(unshadowed).g);
 }
 
-class CollectingSink : public FrameSink {
- public:
-  void add(const Image& frame) override { frames.push_back(frame); }
-  void finish() override { finished = true; }
-  std::vector<Image> frames;
-  bool finished = false;
-};
-
 // A single maple planted at year 0 grows through three snapshots; its silhouette in a fixed
 // view grows frame after frame (allowing for the dither of age-class blends).
 TEST(SceneRenderer, DrawsATimelapseInWhichOneTreesSilhouetteGrows) {
@@ -134,7 +126,7 @@ TEST(SceneRenderer, DrawsATimelapseInWhichOneTreesSilhouetteGrows) {
   settings.camera = [](double) {
     return lookingAt(worldFromMap(160, 130, 106), worldFromMap(160, 160, 105));
   };
-  CollectingSink sink;
+  test::CollectingSink sink;
   const TimelapseTimings t =
       renderTimelapse(run, test::smallLibrary(), terrain, frameDrawer(renderer, settings.frame),
                       settings, sink, {});

@@ -5,21 +5,11 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "render/scene/camera.hpp"
+#include "gltf_files.hpp"
 #include "render_support.hpp"
 
 namespace eco {
 namespace {
-
-tinygltf::Model readBack(const std::filesystem::path& file) {
-  tinygltf::Model model;
-  tinygltf::TinyGLTF loader;
-  std::string error, warning;
-  const bool ok = file.extension() == ".glb"
-                      ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
-                      : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
-  EXPECT_TRUE(ok) << error;
-  return model;
-}
 
 template <typename T>
 std::vector<T> accessorValues(const tinygltf::Model& model, int index) {
@@ -53,7 +43,7 @@ TEST(ForestGltf, EveryTreeIsOneInstanceWithConsistentAccessors) {
   const ForestGltfSummary summary =
       exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
   EXPECT_EQ(summary.instances, scene.forest.size());
-  const tinygltf::Model model = readBack(file);
+  const tinygltf::Model model = test::loadGltf(file);
   EXPECT_EQ(model.extensionsRequired, std::vector<std::string>{"EXT_mesh_gpu_instancing"});
   std::size_t instances = 0;
   for (const tinygltf::Node& node : model.nodes) {
@@ -81,7 +71,7 @@ TEST(ForestGltf, TheTerrainsBoundingBoxIsTheHeightmaps) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf_box") / "forest.gltf";
   exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
-  const tinygltf::Model model = readBack(file);
+  const tinygltf::Model model = test::loadGltf(file);
   const tinygltf::Mesh& terrain = model.meshes[model.nodes[0].mesh];
   ASSERT_EQ(terrain.name, "terrain");
   const tinygltf::Accessor& positions =
@@ -103,7 +93,7 @@ TEST(ForestGltf, AllLevelsOfDetailThroughMsftLod) {
   const auto file = test::freshDirectory("forest_gltf_lods") / "forest.glb";
   const ForestGltfSummary summary =
       exportForest(scene.terrain, test::smallLibrary(), scene.forest, file, kAllLods);
-  const tinygltf::Model model = readBack(file);
+  const tinygltf::Model model = test::loadGltf(file);
   EXPECT_EQ(model.extensionsUsed,
             (std::vector<std::string>{"EXT_mesh_gpu_instancing", "MSFT_lod"}));
   auto triangles = [&](int node) {
@@ -144,7 +134,7 @@ TEST(ForestGltf, InstanceRotationMatchesTheRenderersYaw) {
   scene.forest.yaw[0] = 0.7f;
   const auto file = test::freshDirectory("forest_gltf_yaw") / "forest.glb";
   exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
-  const tinygltf::Model model = readBack(file);
+  const tinygltf::Model model = test::loadGltf(file);
   for (const tinygltf::Node& node : model.nodes) {
     if (!node.extensions.count("EXT_mesh_gpu_instancing")) continue;
     const tinygltf::Value& attributes =

@@ -10,14 +10,6 @@
 namespace eco {
 namespace {
 
-class CollectingSink : public FrameSink {
- public:
-  void add(const Image& frame) override { frames.push_back(frame); }
-  void finish() override { finished = true; }
-  std::vector<Image> frames;
-  bool finished = false;
-};
-
 TEST(Timelapse, FramesSpanTheYearsEvenly) {
   TimelapseSettings s;
   s.fromYear = 0;
@@ -87,7 +79,7 @@ TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
     seen.eyes.push_back(camera.position);
     return Image(32, 24);
   };
-  CollectingSink sink;
+  test::CollectingSink sink;
   const TimelapseTimings t =
       renderTimelapse(run, test::smallLibrary(), terrain, draw, settings, sink, {});
   ASSERT_EQ(t.frames, 21);
@@ -116,7 +108,7 @@ TEST(Timelapse, WindHoldsTheYearAndAdvancesTheWindsTime) {
     seen.windTimes.push_back(o.wind.time);
     return Image(16, 16);
   };
-  CollectingSink sink;
+  test::CollectingSink sink;
   renderTimelapse(run, test::smallLibrary(), terrain, draw, settings, sink, {});
   ASSERT_EQ(seen.windTimes.size(), 8u);
   for (std::size_t f = 0; f < 8; ++f) {

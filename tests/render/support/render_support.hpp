@@ -8,6 +8,7 @@
 
 #include "core/image.hpp"
 #include "render/scene/forest.hpp"
+#include "render/scene/frame_sink.hpp"
 #include "render/scene/tree_library.hpp"
 #include "render/scene/wind_mesh.hpp"
 #include "sim/terrain.hpp"
@@ -38,6 +39,15 @@ struct Agreement {
 };
 Agreement agreement(const WindMesh& rest, const std::vector<glm::vec3>& predicted,
                     const std::vector<glm::vec3>& exact);
+
+// A frame sink that keeps the frames.
+class CollectingSink : public FrameSink {
+ public:
+  void add(const Image& frame) override { frames.push_back(frame); }
+  void finish() override { finished = true; }
+  std::vector<Image> frames;
+  bool finished = false;
+};
 
 struct ImageDifference {
   double mean = 0.0;            // mean absolute difference per channel, 0..255

@@ -11,6 +11,8 @@
 namespace eco {
 namespace {
 
+using test::OneHectare;
+
 const char* kHeader =
     "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n";
 
@@ -47,14 +49,7 @@ TEST(RunFormat, AMalformedTreesFileNamesTheLine) {
   EXPECT_THROW(readTreesCsv(file), InputError);
 }
 
-struct RunFormatOneTree : ::testing::Test {
-  Terrain terrain = test::analyticTerrain(10, 10, 10.0, 10.0, [](double, double) { return 50.0; });
-  ConditionFields fields = test::uniformConditions(terrain);
-  Ecosystem ecosystem{
-      terrain, {test::inEcosystem(test::testSpecies("t", {}), fields)}, EcosystemSettings{}};
-};
-
-TEST_F(RunFormatOneTree, CsvFilesHaveTheDocumentedColumns) {
+TEST_F(OneHectare, CsvFilesHaveTheDocumentedColumns) {
   ecosystem.plant(0, 12.0, 33.0, 40);
   const auto folder = test::freshDirectory("run_outputs");
   writeTreesCsv(folder / "trees.csv", ecosystem);
@@ -69,7 +64,7 @@ TEST_F(RunFormatOneTree, CsvFilesHaveTheDocumentedColumns) {
   EXPECT_NE(stats.find("\n0,t,1,0,0,"), std::string::npos) << stats;
 }
 
-TEST_F(RunFormatOneTree, TheTreesReaderReadsWhatTheWriterWrote) {
+TEST_F(OneHectare, TheTreesReaderReadsWhatTheWriterWrote) {
   ecosystem.plant(0, 12.0, 33.0, 40);
   ecosystem.plant(0, 71.5, 8.25, 3);
   const auto file = test::freshDirectory("run_format_trees") / "year_0001.csv";

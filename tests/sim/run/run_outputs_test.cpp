@@ -12,15 +12,9 @@
 namespace eco {
 namespace {
 
-struct OneTree : ::testing::Test {
-  // 10 x 10 cells of 10 m: exactly one hectare.
-  Terrain terrain = test::analyticTerrain(10, 10, 10.0, 10.0, [](double, double) { return 50.0; });
-  ConditionFields fields = test::uniformConditions(terrain);
-  Ecosystem ecosystem{
-      terrain, {test::inEcosystem(test::testSpecies("t", {}), fields)}, EcosystemSettings{}};
-};
+using test::OneHectare;
 
-TEST_F(OneTree, BasalAreaCoverAndCanopyFromThePlants) {
+TEST_F(OneHectare, BasalAreaCoverAndCanopyFromThePlants) {
   ecosystem.plant(0, 41.0, 43.0, 100);
   const Plants& p = ecosystem.plants();
   const std::vector<StatsRow> rows = statsOfYear(ecosystem);

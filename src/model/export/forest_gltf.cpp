@@ -7,6 +7,54 @@
 #include "model/export/gltf_builder.hpp"
 
 namespace eco {
+namespace {
+
+// The terrain's mesh and node, with a plain ground material.
+int addTerrain(GltfBuilder& builder, const MeshPart& terrain) {
+  Material ground;
+  ground.name = "terrain";
+  ground.baseColor = glm::vec4(0.30f, 0.36f, 0.18f, 1.0f);
+  ground.roughness = 0.95f;
+  tinygltf::Mesh mesh;
+  mesh.name = "terrain";
+  builder.addPrimitive(mesh, terrain, builder.addMaterial(ground));
+  tinygltf::Node node;
+  node.name = "terrain";
+  node.mesh = builder.addMesh(std::move(mesh));
+  return builder.addNode(std::move(node));
+}
+
+// EXT_mesh_gpu_instancing's attributes of a type's trees.
+tinygltf::Value::Object addInstancing(GltfBuilder& builder, const ForestGltfType& type) {
+  std::vector<glm::vec4> rotations;  // unit quaternions (x, y, z, w)
+  for (float yaw : type.yaws_rad) {
+    // The renderer turns x toward z by yaw: a rotation of -yaw about y.
+    const float half = -0.5f * yaw;
+    rotations.emplace_back(0.0f, std::sin(half), 0.0f, std::cos(half));
+  }
+  tinygltf::Value::Object attributes;
+  attributes["TRANSLATION"] = tinygltf::Value(builder.addAccessor(
+      type.translations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 0, false));
+  attributes["ROTATION"] = tinygltf::Value(builder.addAccessor(
+      rotations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, 0, false));
+  attributes["SCALE"] = tinygltf::Value(builder.addAccessor(
+      type.scales, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 0, false));
+  tinygltf::Value::Object instancing;
+  instancing["attributes"] = tinygltf::Value(attributes);
+  return instancing;
+}
+
+// MSFT_screencoverage: the switching heights as fractions of the screen.
+tinygltf::Value screenCoverage(const ForestGltfScene& scene) {
+  tinygltf::Value::Array coverage;
+  for (float pixels : scene.switchPixels)
+    coverage.emplace_back(pixels / static_cast<double>(scene.screenHeight_px));
+  tinygltf::Value::Object extras;
+  extras["MSFT_screencoverage"] = tinygltf::Value(coverage);
+  return tinygltf::Value(extras);
+}
+
+}  // namespace
 
 ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::filesystem::path& file,
                                   int lod) {
@@ -16,18 +64,8 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
   if (lod == kAllLods) builder.useExtension("MSFT_lod", false);
   std::vector<int> roots;
 
-  Material ground;
-  ground.name = "terrain";
-  ground.baseColor = glm::vec4(0.30f, 0.36f, 0.18f, 1.0f);
-  ground.roughness = 0.95f;
   summary.terrainTriangles = scene.terrain.triangleCount();
-  tinygltf::Mesh terrainMesh;
-  terrainMesh.name = "terrain";
-  builder.addPrimitive(terrainMesh, scene.terrain, builder.addMaterial(ground));
-  tinygltf::Node terrainNode;
-  terrainNode.name = "terrain";
-  terrainNode.mesh = builder.addMesh(std::move(terrainMesh));
-  roots.push_back(builder.addNode(std::move(terrainNode)));
+  roots.push_back(addTerrain(builder, scene.terrain));
 
   // Materials per species and kind, added when first used.
   std::vector<std::vector<int>> materials(scene.species.size(), std::vector<int>(5, -1));
@@ -45,21 +83,7 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
       return builder.addMesh(std::move(mesh));
     };
 
-    std::vector<glm::vec4> rotations;  // unit quaternions (x, y, z, w)
-    for (float yaw : type.yaws_rad) {
-      // The renderer turns x toward z by yaw: a rotation of -yaw about y.
-      const float half = -0.5f * yaw;
-      rotations.emplace_back(0.0f, std::sin(half), 0.0f, std::cos(half));
-    }
-    tinygltf::Value::Object attributes;
-    attributes["TRANSLATION"] = tinygltf::Value(builder.addAccessor(
-        type.translations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 0, false));
-    attributes["ROTATION"] = tinygltf::Value(builder.addAccessor(
-        rotations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, 0, false));
-    attributes["SCALE"] = tinygltf::Value(builder.addAccessor(
-        type.scales, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 0, false));
-    tinygltf::Value::Object instancing;
-    instancing["attributes"] = tinygltf::Value(attributes);
+    const tinygltf::Value::Object instancing = addInstancing(builder, type);
 
     auto instancedNode = [&](int level) {
       tinygltf::Node node;
@@ -76,12 +100,7 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
       tinygltf::Value::Object msftLod;
       msftLod["ids"] = tinygltf::Value(ids);
       base.extensions["MSFT_lod"] = tinygltf::Value(msftLod);
-      tinygltf::Value::Array coverage;
-      for (float pixels : scene.switchPixels)
-        coverage.emplace_back(pixels / static_cast<double>(scene.screenHeight_px));
-      tinygltf::Value::Object extras;
-      extras["MSFT_screencoverage"] = tinygltf::Value(coverage);
-      base.extras = tinygltf::Value(extras);
+      base.extras = screenCoverage(scene);
       roots.push_back(builder.addNode(std::move(base)));
     } else {
       roots.push_back(builder.addNode(instancedNode(lod)));

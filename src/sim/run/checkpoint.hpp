@@ -1,4 +1,4 @@
-// checkpoint.bin (docs/simulation.md): everything a run needs to continue exactly where it
+// checkpoint.bin (docs/run_folder.md): everything a run needs to continue exactly where it
 // stopped — the ecosystem state and the statistics so far — fingerprinted with the hash of
 // the scenario and species files and protected by a checksum.
 #pragma once

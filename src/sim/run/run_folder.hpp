@@ -1,4 +1,4 @@
-// Reading a run folder back (docs/simulation.md): its scenario, the years it holds tree
+// Reading a run folder back (docs/run_folder.md): its scenario, the years it holds tree
 // snapshots for, and a snapshot's trees (run_format.hpp reads the files). The renderer and
 // exporters read runs only here.
 #pragma once

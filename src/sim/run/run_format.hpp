@@ -1,4 +1,4 @@
-// The files of a run folder (docs/simulation.md), each writer beside its reader: the paths,
+// The files of a run folder (docs/run_folder.md), each writer beside its reader: the paths,
 // run.json, stats.csv and trees/year_NNNN.csv. Maps and conditions.json are written by
 // condition_maps.hpp (`ecoforest conditions` writes the same layout), checkpoint.bin by
 // checkpoint.hpp.

@@ -1,4 +1,4 @@
-// What a run measures (docs/simulation.md): yearly statistics per species (stats.csv,
+// What a run measures (docs/run_folder.md): yearly statistics per species (stats.csv,
 // written by run_format.hpp) and the canopy height map.
 #pragma once
 

@@ -1,4 +1,4 @@
-// A whole run of `ecoforest run` (docs/simulation.md): loads the scenario and its species,
+// A whole run of `ecoforest run` (docs/run_folder.md): loads the scenario and its species,
 // computes the living conditions, steps the ecosystem year by year and writes the run
 // folder — maps, stats.csv, tree snapshots, run.json and a checkpoint after every year,
 // each file written whole or not at all.

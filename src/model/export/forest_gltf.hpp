@@ -36,7 +36,7 @@ struct ForestGltfScene {
   // For MSFT_lod: the heights in pixels at which a viewer switches to LOD1, LOD2 and past
   // LOD2, and the screen height they are measured on.
   std::array<float, 3> switchPixels{};
-  float screenHeight_px = 720.0f;
+  float screenHeight_px = 0.0f;
 };
 
 struct ForestGltfSummary {

@@ -2,6 +2,7 @@
 
 #include "core/frames.hpp"
 #include "render/scene/culling.hpp"
+#include "render/scene/frame_size.hpp"
 #include "sim/terrain_mesh.hpp"
 
 namespace eco {
@@ -44,6 +45,7 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
   const LodSettings switching;
   std::copy(switching.switchPixels.begin(), switching.switchPixels.end(),
             scene.switchPixels.begin());
+  scene.screenHeight_px = static_cast<float>(FrameSize{}.height);  // the frames' default
   // The trees of each type, in forest order.
   const auto& types = library.types();
   std::vector<std::vector<std::size_t>> members(types.size());

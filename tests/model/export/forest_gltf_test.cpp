@@ -22,6 +22,7 @@ ForestGltfScene smallScene(const Species& species) {
   scene.terrain.addTriangle(0, 1, 2);
   scene.species = {&species};
   scene.switchPixels = {600.0f, 220.0f, 100.0f};
+  scene.screenHeight_px = 720.0f;
   for (const char* name : {"one", "empty"}) {
     ForestGltfType& type = scene.types.emplace_back();
     type.name = name;

@@ -103,14 +103,29 @@ std::vector<double> TomlTable::numbers(std::string_view key, std::size_t count,
     used_.emplace(key);
     return *fallback;
   }
-  const toml::node& node = require(key);
-  const toml::array* array = node.as_array();
+  const toml::array* array = require(key).as_array();
   if (array == nullptr || array->size() != count)
     fail(key, "expected an array of " + std::to_string(count) + " numbers");
+  return numberList(key, {}, range);
+}
+
+std::vector<double> TomlTable::numberList(std::string_view key,
+                                          std::optional<std::vector<double>> fallback,
+                                          Range range) {
+  if (fallback && !has(key)) {
+    used_.emplace(key);
+    return *fallback;
+  }
+  const toml::node& node = require(key);
+  const toml::array* array = node.as_array();
+  const std::string expected =
+      array != nullptr && array->size() > 0
+          ? "expected an array of " + std::to_string(array->size()) + " numbers"
+          : std::string("expected an array of one or more numbers");
+  if (array == nullptr || array->empty()) fail(key, expected);
   std::vector<double> values;
   for (const toml::node& element : *array) {
-    if (!element.is_number())
-      fail(key, "expected an array of " + std::to_string(count) + " numbers");
+    if (!element.is_number()) fail(key, expected);
     double value = element.is_integer() ? static_cast<double>(*element.value<std::int64_t>())
                                         : *element.value<double>();
     checkRange(key, value, range);

@@ -49,6 +49,10 @@ class TomlTable {
   // A fixed-length array of numbers, e.g. a colour or a direction.
   std::vector<double> numbers(std::string_view key, std::size_t count,
                               std::optional<std::vector<double>> fallback = {}, Range range = {});
+  // An array of one or more numbers, of any length.
+  std::vector<double> numberList(std::string_view key,
+                                 std::optional<std::vector<double>> fallback = {},
+                                 Range range = {});
   // [[x0, y0], [x1, y1], ...] with non-decreasing x and y inside `range`.
   Polyline polyline(std::string_view key, Range range = {});
   std::optional<TomlTable> table(std::string_view key);

@@ -33,6 +33,23 @@ TEST(TomlReader, ReadsValuesAndDefaults) {
   EXPECT_NO_THROW(root.finish());
 }
 
+TEST(TomlReader, NumberListsHaveAnyLength) {
+  TomlDocument doc =
+      TomlDocument::parse("v = [60, 80.5]\nw = [3]\ne = []\nx = [1, \"a\"]\n", "t.toml");
+  TomlTable root = doc.root();
+  EXPECT_EQ(root.numberList("v"), (std::vector<double>{60.0, 80.5}));
+  EXPECT_EQ(root.numberList("w", {}, {0.0, 5.0}), std::vector<double>{3.0});
+  EXPECT_EQ(root.numberList("none", std::vector<double>{1.0}), std::vector<double>{1.0});
+  EXPECT_STREQ(inputErrorOf([&] { root.numberList("e"); }).what(),
+               "t.toml:3: e: expected an array of one or more numbers");
+  EXPECT_EQ(inputErrorOf([&] { root.numberList("x"); }).where().line, 4);
+  EXPECT_NE(std::string(inputErrorOf([&] {
+                          root.numberList("v", {}, {0.0, 70.0});
+                        }).what())
+                .find("outside [0, 70]"),
+            std::string::npos);
+}
+
 TEST(TomlReader, UnknownKeyNamesItsLine) {
   TomlDocument doc = TomlDocument::parse("a = 1\n\n[t]\nb = 2\ntypo = 3\n", "s.toml");
   TomlTable root = doc.root();

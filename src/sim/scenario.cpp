@@ -49,6 +49,30 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
   return spec;
 }
 
+ValidationSettings parseValidation(TomlTable& table, const std::filesystem::path& scenarioFolder) {
+  ValidationSettings v;
+  v.where = table.where("yield_table");
+  v.yieldTable = scenarioFolder / table.string("yield_table");
+  v.species = table.string("species");
+  for (double age : table.numberList("checked_ages", std::vector<double>{}, {1.0, 10000.0}))
+    v.checkedAges.push_back(static_cast<int>(age));
+  v.tolerance = table.number("tolerance", v.tolerance, {0.0, 10.0});
+  const std::vector<double> years =
+      table.numbers("self_thinning_years", 2, std::vector<double>{60.0, 120.0}, {1.0, 10000.0});
+  v.thinningFrom_years = static_cast<int>(years[0]);
+  v.thinningTo_years = static_cast<int>(years[1]);
+  if (v.thinningTo_years <= v.thinningFrom_years)
+    table.fail("self_thinning_years", "expected [first, last] with first < last");
+  const std::vector<double> slopes =
+      table.numbers("self_thinning_slope", 2, std::vector<double>{-2.0, -1.3}, {-10.0, 0.0});
+  v.steepestThinningSlope = slopes[0];
+  v.shallowestThinningSlope = slopes[1];
+  if (v.shallowestThinningSlope <= v.steepestThinningSlope)
+    table.fail("self_thinning_slope", "expected [steepest, shallowest], the steepest first");
+  table.finish();
+  return v;
+}
+
 }  // namespace
 
 Scenario loadScenario(const std::filesystem::path& file) {
@@ -69,6 +93,11 @@ Scenario loadScenario(const std::filesystem::path& file) {
         climate->number("prevailing_wind_from_deg", c.prevailingWindFrom_deg, {0.0, 360.0});
     c.annualPrecipitation_mm =
         climate->number("annual_precipitation_mm", c.annualPrecipitation_mm, {0.0, 15000.0});
+    c.meanAnnualTemperature_c =
+        climate->number("mean_annual_temperature_c", c.meanAnnualTemperature_c, {-30.0, 35.0});
+    c.temperatureAltitude_m =
+        climate->number("temperature_altitude_m", c.temperatureAltitude_m, {-500.0, 9000.0});
+    c.lapseRate_K_per_m = climate->number("lapse_rate_k_per_m", c.lapseRate_K_per_m, {0.0, 0.012});
     climate->finish();
   }
   if (std::optional<TomlTable> simulation = root.table("simulation")) {
@@ -81,13 +110,6 @@ Scenario loadScenario(const std::filesystem::path& file) {
       sim.suitability = SuitabilityRule::Product;
     else
       simulation->fail("suitability", "unknown rule '" + rule + "' (expected minimum or product)");
-    sim.maxStemsPerHa = simulation->number("max_stems_per_ha", sim.maxStemsPerHa, {1.0, 1e6});
-    sim.maxSeedlingsPerHa =
-        simulation->number("max_seedlings_per_ha", sim.maxSeedlingsPerHa, {1.0, 1e6});
-    sim.lightDirections =
-        static_cast<int>(simulation->integer("light_directions", sim.lightDirections, {4, 256}));
-    sim.lightRefreshYears = static_cast<int>(
-        simulation->integer("light_refresh_years", sim.lightRefreshYears, {1, 10}));
     simulation->finish();
   }
   for (TomlTable& entry : root.tables("species")) {
@@ -98,11 +120,24 @@ Scenario loadScenario(const std::filesystem::path& file) {
     entry.finish();
     s.species.push_back(std::move(species));
   }
+  for (TomlTable& entry : root.tables("planting")) {
+    Planting planting;
+    planting.where = entry.where("species");
+    planting.species = entry.string("species");
+    planting.spacing_m = entry.number("spacing_m", planting.spacing_m, {0.5, 1000.0});
+    planting.height_m = entry.number("height_m", planting.height_m, {0.05, 1.29});
+    entry.finish();
+    s.planting.push_back(std::move(planting));
+  }
+  if (std::optional<TomlTable> validation = root.table("validation"))
+    s.validation = parseValidation(*validation, file.parent_path());
   s.output.dir = std::filesystem::path("out") / s.name;
   if (std::optional<TomlTable> output = root.table("output")) {
     if (output->has("dir")) s.output.dir = output->string("dir");
     s.output.snapshotEveryYears = static_cast<int>(
         output->integer("snapshot_every_years", s.output.snapshotEveryYears, {1, 100000}));
+    s.output.checkpointEveryYears = static_cast<int>(
+        output->integer("checkpoint_every_years", s.output.checkpointEveryYears, {1, 100000}));
     output->finish();
   }
   root.finish();

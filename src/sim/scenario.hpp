@@ -32,6 +32,15 @@ struct Climate {
   double latitude_deg = 46.0;
   double prevailingWindFrom_deg = 270.0;
   double annualPrecipitation_mm = 1100.0;
+  // Mean annual air temperature at a reference altitude, and how it falls with height
+  // (the standard atmosphere's 6.5 K per km): altitude acts on species through it.
+  double meanAnnualTemperature_c = 9.5;
+  double temperatureAltitude_m = 300.0;
+  double lapseRate_K_per_m = 0.0065;
+  // The mean annual temperature at an altitude.
+  double temperatureAt(double altitude_m) const {
+    return meanAnnualTemperature_c - lapseRate_K_per_m * (altitude_m - temperatureAltitude_m);
+  }
 };
 
 // How a plant's site suitability combines its five per-condition suitabilities.
@@ -40,16 +49,29 @@ enum class SuitabilityRule { Minimum, Product };
 struct SimulationSettings {
   int years = 100;
   SuitabilityRule suitability = SuitabilityRule::Minimum;  // Liebig's law by default
-  // Density caps, turned into plants per cell: stems of breast height and more (the canopy
-  // layer) and plants below it (the regeneration layer, where seeds establish).
-  double maxStemsPerHa = 1000.0;
-  double maxSeedlingsPerHa = 500.0;
-  int lightDirections = 16;  // sky directions of each plant's light estimate
-  // A stem's light is traced every this many years (a different share of the stems each
-  // year) and kept in between: a tree's light changes slowly, and tracing is most of a
-  // year's work. Seedlings get their ground light every year; a new stem keeps its last
-  // ground light until its turn.
-  int lightRefreshYears = 2;
+};
+
+// A stand planted at the start of the run: one species on a square grid over the whole map
+// (docs/scenario.md).
+struct Planting {
+  std::string species;  // the name of one of the scenario's species
+  double spacing_m = 2.0;
+  double height_m = 0.3;  // of the planted stock
+  SourceLocation where;
+};
+
+// A [validation] table: the yield table a planted pure stand of the scenario should follow
+// (`ecoforest validate`, docs/validation.md).
+struct ValidationSettings {
+  std::filesystem::path yieldTable;  // relative to the scenario file
+  std::string species;               // the planted species measured
+  std::vector<int> checkedAges;      // ages compared; empty: every age of the table
+  double tolerance = 0.15;           // largest relative difference accepted
+  // The stand's self-thinning line, ln N over ln qmd, fitted over these years, and the
+  // slopes accepted (Reineke's is -1.605).
+  int thinningFrom_years = 60, thinningTo_years = 120;
+  double steepestThinningSlope = -2.0, shallowestThinningSlope = -1.3;
+  SourceLocation where;
 };
 
 struct ScenarioSpecies {
@@ -61,6 +83,9 @@ struct ScenarioSpecies {
 struct OutputSettings {
   std::filesystem::path dir;  // relative to the working directory; default out/<name>
   int snapshotEveryYears = 10;
+  // The checkpoint (all plants) is rewritten every this many years, at the last year and
+  // when a run is stopped; a run killed outright resumes from the last one written.
+  int checkpointEveryYears = 1;
 };
 
 struct Scenario {
@@ -71,6 +96,8 @@ struct Scenario {
   Climate climate;
   SimulationSettings simulation;
   std::vector<ScenarioSpecies> species;  // empty for terrain-only scenarios
+  std::vector<Planting> planting;
+  std::optional<ValidationSettings> validation;
   OutputSettings output;
 };
 

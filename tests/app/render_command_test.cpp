@@ -20,7 +20,7 @@ std::pair<int, int> pngSize(const std::filesystem::path& file) {
 TEST(RenderCommand, ARunFolderRendersAStillWithItsStatistics) {
   const auto out = eco::test::freshDirectory("app_render") / "still.png";
   CommandResult r = ecoforest("render " + shortDefaultRun().string() +
-                              " --year 10 --size 320x180 --stats --out " + out.string());
+                              " --year 20 --size 320x180 --stats --out " + out.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(pngSize(out), std::make_pair(320, 180));
   const auto json = nlohmann::json::parse(r.output.substr(r.output.find('{')));

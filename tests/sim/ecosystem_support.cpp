@@ -17,7 +17,8 @@ EcosystemSpecies testSpecies(const std::string& name, const TestEcology& e) {
   const std::string text =
       withoutEcology("beech") + fmt::format(R"(
 [ecology]
-ellenberg = {{ light = 3, temperature = "x", moisture = "x", continentality = "x" }}
+ellenberg = {{ light = 3, temperature = "x", moisture = "x" }}
+wind_firmness = 160.0
 {}
 [ecology.tolerance]
 {}
@@ -26,20 +27,26 @@ max_age_years = 300
 max_height_m = {}
 height_growth_rate = 0.03
 height_growth_shape = 1.4
-max_dbh_m = 1.0
-dbh_growth_rate = 0.012
-dbh_growth_shape = 1.3
-crown_radius_m = [[0, 0.3], [0.1, 1.8], [0.5, 6.0], [1.0, 9.0]]
+form_factor = 0.45
+foliage_biomass = [0.021708, 1.7]
+stem_biomass = [0.22225, 2.2503739]
+branch_biomass = [0.022, 2.3]
+coarse_root_biomass = [0.018, 2.32]
+specific_leaf_area_m2_per_kg = 11.0
+leaf_turnover_per_year = 1.0
+fine_root_foliage_ratio = 0.75
+fine_root_turnover_per_year = 1.0
+crown_diameter_silva = [0.5856485, 0.4298499, -0.003455, -0.3238132]
 crown_ratio = 0.6
-crown_transmittance = 0.05
+light_use_efficiency = 1.5
 maturity_age_years = {}
-seeds_per_year = {}
+fecundity_per_m2 = {}
 germination = {}
 dispersal = "{}"
 dispersal_mean_m = {}
 )",
                                             e.ecologyLines, e.toleranceLines, e.maxHeight_m,
-                                            e.maturityAge_years, e.seedsPerYear, e.germination,
+                                            e.maturityAge_years, e.fecundityPerM2, e.germination,
                                             e.dispersal, e.dispersalMean_m);
   const std::filesystem::path folder = freshDirectory("species_" + name);
   const std::filesystem::path file = folder / (name + ".toml");
@@ -62,16 +69,16 @@ ConditionFields uniformConditions(const Terrain& terrain) {
   f.altitude_m = terrain.height_m;
   f.slope_deg.assign(n, 0.0f);
   f.aspect_deg.assign(n, -1.0f);
-  f.moisture.assign(n, 0.5f);
+  f.moisture.assign(n, 5.0f);  // Ellenberg's F of fresh soil
   f.windiness.assign(n, 0.1f);
-  f.sunniness.assign(n, 0.8f);
+  f.sunniness.assign(n, 1.0f);
   return f;
 }
 
 EcosystemSpecies inEcosystem(EcosystemSpecies species, const ConditionFields& fields,
                              double seedRainPerHaPerYear) {
   species.suitability =
-      siteSuitability(species.ecology.tolerance, fields, SuitabilityRule::Minimum);
+      siteSuitability(species.ecology.tolerances(Climate{}), fields, SuitabilityRule::Minimum);
   species.seedRainPerHaPerYear = seedRainPerHaPerYear;
   return species;
 }

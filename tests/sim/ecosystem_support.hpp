@@ -23,7 +23,7 @@ struct TestEcology {
   std::string toleranceLines;
   double maxHeight_m = 30.0;
   int maturityAge_years = 10;
-  double seedsPerYear = 20.0;
+  double fecundityPerM2 = 20.0;
   double germination = 0.5;
   double dispersalMean_m = 20.0;
   std::string dispersal = "animal";
@@ -44,7 +44,8 @@ EcosystemSpecies inEcosystem(EcosystemSpecies species, const ConditionFields& fi
 struct OneHectare : ::testing::Test {
   Terrain terrain = analyticTerrain(10, 10, 10.0, 10.0, [](double, double) { return 50.0; });
   ConditionFields fields = uniformConditions(terrain);
-  Ecosystem ecosystem{terrain, {inEcosystem(testSpecies("t", {}), fields)}, EcosystemSettings{}};
+  Ecosystem ecosystem{
+      terrain, fields, {inEcosystem(testSpecies("t", {}), fields)}, EcosystemSettings{}};
 };
 
 }  // namespace eco::test

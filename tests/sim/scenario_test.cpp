@@ -54,8 +54,8 @@ annual_precipitation_mm = 1100.0
 TEST(Scenario, ReadsTheSimulationTable) {
   const Scenario defaults =
       loadScenario(write("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n"));
-  EXPECT_EQ(defaults.simulation.lightRefreshYears, 2);
-  EXPECT_DOUBLE_EQ(defaults.simulation.maxStemsPerHa, 1000.0);
+  EXPECT_EQ(defaults.simulation.years, 100);
+  EXPECT_EQ(defaults.simulation.suitability, SuitabilityRule::Minimum);
   const Scenario s = loadScenario(write(R"([terrain]
 cell_size_m = 5
 [terrain.generate]
@@ -63,19 +63,99 @@ size = 9
 [simulation]
 years = 150
 suitability = "product"
-max_stems_per_ha = 600
-light_directions = 24
-light_refresh_years = 1
 )"));
   EXPECT_EQ(s.simulation.years, 150);
   EXPECT_EQ(s.simulation.suitability, SuitabilityRule::Product);
-  EXPECT_DOUBLE_EQ(s.simulation.maxStemsPerHa, 600.0);
-  EXPECT_EQ(s.simulation.lightDirections, 24);
-  EXPECT_EQ(s.simulation.lightRefreshYears, 1);
   EXPECT_NE(std::string(errorOf("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = "
-                                "9\n[simulation]\nlight_refresh_years = 0\n")
+                                "9\n[simulation]\nyears = 0\n")
                             .what())
-                .find("s.toml:6: simulation.light_refresh_years: value 0 is outside [1, 10]"),
+                .find("s.toml:6: simulation.years: value 0 is outside [1, 100000]"),
+            std::string::npos);
+}
+
+TEST(Scenario, ReadsTheOutputTable) {
+  const Scenario defaults =
+      loadScenario(write("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n"));
+  EXPECT_EQ(defaults.output.snapshotEveryYears, 10);
+  EXPECT_EQ(defaults.output.checkpointEveryYears, 1);
+  const Scenario s = loadScenario(write(R"([terrain]
+cell_size_m = 5
+[terrain.generate]
+size = 9
+[output]
+snapshot_every_years = 5
+checkpoint_every_years = 25
+)"));
+  EXPECT_EQ(s.output.snapshotEveryYears, 5);
+  EXPECT_EQ(s.output.checkpointEveryYears, 25);
+}
+
+TEST(Scenario, ReadsTheValidationTable) {
+  const Scenario s = loadScenario(write(R"([terrain]
+cell_size_m = 5
+[terrain.generate]
+size = 9
+[validation]
+yield_table = "table.csv"
+species = "beech"
+checked_ages = [100, 140]
+)"));
+  ASSERT_TRUE(s.validation.has_value());
+  EXPECT_EQ(s.validation->yieldTable, s.file.parent_path() / "table.csv");
+  EXPECT_EQ(s.validation->species, "beech");
+  EXPECT_EQ(s.validation->checkedAges, (std::vector<int>{100, 140}));
+  EXPECT_DOUBLE_EQ(s.validation->tolerance, 0.15);
+  EXPECT_EQ(s.validation->thinningFrom_years, 60);
+  EXPECT_EQ(s.validation->thinningTo_years, 120);
+  EXPECT_DOUBLE_EQ(s.validation->steepestThinningSlope, -2.0);
+  EXPECT_NE(std::string(errorOf("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n"
+                                "[validation]\nyield_table = \"t.csv\"\nspecies = \"b\"\n"
+                                "self_thinning_slope = [-1.3, -2.0]\n")
+                            .what())
+                .find("s.toml:8: validation.self_thinning_slope: expected [steepest, shallowest]"),
+            std::string::npos);
+}
+
+TEST(Scenario, ClimateTemperatureFallsWithTheLapseRate) {
+  const Scenario s = loadScenario(write(R"([terrain]
+cell_size_m = 5
+[terrain.generate]
+size = 9
+[climate]
+mean_annual_temperature_c = 8.5
+temperature_altitude_m = 400
+lapse_rate_k_per_m = 0.006
+)"));
+  EXPECT_DOUBLE_EQ(s.climate.temperatureAt(400.0), 8.5);
+  EXPECT_NEAR(s.climate.temperatureAt(1400.0), 2.5, 1e-12);  // 1 km higher, 6 K colder
+  EXPECT_NEAR(s.climate.temperatureAt(0.0), 10.9, 1e-12);
+  // The defaults: 9.5 degC at 300 m, the standard atmosphere's 6.5 K per km.
+  EXPECT_NEAR(Climate{}.temperatureAt(1300.0), 3.0, 1e-12);
+}
+
+TEST(Scenario, ReadsPlantings) {
+  const Scenario s = loadScenario(write(R"([terrain]
+cell_size_m = 5
+[terrain.generate]
+size = 9
+[[planting]]
+species = "beech"
+spacing_m = 1.5
+height_m = 0.4
+[[planting]]
+species = "pine"
+)"));
+  ASSERT_EQ(s.planting.size(), 2u);
+  EXPECT_EQ(s.planting[0].species, "beech");
+  EXPECT_DOUBLE_EQ(s.planting[0].spacing_m, 1.5);
+  EXPECT_DOUBLE_EQ(s.planting[0].height_m, 0.4);
+  EXPECT_EQ(s.planting[1].species, "pine");
+  EXPECT_DOUBLE_EQ(s.planting[1].spacing_m, 2.0);
+  EXPECT_EQ(s.planting[1].where.line, 10);
+  EXPECT_NE(std::string(errorOf("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = "
+                                "9\n[[planting]]\nspecies = \"beech\"\nheight_m = 2\n")
+                            .what())
+                .find("s.toml:7: planting[0].height_m: value 2 is outside [0.05, 1.29]"),
             std::string::npos);
 }
 

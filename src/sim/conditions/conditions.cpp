@@ -13,7 +13,7 @@ const std::vector<FieldInfo>& conditionFieldInfo() {
       {"altitude", "m", &ConditionFields::altitude_m},
       {"slope", "degrees", &ConditionFields::slope_deg},
       {"aspect", "degrees", &ConditionFields::aspect_deg},
-      {"moisture", "0-1", &ConditionFields::moisture},
+      {"moisture", "Ellenberg F", &ConditionFields::moisture},
       {"windiness", "0-1", &ConditionFields::windiness},
       {"sunniness", "0-1", &ConditionFields::sunniness},
   };
@@ -49,6 +49,7 @@ ConditionFields computeConditions(const Terrain& terrain, const Climate& climate
                        if (progress) progress("sunniness", f);
                      });
   });
+  fields.openFlatSunniness = 1.0 / parts.best;
   if (report) {
     report->sunRays = parts.rays;
     report->sunRaysPerSecond = sunMs > 0.0 ? parts.rays / (sunMs / 1000.0) : 0.0;

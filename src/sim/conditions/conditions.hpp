@@ -17,10 +17,15 @@ struct ConditionFields {
   Grid grid;
   Field altitude_m;
   Field slope_deg;
-  Field aspect_deg;  // compass bearing faced, -1 where flat
-  Field moisture;    // 0..1
-  Field windiness;   // 0..1
-  Field sunniness;   // 0..1
+  Field aspect_deg;                // compass bearing faced, -1 where flat
+  Field moisture;                  // the site's moisture number, Ellenberg's F scale 1..12
+  Field windiness;                 // 0..1
+  Field sunniness;                 // 0..1: 1 the sunniest slope of the latitude
+  double openFlatSunniness = 1.0;  // sunniness of open, level ground
+
+  // Light reaching the top of the canopy at a cell through the terrain, as a fraction of
+  // what open level ground gets (above 1 on sunny slopes).
+  double terrainLight(std::size_t cell) const { return sunniness[cell] / openFlatSunniness; }
 };
 
 // Name, unit and member of each field, in output order.

@@ -93,16 +93,21 @@ Field wetnessIndex(const Terrain& terrain, const Field& accumulation, const Fiel
   return twi;
 }
 
+double climateMoisture(double precipitation_mm) {
+  return kMoistureAt1100mm + (precipitation_mm - 1100.0) / kPrecipitationPerUnit_mm;
+}
+
 void computeMoisture(const Terrain& terrain, const Field& slope_deg, double precipitation_mm,
                      Field& moisture) {
   const std::vector<double> filled = fillDepressions(terrain);
   Field twi = wetnessIndex(terrain, flowAccumulation(terrain, filled, slope_deg), slope_deg);
-  const double wetClimate = 1.0 - std::exp(-precipitation_mm / 800.0);
+  const double climate = climateMoisture(precipitation_mm);
   moisture.resize(twi.size());
   for (std::size_t c = 0; c < twi.size(); ++c) {
-    const bool pond = filled[c] - terrain.height_m[c] > kDepression_m;
-    double topographic = pond ? 1.0 : std::clamp((twi[c] - 4.0) / 12.0, 0.0, 1.0);
-    moisture[c] = static_cast<float>(wetClimate * (0.3 + 0.7 * topographic));
+    double f = climate + kMoisturePerWetness * (twi[c] - kReferenceWetness);
+    // Standing water: a depression deeper than a centimetre is at least wet (F 9).
+    if (filled[c] - terrain.height_m[c] > kDepression_m) f = std::max(f, kPondMoisture);
+    moisture[c] = static_cast<float>(std::clamp(f, kDriestMoisture, kWettestMoisture));
   }
 }
 

@@ -24,9 +24,17 @@ Field flowAccumulation(const Terrain& terrain, const std::vector<double>& filled
 // width), beta the slope, at least 0.1 degree.
 Field wetnessIndex(const Terrain& terrain, const Field& accumulation, const Field& slope_deg);
 
-// moisture = P * (0.3 + 0.7 * T), P = 1 - exp(-precipitation / 800 mm),
-// T = clamp((TWI - 4) / 12, 0, 1), and T = 1 in depressions (filled more than 1 cm: ponds
-// and wetlands, where water stands).
+// The site's moisture number on Ellenberg's F scale (1 extremely dry .. 12 under water; ours,
+// docs/conditions.md): the climate's number, F = 5 (fresh) at 1100 mm and one unit per
+// 400 mm more or less, plus a quarter unit per unit of TWI above the reference wetness 6 of
+// an open mid-slope (100 m below its ridge at 15 degrees: ln(100 / 0.27) = 5.9), and at least
+// F = 9 (wet) in depressions that hold water. A quarter unit spreads the TWI of hill country
+// (about 3 on ridges to 15 on valley floors) over the three units of F its woods span, from
+// the dry ridges' F 4 to the moist valleys' F 7. Continuous: only the scale's ends clamp it.
+inline constexpr double kMoistureAt1100mm = 5.0, kPrecipitationPerUnit_mm = 400.0;
+inline constexpr double kMoisturePerWetness = 0.25, kReferenceWetness = 6.0;
+inline constexpr double kPondMoisture = 9.0, kDriestMoisture = 1.0, kWettestMoisture = 12.0;
+double climateMoisture(double precipitation_mm);
 void computeMoisture(const Terrain& terrain, const Field& slope_deg, double precipitation_mm,
                      Field& moisture);
 

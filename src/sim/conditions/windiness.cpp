@@ -52,16 +52,38 @@ Field upwindSlope(const Terrain& terrain, double from_deg, double searchDistance
   return sx;
 }
 
+Field elevationAngle(const Terrain& terrain, double radius_m) {
+  const Grid& g = terrain.grid;
+  // A summed-area table gives each cell the mean height of the square around it.
+  const int w = g.width, h = g.height;
+  std::vector<double> sum(static_cast<std::size_t>(w + 1) * (h + 1), 0.0);
+  auto at = [&](int x, int y) -> double& { return sum[static_cast<std::size_t>(y) * (w + 1) + x]; };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      at(x + 1, y + 1) = terrain.heightAt(x, y) + at(x, y + 1) + at(x + 1, y) - at(x, y);
+  const int rx = std::max(1, static_cast<int>(std::lround(radius_m / g.dx_m)));
+  const int ry = std::max(1, static_cast<int>(std::lround(radius_m / g.dy_m)));
+  Field angle(g.cellCount());
+  tbb::parallel_for(0, h, [&](int y) {
+    const int y0 = std::max(0, y - ry), y1 = std::min(h, y + ry + 1);
+    for (int x = 0; x < w; ++x) {
+      const int x0 = std::max(0, x - rx), x1 = std::min(w, x + rx + 1);
+      const double mean = (at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0)) /
+                          (static_cast<double>(x1 - x0) * (y1 - y0));
+      angle[g.index(x, y)] =
+          static_cast<float>(degrees(std::atan((terrain.heightAt(x, y) - mean) / radius_m)));
+    }
+  });
+  return angle;
+}
+
 void computeWindiness(const Terrain& terrain, double from_deg, Field& windiness) {
-  Field sx = upwindSlope(terrain, from_deg);
-  auto [lo, hi] = std::minmax_element(terrain.height_m.begin(), terrain.height_m.end());
-  const double low = *lo, relief = *hi - *lo;
+  const Field sx = upwindSlope(terrain, from_deg);
+  const Field rise = elevationAngle(terrain, kPositionRadius_m);
   windiness.resize(sx.size());
-  for (std::size_t c = 0; c < sx.size(); ++c) {
-    double exposure = std::clamp(0.5 - sx[c] / 30.0, 0.0, 1.0);
-    double altitude = relief > 1e-6 ? (terrain.height_m[c] - low) / relief : 0.0;
-    windiness[c] = static_cast<float>(0.7 * exposure + 0.3 * altitude);
-  }
+  for (std::size_t c = 0; c < sx.size(); ++c)
+    windiness[c] = static_cast<float>(
+        std::clamp(kOpenGroundWindiness + (rise[c] - sx[c]) / kExposureScale_deg, 0.0, 1.0));
 }
 
 }  // namespace eco

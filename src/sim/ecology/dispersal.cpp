@@ -1,18 +1,120 @@
 #include "sim/ecology/dispersal.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <numbers>
+#include <map>
+
+#include <tbb/parallel_for.h>
+
+#include "core/angles.hpp"
 
 namespace eco {
+namespace {
 
-glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng) {
-  const bool far = life.longDistanceFraction > 0.0 && rng.uniform() < life.longDistanceFraction;
-  const double mean_m = far ? life.longDistanceMean_m : life.dispersalMean_m;
+// Seeds sampled to build a stencil: its shares are good to about a thousandth.
+constexpr int kStencilSamples = 400000;
+constexpr double kReachInMeans = 5.0;
+
+}  // namespace
+
+glm::dvec2 seedOffsetFrom(const LifeHistory& life, bool longDistance, glm::dvec2 downwind,
+                          Rng& rng) {
+  const double mean_m = longDistance ? life.longDistanceMean_m : life.dispersalMean_m;
   const double distance = -mean_m * std::log(1.0 - rng.uniform());
-  const double angle = 2.0 * std::numbers::pi * rng.uniform();
+  const double angle = 2.0 * kPi * rng.uniform();
   glm::dvec2 offset(distance * std::cos(angle), distance * std::sin(angle));
   if (life.dispersal == DispersalVector::Wind) offset += life.downwindBias * distance * downwind;
   return offset;
+}
+
+glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng) {
+  const bool far = life.longDistanceFraction > 0.0 && rng.uniform() < life.longDistanceFraction;
+  return seedOffsetFrom(life, far, downwind, rng);
+}
+
+SeedMap::SeedMap(const Grid& terrain, const std::vector<const LifeHistory*>& species,
+                 glm::dvec2 downwind)
+    : originEast_m_(-0.5 * terrain.dx_m),
+      originNorth_m_(-0.5 * terrain.dy_m),
+      width_m_(terrain.width * terrain.dx_m),
+      height_m_(terrain.height * terrain.dy_m) {
+  for (int s = 0; s < static_cast<int>(species.size()); ++s) {
+    const LifeHistory& life = *species[s];
+    for (bool far : {false, true}) {
+      const double share = far ? life.longDistanceFraction : 1.0 - life.longDistanceFraction;
+      if (share <= 0.0) continue;
+      Layer layer;
+      layer.species = s;
+      layer.share = share;
+      const double mean_m = far ? life.longDistanceMean_m : life.dispersalMean_m;
+      layer.cell_m = std::clamp(0.8 * mean_m, 10.0, 100.0);
+      layer.width = std::max(1, static_cast<int>(std::ceil(width_m_ / layer.cell_m)));
+      layer.height = std::max(1, static_cast<int>(std::ceil(height_m_ / layer.cell_m)));
+      // The stencil: where a source cell's seeds land, in cells, sampled from the kernel
+      // (the source anywhere in its cell), out to five means.
+      Rng rng(streamKey(static_cast<std::uint64_t>(s), far ? 1 : 0, purpose("seed stencil")));
+      std::map<std::pair<int, int>, int> counts;
+      const double reach = kReachInMeans * mean_m * (1.0 + life.downwindBias);
+      for (int k = 0; k < kStencilSamples; ++k) {
+        const glm::dvec2 start(rng.uniform(), rng.uniform());
+        const glm::dvec2 offset = seedOffsetFrom(life, far, downwind, rng);
+        if (std::hypot(offset.x, offset.y) > reach) continue;
+        const glm::dvec2 land = start + offset / layer.cell_m;
+        ++counts[{static_cast<int>(std::floor(land.x)), static_cast<int>(std::floor(land.y))}];
+      }
+      for (const auto& [cell, count] : counts)
+        layer.stencil.push_back({cell.first, cell.second,
+                                 static_cast<float>(static_cast<double>(count) / kStencilSamples)});
+      layer.sources.assign(static_cast<std::size_t>(layer.width) * layer.height, 0.0);
+      layer.density.assign(layer.sources.size(), 0.0f);
+      layers_.push_back(std::move(layer));
+    }
+  }
+}
+
+std::size_t SeedMap::cellOf(const Layer& layer, double east_m, double north_m) const {
+  const int x = std::clamp(static_cast<int>(std::floor((east_m - originEast_m_) / layer.cell_m)), 0,
+                           layer.width - 1);
+  const int y = std::clamp(static_cast<int>(std::floor((north_m - originNorth_m_) / layer.cell_m)),
+                           0, layer.height - 1);
+  return static_cast<std::size_t>(y) * layer.width + x;
+}
+
+void SeedMap::clear() {
+  for (Layer& layer : layers_) std::fill(layer.sources.begin(), layer.sources.end(), 0.0);
+}
+
+void SeedMap::addSeeds(int species, double east_m, double north_m, double seeds) {
+  for (Layer& layer : layers_)
+    if (layer.species == species)
+      layer.sources[cellOf(layer, east_m, north_m)] += seeds * layer.share;
+}
+
+void SeedMap::disperse() {
+  for (Layer& layer : layers_) {
+    // Gathered, not scattered: each target cell sums the sources whose seeds reach it, so
+    // rows can run in parallel and the sums do not depend on the thread count.
+    const double area = layer.cell_m * layer.cell_m;
+    tbb::parallel_for(0, layer.height, [&](int y) {
+      for (int x = 0; x < layer.width; ++x) {
+        double seeds = 0.0;
+        for (const Tap& tap : layer.stencil) {
+          const int sx = x - tap.dx, sy = y - tap.dy;
+          if (sx < 0 || sy < 0 || sx >= layer.width || sy >= layer.height) continue;
+          seeds += layer.sources[static_cast<std::size_t>(sy) * layer.width + sx] * tap.share;
+        }
+        layer.density[static_cast<std::size_t>(y) * layer.width + x] =
+            static_cast<float>(seeds / area);
+      }
+    });
+  }
+}
+
+double SeedMap::density(int species, double east_m, double north_m) const {
+  double seeds = 0.0;
+  for (const Layer& layer : layers_)
+    if (layer.species == species) seeds += layer.density[cellOf(layer, east_m, north_m)];
+  return seeds;
 }
 
 }  // namespace eco

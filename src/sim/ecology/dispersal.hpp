@@ -1,17 +1,63 @@
-// Where seeds land (docs/ecology.md, "Reproduction"): an exponential kernel in distance with
-// the species' mean, in a uniformly random direction; wind-dispersed seeds also drift
+// Where seeds land (docs/ecology.md, "Reproduction").
+// A seed travels an exponentially distributed distance in a uniformly random direction, with
+// the species' mean; a two-part kernel sends a share of the seeds with a longer mean instead
+// (TreeMig, Lischke et al. 2006, as iLand parameterises it), and wind-dispersed seeds drift
 // downwind by downwind_bias metres per metre travelled.
+// A year's seeds are not followed one by one (a mast year of beech sends millions per
+// hectare): each species' mature crowns put their seeds onto a grid of sources, and the
+// kernel, sampled once into a stencil, spreads them into a density of seeds per m2 over the
+// map. The kernel's short part lies on a grid of 0.8 times its mean (10 .. 100 m), the long
+// part on its own coarser grid, each out to five means.
 #pragma once
+
+#include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "core/random.hpp"
 #include "sim/ecology/species_ecology.hpp"
+#include "sim/grid.hpp"
 
 namespace eco {
 
-// The map offset (east, north) of one seed from its parent. `downwind` is the unit vector
-// toward which the prevailing wind blows.
+// The map offset (east, north) of one seed from its parent, from the kernel's short part or
+// its long part. `downwind` is the unit vector toward which the prevailing wind blows.
+glm::dvec2 seedOffsetFrom(const LifeHistory& life, bool longDistance, glm::dvec2 downwind,
+                          Rng& rng);
+// One seed of the whole kernel (the long part with the species' long-distance share).
 glm::dvec2 seedOffset(const LifeHistory& life, glm::dvec2 downwind, Rng& rng);
+
+// Seed density over the map, species by species, for one year.
+class SeedMap {
+ public:
+  SeedMap(const Grid& terrain, const std::vector<const LifeHistory*>& species, glm::dvec2 downwind);
+
+  // Starts a year: no seeds.
+  void clear();
+  void addSeeds(int species, double east_m, double north_m, double seeds);
+  // Spreads the sources by each species' kernel.
+  void disperse();
+  // Seeds per m2 of a species at a map position this year (before any seed rain).
+  double density(int species, double east_m, double north_m) const;
+
+ private:
+  struct Tap {
+    int dx, dy;
+    float share;  // of a source's seeds
+  };
+  struct Layer {  // one kernel part of one species on its own grid
+    int species = 0;
+    double share = 1.0;  // of the species' seeds that take this part
+    double cell_m = 20.0;
+    int width = 0, height = 0;
+    std::vector<Tap> stencil;
+    std::vector<double> sources;  // seeds per cell
+    std::vector<float> density;   // seeds per m2
+  };
+  std::size_t cellOf(const Layer& layer, double east_m, double north_m) const;
+
+  double originEast_m_, originNorth_m_, width_m_, height_m_;
+  std::vector<Layer> layers_;
+};
 
 }  // namespace eco

@@ -2,23 +2,42 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
 #include "core/frames.hpp"
 #include "core/random.hpp"
-#include "sim/ecology/dispersal.hpp"
 #include "sim/ecology/growth.hpp"
 
 namespace eco {
 namespace {
 
-constexpr float kGroundLightHeight_m = 0.5f;
-// Plants are processed in fixed chunks whose results are joined in order, so the outcome
-// does not depend on how TBB spreads the chunks over threads.
-constexpr std::size_t kChunk = 1024;
+// A crown keeps at least this share of the tree's height in leaves however dark it is
+// below: the rest of its fate is its carbon balance's.
+constexpr double kMinCrownShare = 0.1;
+// Individuals of a species differ in how fast they grow, for their genotype and the
+// microsite under them (soil depth, stones, a root's luck). The species' potential is what
+// its best individuals reach (a yield table's top height); each plant falls short of it by a
+// lasting factor 1 - spread |z|, z standard normal within 3 (ours, docs/ecology.md). Without
+// it a planted stand of identical trees would never differentiate and never thin itself.
+constexpr double kGrowthFactorSpread = 0.15;
+// Under a canopy that takes more than half the light the ground is covered in litter
+// (docs/ecology.md: where litter hinders a species' establishment).
+constexpr double kLitterLight = 0.5;
+
+Field terrainLightOf(const ConditionFields& fields) {
+  Field light(fields.sunniness.size());
+  for (std::size_t c = 0; c < light.size(); ++c)
+    light[c] = static_cast<float>(fields.terrainLight(c));
+  return light;
+}
+
+std::vector<const LifeHistory*> livesOf(const std::vector<EcosystemSpecies>& species) {
+  std::vector<const LifeHistory*> lives;
+  for (const EcosystemSpecies& s : species) lives.push_back(&s.ecology.life);
+  return lives;
+}
 
 }  // namespace
 
@@ -37,52 +56,38 @@ EcosystemSpecies readEcosystemSpecies(const std::filesystem::path& file,
   return s;
 }
 
-namespace {
-
-const LifeHistory& lifeOf(const EcosystemSpecies& s) {
-  return s.ecology.life;
-}
-
-template <typename F>
-void forEachChunk(std::size_t count, F&& f) {
-  const std::size_t chunks = (count + kChunk - 1) / kChunk;
-  tbb::parallel_for(std::size_t{0}, chunks,
-                    [&](std::size_t c) { f(c, c * kChunk, std::min(count, (c + 1) * kChunk)); });
-}
-
-}  // namespace
-
-Ecosystem::Ecosystem(const Terrain& terrain, std::vector<EcosystemSpecies> species,
-                     const EcosystemSettings& settings)
+Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
+                     std::vector<EcosystemSpecies> species, const EcosystemSettings& settings)
     : terrain_(terrain),
       species_(std::move(species)),
       settings_(settings),
-      sky_(makeLightDirections(settings.latitude_deg, settings.simulation.lightDirections)),
-      scene_(terrain),
-      groundLight_(terrain.grid.cellCount(), std::numeric_limits<float>::quiet_NaN()),
+      light_(terrain.grid, terrainLightOf(fields)),
+      seeds_(terrain.grid, livesOf(species_), mapDownwindOf(settings.windFrom_deg)),
+      regenerationX_(static_cast<int>(
+          std::ceil(terrain.grid.width * terrain.grid.dx_m / kRegenerationCell_m))),
+      regenerationY_(static_cast<int>(
+          std::ceil(terrain.grid.height * terrain.grid.dy_m / kRegenerationCell_m))),
       born_(species_.size(), 0),
       died_(species_.size(), 0) {
   ECO_ASSERT(species_.size() <= 255, "at most 255 species, got " << species_.size());
   for (const EcosystemSpecies& s : species_)
     ECO_ASSERT(s.suitability.size() == terrain.grid.cellCount(),
                "species " << s.species.name << " lacks its suitability field");
-  const double cellArea_ha = terrain.grid.dx_m * terrain.grid.dy_m / 1e4;
-  auto perCell = [&](double perHa) {
-    return std::max(1, static_cast<int>(std::lround(perHa * cellArea_ha)));
-  };
-  stemsPerCell_ = perCell(settings.simulation.maxStemsPerHa);
-  seedlingsPerCell_ = perCell(settings.simulation.maxSeedlingsPerHa);
 }
 
 void Ecosystem::restore(EcosystemState state) {
   state_ = std::move(state);
 }
 
+double Ecosystem::lightAt(double east_m, double north_m, double height_m) const {
+  return light_.lightAt(east_m, north_m, height_m);
+}
+
 std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   Plants& p = state_.plants;
   const std::size_t i = p.size();
   p.resize(i + 1);
-  const LifeHistory& life = lifeOf(species_[species]);
+  const LifeHistory& life = species_[species].ecology.life;
   p.id[i] = state_.nextId++;
   p.species[i] = static_cast<std::uint8_t>(species);
   p.east_m[i] = static_cast<float>(east_m);
@@ -94,9 +99,13 @@ std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   p.age_years[i] = 0;
   p.height_m[i] = static_cast<float>(life.seedlingHeight_m);
   p.dbh_m[i] = 0.0f;
+  p.crownBase_m[i] = 0.0f;
   p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, 0.0, life.seedlingHeight_m));
   p.vigor[i] = 1.0f;
   p.light[i] = 1.0f;
+  Rng rng(streamKey(settings_.seed, p.id[i], purpose("growth factor")));
+  p.growthFactor[i] =
+      static_cast<float>(1.0 - kGrowthFactorSpread * std::min(std::abs(rng.normal()), 3.0));
   p.variantSeed[i] = streamKey(settings_.seed, p.id[i], purpose("variant"));
   p.stressYears[i] = 0;
   p.alive[i] = 1;
@@ -108,229 +117,223 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
     throw InputError({}, "a plant must stand on the terrain");
   const std::size_t i = addPlant(species, east_m, north_m);
   Plants& p = state_.plants;
-  const LifeHistory& life = lifeOf(species_[species]);
-  p.age_years[i] = age_years;
-  p.height_m[i] = static_cast<float>(std::max(life.height_m.at(age_years), life.seedlingHeight_m));
-  if (p.height_m[i] >= kBreastHeight_m) {
-    // Diameter starts when the plant reaches breast height.
-    const double youngest = life.height_m.ageOf(kBreastHeight_m);
-    p.dbh_m[i] = static_cast<float>(life.dbh_m.at(age_years - youngest));
-  }
-  p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
-}
-
-void Ecosystem::buildCrowns() {
-  const Plants& p = state_.plants;
-  std::vector<float> crownDepth;  // optical depth along a whole crown's length, per species
-  for (const EcosystemSpecies& s : species_)
-    crownDepth.push_back(
-        static_cast<float>(-std::log(std::max(lifeOf(s).crownTransmittance, 1e-4))));
-  std::vector<Crown> crowns;
-  crowns.reserve(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.height_m[i] < kBreastHeight_m) continue;
-    const LifeHistory& life = lifeOf(species_[p.species[i]]);
-    const float length = static_cast<float>(life.crownRatio) * p.height_m[i];
-    Crown c;
-    c.centre = {p.east_m[i], p.north_m[i], p.ground_m[i] + p.height_m[i] - 0.5f * length};
-    c.radius_m = std::max(p.crownRadius_m[i], 0.05f);
-    c.halfLength_m = 0.5f * length;
-    c.opticalDepthPerMetre = crownDepth[p.species[i]] / length;
-    c.owner = static_cast<int>(i);
-    crowns.push_back(c);
-  }
-  scene_.setCrowns(std::move(crowns));
-  for (std::int32_t cell : groundLightCells_)
-    groundLight_[cell] = std::numeric_limits<float>::quiet_NaN();
-  groundLightCells_.clear();
-}
-
-double Ecosystem::groundLight(std::size_t cell) {
-  if (std::isnan(groundLight_[cell])) ensureGroundLight({static_cast<std::int32_t>(cell)});
-  return groundLight_[cell];
-}
-
-void Ecosystem::ensureGroundLight(std::vector<std::int32_t> cells) {
-  std::erase_if(cells, [&](std::int32_t c) { return !std::isnan(groundLight_[c]); });
-  std::sort(cells.begin(), cells.end());
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-  const Grid& g = terrain_.grid;
-  std::vector<LightProbe> probes(cells.size());
-  for (std::size_t k = 0; k < cells.size(); ++k) {
-    const int x = static_cast<int>(cells[k] % g.width), y = static_cast<int>(cells[k] / g.width);
-    probes[k].point = {g.eastOf(x), g.northOf(y), terrain_.heightAt(x, y) + kGroundLightHeight_m};
-  }
-  const std::vector<float> light = scene_.lightAt(probes, sky_);
-  for (std::size_t k = 0; k < cells.size(); ++k) groundLight_[cells[k]] = light[k];
-  groundLightCells_.insert(groundLightCells_.end(), cells.begin(), cells.end());
-}
-
-void Ecosystem::computeLightAndGrow() {
-  Plants& p = state_.plants;
-  const std::vector<float> heightBefore = p.height_m;
-  std::vector<std::int32_t> understorey;
-  std::vector<LightProbe> crownTops;
-  std::vector<std::uint32_t> stems;
-  const auto refresh = static_cast<std::uint64_t>(settings_.simulation.lightRefreshYears);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.height_m[i] < kBreastHeight_m) {
-      understorey.push_back(p.cell[i]);
-    } else if ((p.id[i] + static_cast<std::uint64_t>(state_.year)) % refresh == 0) {
-      crownTops.push_back({{p.east_m[i], p.north_m[i], p.ground_m[i] + p.height_m[i] + 0.01f},
-                           static_cast<int>(i)});
-      stems.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
-  ensureGroundLight(std::move(understorey));
-  const std::vector<float> stemLight = scene_.lightAt(crownTops, sky_);
-  for (std::size_t k = 0; k < stems.size(); ++k) p.light[stems[k]] = stemLight[k];
-  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    const EcosystemSpecies& s = species_[p.species[i]];
-    const LifeHistory& life = lifeOf(s);
-    if (p.height_m[i] < kBreastHeight_m) p.light[i] = groundLight_[p.cell[i]];
-    const double lightVigor = std::clamp(s.ecology.lightResponse(p.light[i]), 0.0, 1.0);
-    const double vigor = std::min<double>(s.suitability[p.cell[i]], lightVigor);
-    p.vigor[i] = static_cast<float>(vigor);
-    const double height = grownValue(life.height_m, p.height_m[i], vigor);
-    if (height >= kBreastHeight_m)
-      p.dbh_m[i] = static_cast<float>(grownValue(life.dbh_m, p.dbh_m[i], vigor));
-    p.height_m[i] = static_cast<float>(height);
-    p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], height));
-    p.age_years[i] += 1;
-    p.stressYears[i] = vigor < life.stressVigor
-                           ? static_cast<std::uint16_t>(std::min(p.stressYears[i] + 1, 60000))
-                           : std::uint16_t{0};
-  });
-  promoteSaplings(heightBefore);
-}
-
-// A sapling grows past breast height into the canopy layer only where its cell has room
-// there; otherwise it waits just below, as advance regeneration, until a stem dies.
-void Ecosystem::promoteSaplings(const std::vector<float>& heightBefore) {
-  Plants& p = state_.plants;
-  std::vector<int> stems(terrain_.grid.cellCount(), 0);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (heightBefore[i] >= kBreastHeight_m) ++stems[p.cell[i]];
-  // The most vigorous saplings take the free places first: under a light canopy a
-  // shade-tolerant sapling outgrows a light-demanding one.
-  std::vector<std::uint32_t> candidates;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (heightBefore[i] < kBreastHeight_m && p.height_m[i] >= kBreastHeight_m)
-      candidates.push_back(static_cast<std::uint32_t>(i));
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return p.vigor[a] > p.vigor[b]; });
-  for (std::uint32_t i : candidates) {
-    if (stems[p.cell[i]] < stemsPerCell_) {
-      ++stems[p.cell[i]];
+  const LifeHistory& life = species_[species].ecology.life;
+  // Grown alone: a sapling at its potential, then a tree with its whole crown in the light.
+  double height = life.seedlingHeight_m, dbh = 0.0;
+  for (int year = 0; year < age_years; ++year) {
+    if (height < kBreastHeight_m) {
+      height = growSapling(life, height, {}).height_m;
+      if (height >= kBreastHeight_m) dbh = saplingDiameter(life, height);
       continue;
     }
-    const LifeHistory& life = lifeOf(species_[p.species[i]]);
-    p.height_m[i] = std::nextafter(static_cast<float>(kBreastHeight_m), 0.0f);
-    p.dbh_m[i] = 0.0f;
-    p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, 0.0, p.height_m[i]));
+    const CrownShape crown{0.0f, 0.0f, static_cast<float>(crownRadiusOf(life, dbh, height)),
+                           static_cast<float>(height),
+                           static_cast<float>(leafAreaOf(life, dbh, height))};
+    const TreeYear grown =
+        growTree(life, dbh, height, crown.leafArea_m2, LightGrid::absorbedInTheOpen(crown), {});
+    dbh = grown.dbh_m;
+    height = grown.height_m;
   }
+  p.age_years[i] = age_years;
+  p.height_m[i] = static_cast<float>(height);
+  p.dbh_m[i] = static_cast<float>(dbh);
+  p.crownBase_m[i] =
+      height >= kBreastHeight_m ? static_cast<float>((1.0 - life.crownRatio) * height) : 0.0f;
+  p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, dbh, height));
+}
+
+void Ecosystem::plantSapling(int species, double east_m, double north_m, double height_m) {
+  const std::size_t i = addPlant(species, east_m, north_m);
+  const LifeHistory& life = species_[species].ecology.life;
+  Plants& p = state_.plants;
+  p.height_m[i] = static_cast<float>(std::min(height_m, std::nextafter(kBreastHeight_m, 0.0)));
+  p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, 0.0, p.height_m[i]));
+}
+
+CrownShape Ecosystem::crownOf(std::size_t i) const {
+  const Plants& p = state_.plants;
+  const LifeHistory& life = species_[p.species[i]].ecology.life;
+  return {p.east_m[i], p.north_m[i], std::max(p.crownRadius_m[i], 0.05f), p.height_m[i],
+          static_cast<float>(leafAreaOf(life, p.dbh_m[i], p.height_m[i]))};
+}
+
+void Ecosystem::computeLight() {
+  const Plants& p = state_.plants;
+  crowns_.clear();
+  crownOfPlant_.assign(p.size(), kNoCrown);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.height_m[i] >= kBreastHeight_m) {
+      crownOfPlant_[i] = static_cast<std::uint32_t>(crowns_.size());
+      crowns_.push_back(crownOf(i));
+    }
+  light_.compute(crowns_);
+}
+
+void Ecosystem::grow() {
+  Plants& p = state_.plants;
+  carbonDeficit_.assign(p.size(), 0.0f);
+  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+    const EcosystemSpecies& s = species_[p.species[i]];
+    const LifeHistory& life = s.ecology.life;
+    const double suitability = s.suitability[p.cell[i]];
+    p.age_years[i] += 1;
+    if (p.height_m[i] < kBreastHeight_m) {
+      const double light = light_.lightAt(p.east_m[i], p.north_m[i], 0.0);
+      const double response = std::clamp(s.ecology.lightResponse(light), 0.0, 1.0);
+      const SaplingYear year =
+          growSapling(life, p.height_m[i], {suitability, response, p.growthFactor[i]});
+      p.stressYears[i] = year.poor
+                             ? static_cast<std::uint16_t>(std::min(p.stressYears[i] + 1, 60000))
+                             : std::uint16_t{0};
+      p.height_m[i] = static_cast<float>(year.height_m);
+      if (year.height_m >= kBreastHeight_m) {
+        p.dbh_m[i] = static_cast<float>(saplingDiameter(life, year.height_m));
+        p.crownBase_m[i] = 0.0f;
+      }
+      p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
+      p.vigor[i] = static_cast<float>(suitability * response);
+      p.light[i] = static_cast<float>(light);
+      return;
+    }
+    const CrownShape& crown = crowns_[crownOfPlant_[i]];
+    const double absorbed = light_.absorbed(crownOfPlant_[i]);
+    const double open = LightGrid::absorbedInTheOpen(crown);
+    const double relative = open > 0.0 ? std::min(1.0, absorbed / open) : 0.0;
+    const double topLight = light_.lightAt(p.east_m[i], p.north_m[i], p.height_m[i] + 0.5);
+    // Height growth answers the light the whole crown gets, relative to the open.
+    const double response = std::clamp(s.ecology.lightResponse(relative), 0.0, 1.0);
+    const TreeYear year = growTree(life, p.dbh_m[i], p.height_m[i], crown.leafArea_m2, absorbed,
+                                   {suitability, response, p.growthFactor[i]});
+    carbonDeficit_[i] = static_cast<float>(year.carbonDeficit());
+    // The branches this year's light left below the compensation point die.
+    const double pruned = light_.heightWithLight(p.east_m[i], p.north_m[i], p.crownBase_m[i],
+                                                 p.height_m[i], leafCompensationLight(life));
+    p.crownBase_m[i] = static_cast<float>(std::min(std::max<double>(p.crownBase_m[i], pruned),
+                                                   (1.0 - kMinCrownShare) * year.height_m));
+    p.dbh_m[i] = static_cast<float>(year.dbh_m);
+    p.height_m[i] = static_cast<float>(year.height_m);
+    p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, year.dbh_m, year.height_m));
+    p.vigor[i] = static_cast<float>(relative * suitability);
+    p.light[i] = static_cast<float>(topLight);
+  });
+}
+
+void Ecosystem::produceSeeds() {
+  const Plants& p = state_.plants;
+  seeds_.clear();
+  std::vector<char> mast(species_.size());
+  for (std::size_t s = 0; s < species_.size(); ++s) {
+    Rng rng(streamKey(settings_.seed, state_.year, s, purpose("mast year")));
+    mast[s] = rng.uniform() * species_[s].ecology.life.mastIntervalYears < 1.0;
+  }
+  // In plant order: the source sums do not depend on the thread count.
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const LifeHistory& life = species_[p.species[i]].ecology.life;
+    if (p.height_m[i] < kBreastHeight_m || p.age_years[i] < life.maturityAge_years) continue;
+    const double suitability = species_[p.species[i]].suitability[p.cell[i]];
+    const double relative = suitability > 0.0 ? p.vigor[i] / suitability : 0.0;
+    const double seeds = seedProduction(life, p.crownRadius_m[i], mast[p.species[i]], relative);
+    if (seeds > 0.0) seeds_.addSeeds(p.species[i], p.east_m[i], p.north_m[i], seeds);
+  }
+  seeds_.disperse();
 }
 
 void Ecosystem::applyMortality() {
   Plants& p = state_.plants;
+  std::vector<double> intrinsic;
+  for (const EcosystemSpecies& s : species_)
+    intrinsic.push_back(intrinsicMortality(s.ecology.life));
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    const LifeHistory& life = lifeOf(species_[p.species[i]]);
+    const LifeHistory& life = species_[p.species[i]].ecology.life;
     Rng rng(streamKey(settings_.seed, state_.year, p.id[i], purpose("mortality")));
-    if (rng.uniform() < mortalityProbability(life, p.age_years[i], p.stressYears[i]))
-      p.alive[i] = 0;
+    double chance = 0.0;
+    if (p.age_years[i] >= life.maxAge_years)
+      chance = 1.0;
+    else if (p.dbh_m[i] > 0.0f)
+      chance = treeMortality(life, p.age_years[i], carbonDeficit_[i]);
+    else
+      chance = p.stressYears[i] >= life.saplingStressYears ? 1.0 : intrinsic[p.species[i]];
+    if (rng.uniform() < chance) p.alive[i] = 0;
   });
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!p.alive[i]) ++died_[p.species[i]];
   p.removeDead();
 }
 
-std::vector<Ecosystem::Seed> Ecosystem::disperseSeeds(const std::vector<int>& seedlingsInCell) {
+void Ecosystem::establish() {
   const Plants& p = state_.plants;
   const Grid& g = terrain_.grid;
-  const glm::dvec2 downwind = mapDownwindOf(settings_.windFrom_deg);
-  // Only seeds that germinate are followed (a binomial thinning by the germination rate,
-  // drawn with the seed count); one is kept if it could establish: on the map, in a cell
-  // with room, and with its establishment draw below the site suitability (light can only
-  // lower the chance further, so dropping the others now changes nothing).
-  auto consider = [&](int species, double eastExact, double northExact, double draw,
-                      std::vector<Seed>& out) {
-    // Plants store float positions: the cell must be the one of the rounded position.
-    const float east = static_cast<float>(eastExact), north = static_cast<float>(northExact);
-    const long cell = g.cellAt(east, north);
-    if (cell < 0 || seedlingsInCell[cell] >= seedlingsPerCell_) return;
-    const EcosystemSpecies& s = species_[species];
-    if (draw >= s.suitability[cell]) return;
-    out.push_back(
-        {static_cast<std::int32_t>(cell), static_cast<std::uint8_t>(species), east, north, draw});
+  const double originEast = -0.5 * g.dx_m, originNorth = -0.5 * g.dy_m;
+  auto regenerationCell = [&](double east, double north) {
+    const int x = std::clamp(static_cast<int>((east - originEast) / kRegenerationCell_m), 0,
+                             regenerationX_ - 1);
+    const int y = std::clamp(static_cast<int>((north - originNorth) / kRegenerationCell_m), 0,
+                             regenerationY_ - 1);
+    return static_cast<std::size_t>(y) * regenerationX_ + x;
   };
-  const std::size_t chunks = (p.size() + kChunk - 1) / kChunk;
-  std::vector<std::vector<Seed>> perChunk(chunks);
-  forEachChunk(p.size(), [&](std::size_t c, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const LifeHistory& life = lifeOf(species_[p.species[i]]);
-      if (p.age_years[i] < life.maturityAge_years) continue;
-      Rng rng(streamKey(settings_.seed, state_.year, p.id[i], purpose("seeds")));
-      const int count =
-          rng.stochasticRound(life.germination * seedCount(life, p.dbh_m[i], p.vigor[i]));
-      for (int k = 0; k < count; ++k) {
-        const glm::dvec2 offset = seedOffset(life, downwind, rng);
-        consider(p.species[i], p.east_m[i] + offset.x, p.north_m[i] + offset.y, rng.uniform(),
-                 perChunk[c]);
+  std::vector<std::uint8_t> taken(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.height_m[i] < kRegenerationHeight_m)
+      taken[regenerationCell(p.east_m[i], p.north_m[i])] = 1;
+  const double cellArea = kRegenerationCell_m * kRegenerationCell_m;
+  struct Newcomer {
+    int species;
+    double east, north;
+  };
+  std::vector<std::vector<Newcomer>> rows(regenerationY_);
+  tbb::parallel_for(0, regenerationY_, [&](int y) {
+    std::vector<double> chance(species_.size());
+    for (int x = 0; x < regenerationX_; ++x) {
+      const std::size_t index = static_cast<std::size_t>(y) * regenerationX_ + x;
+      if (taken[index]) continue;
+      const double east = originEast + (x + 0.5) * kRegenerationCell_m;
+      const double north = originNorth + (y + 0.5) * kRegenerationCell_m;
+      const long cell = g.cellAt(east, north);
+      if (cell < 0) continue;
+      const double ground = light_.lightAt(east, north, 0.0);
+      const bool litter = ground < kLitterLight * light_.lightAt(east, north, 1e6);
+      double total = 0.0;
+      for (std::size_t s = 0; s < species_.size(); ++s) {
+        const EcosystemSpecies& sp = species_[s];
+        const LifeHistory& life = sp.ecology.life;
+        const double seeds =
+            (seeds_.density(static_cast<int>(s), east, north) + sp.seedRainPerHaPerYear / 1e4) *
+            cellArea;
+        chance[s] = seeds * life.germination * sp.suitability[cell] *
+                    std::clamp(sp.ecology.lightResponse(ground), 0.0, 1.0) *
+                    (litter ? life.litterEstablishment : 1.0);
+        total += chance[s];
       }
+      if (total <= 0.0) continue;
+      // Seedlings arrive as a Poisson number; the cell takes one, of a species drawn by
+      // their shares.
+      Rng rng(streamKey(settings_.seed, state_.year, index, purpose("establishment")));
+      if (rng.uniform() >= 1.0 - std::exp(-total)) continue;
+      double pick = rng.uniform() * total;
+      int species = 0;
+      while (species + 1 < static_cast<int>(species_.size()) && pick >= chance[species])
+        pick -= chance[species++];
+      rows[y].push_back({species, east + (rng.uniform() - 0.5) * kRegenerationCell_m,
+                         north + (rng.uniform() - 0.5) * kRegenerationCell_m});
     }
   });
-  std::vector<Seed> seeds;
-  for (std::vector<Seed>& chunk : perChunk) seeds.insert(seeds.end(), chunk.begin(), chunk.end());
-  // Background seed rain from outside the map, evenly over it.
-  const double area_ha = g.area_m2() / 1e4;
-  const double width_m = g.width * g.dx_m, height_m = g.height * g.dy_m;
-  for (std::size_t s = 0; s < species_.size(); ++s) {
-    Rng rng(streamKey(settings_.seed, state_.year, s, purpose("seed rain")));
-    const int count = rng.stochasticRound(lifeOf(species_[s]).germination *
-                                          species_[s].seedRainPerHaPerYear * area_ha);
-    for (int k = 0; k < count; ++k) {
-      const double east = rng.uniform() * width_m - 0.5 * g.dx_m;
-      const double north = rng.uniform() * height_m - 0.5 * g.dy_m;
-      consider(static_cast<int>(s), east, north, rng.uniform(), seeds);
+  for (const std::vector<Newcomer>& row : rows)
+    for (const Newcomer& n : row) {
+      if (g.cellAt(static_cast<float>(n.east), static_cast<float>(n.north)) < 0) continue;
+      addPlant(n.species, n.east, n.north);
+      ++born_[n.species];
     }
-  }
-  return seeds;
-}
-
-void Ecosystem::establish(std::vector<Seed> seeds, std::vector<int>& seedlingsInCell) {
-  std::stable_sort(seeds.begin(), seeds.end(),
-                   [](const Seed& a, const Seed& b) { return a.cell < b.cell; });
-  std::vector<std::int32_t> cells;
-  cells.reserve(seeds.size());
-  for (const Seed& seed : seeds) cells.push_back(seed.cell);
-  ensureGroundLight(std::move(cells));
-  for (const Seed& seed : seeds) {
-    if (seedlingsInCell[seed.cell] >= seedlingsPerCell_) continue;
-    const EcosystemSpecies& s = species_[seed.species];
-    const double light = groundLight_[seed.cell];
-    const double chance =
-        std::min<double>(s.suitability[seed.cell], s.ecology.lightResponse(light));
-    if (seed.draw >= chance) continue;
-    const std::size_t i = addPlant(seed.species, seed.east_m, seed.north_m);
-    state_.plants.light[i] = static_cast<float>(light);
-    state_.plants.vigor[i] = static_cast<float>(chance);
-    ++seedlingsInCell[seed.cell];
-    ++born_[seed.species];
-  }
 }
 
 void Ecosystem::step() {
   ++state_.year;
   std::fill(born_.begin(), born_.end(), 0);
   std::fill(died_.begin(), died_.end(), 0);
-  buildCrowns();
-  computeLightAndGrow();
+  computeLight();
+  grow();
+  produceSeeds();
   applyMortality();
-  std::vector<int> seedlingsInCell(terrain_.grid.cellCount(), 0);
-  const Plants& p = state_.plants;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.height_m[i] < kBreastHeight_m) ++seedlingsInCell[p.cell[i]];
-  establish(disperseSeeds(seedlingsInCell), seedlingsInCell);
+  establish();
 }
 
 }  // namespace eco

@@ -1,6 +1,14 @@
 // The afforestation simulation (docs/ecology.md): plants on a terrain, stepped a year at a
-// time through light, vigor, growth, mortality, reproduction and establishment. Every
-// random number is keyed by (scenario seed, year, plant or cell id, purpose), and every
+// time through light, growth, mortality, seed production and establishment.
+// - Light: the canopy's leaf area in columns (light_grid.hpp).
+// - Growth: saplings in height, trees by the stem volume their absorbed light makes
+//   (growth.hpp); a crown's lowest branches die where its light falls below the species'
+//   compensation point.
+// - Mortality: intrinsic, carbon starvation for trees, poor years for saplings.
+// - Reproduction: seed density maps from the mature crowns (dispersal.hpp) and seed rain;
+//   each free 2 m regeneration cell takes at most one new seedling a year, so regeneration
+//   is limited by space, seed, site and light, not by the terrain's cell size.
+// Every random number is keyed by (scenario seed, year, plant or cell id, purpose), and every
 // pass keeps the plants' order, so a run gives the same plants whatever the thread count.
 #pragma once
 
@@ -9,18 +17,27 @@
 #include <vector>
 
 #include "model/species.hpp"
-#include "sim/ecology/canopy_light.hpp"
+#include "sim/conditions/conditions.hpp"
+#include "sim/ecology/dispersal.hpp"
+#include "sim/ecology/light_grid.hpp"
 #include "sim/ecology/plants.hpp"
 #include "sim/ecology/species_ecology.hpp"
 #include "sim/scenario.hpp"
 
 namespace eco {
 
+// The side of a regeneration cell, where at most one young plant below kRegenerationHeight_m
+// grows: iLand's 2 m regeneration cells and its sapling layer, whose cohorts become trees at
+// 4 m (Seidl et al. 2012). A cell takes a new seedling only once its plant has grown out of
+// that layer (or died), so a thicket holds at most 2,500 young plants per hectare.
+inline constexpr double kRegenerationCell_m = 2.0;
+inline constexpr double kRegenerationHeight_m = 4.0;
+
 struct EcosystemSpecies {
   Species species;  // its tree model
   Ecology ecology;  // its niche and life history: the file's [ecology]
   double seedRainPerHaPerYear = 0.0;
-  Field suitability;  // site suitability per cell
+  Field suitability;  // site suitability per cell (altitude, slope, moisture, windiness)
 };
 
 // A species file with its [ecology] table (an InputError at `where` when it has none), for
@@ -30,9 +47,7 @@ EcosystemSpecies readEcosystemSpecies(const std::filesystem::path& file,
 
 struct EcosystemSettings {
   std::uint64_t seed = Scenario{}.seed;
-  double latitude_deg = Climate{}.latitude_deg;
   double windFrom_deg = Climate{}.prevailingWindFrom_deg;
-  SimulationSettings simulation;
 };
 
 // The state a checkpoint must hold to continue a run exactly.
@@ -44,60 +59,55 @@ struct EcosystemState {
 
 class Ecosystem {
  public:
-  // The terrain must outlive the ecosystem; each species brings its site suitability.
-  Ecosystem(const Terrain& terrain, std::vector<EcosystemSpecies> species,
-            const EcosystemSettings& settings);
+  // The terrain must outlive the ecosystem; each species brings its site suitability. The
+  // fields give the light the terrain lets through to each cell.
+  Ecosystem(const Terrain& terrain, const ConditionFields& fields,
+            std::vector<EcosystemSpecies> species, const EcosystemSettings& settings);
 
   // Advances one year; afterwards year() is one higher and bornLastYear()/diedLastYear()
   // hold that year's counts per species.
   void step();
 
-  // Adds a plant of `age` years grown at full vigor (sources for tests, planted stands).
+  // Adds a plant of `age` years grown alone at full light on a fully suitable site (sources
+  // for tests, grown trees).
   void plant(int species, double east_m, double north_m, int age_years);
+  // Adds planted stock: a sapling of this height.
+  void plantSapling(int species, double east_m, double north_m, double height_m);
 
   int year() const { return state_.year; }
   const Plants& plants() const { return state_.plants; }
   const std::vector<EcosystemSpecies>& species() const { return species_; }
   const std::vector<int>& bornLastYear() const { return born_; }
   const std::vector<int>& diedLastYear() const { return died_; }
-  int stemsPerCell() const { return stemsPerCell_; }
-  int seedlingsPerCell() const { return seedlingsPerCell_; }
   const Grid& grid() const { return terrain_.grid; }
   const Terrain& terrain() const { return terrain_; }
-
-  // The light at the ground (0.5 m up) in the middle of a cell under this year's crowns.
-  double groundLight(std::size_t cell);
+  // The light (fraction of open level ground's) at a height above the ground, under this
+  // year's canopy.
+  double lightAt(double east_m, double north_m, double height_m) const;
 
   const EcosystemState& state() const { return state_; }
   void restore(EcosystemState state);
 
  private:
-  struct Seed {
-    std::int32_t cell;
-    std::uint8_t species;
-    float east_m, north_m;
-    double draw;  // the uniform deviate that decides establishment
-  };
-
-  void buildCrowns();
-  void computeLightAndGrow();
+  CrownShape crownOf(std::size_t plant) const;
+  void computeLight();
+  void grow();
   void applyMortality();
-  void promoteSaplings(const std::vector<float>& heightBefore);
-  std::vector<Seed> disperseSeeds(const std::vector<int>& seedlingsInCell);
-  void establish(std::vector<Seed> seeds, std::vector<int>& seedlingsInCell);
-  void ensureGroundLight(std::vector<std::int32_t> cells);
+  void produceSeeds();
+  void establish();
   std::size_t addPlant(int species, double east_m, double north_m);
 
   const Terrain& terrain_;
   std::vector<EcosystemSpecies> species_;
   EcosystemSettings settings_;
-  LightDirections sky_;
-  CanopyScene scene_;
-  int stemsPerCell_ = 1;
-  int seedlingsPerCell_ = 1;
+  LightGrid light_;
+  SeedMap seeds_;
+  int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;
-  std::vector<float> groundLight_;  // per cell, NaN where not computed this year
-  std::vector<std::int32_t> groundLightCells_;
+  std::vector<CrownShape> crowns_;           // this year's, of the trees
+  std::vector<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown
+  static constexpr std::uint32_t kNoCrown = ~std::uint32_t{0};
+  std::vector<float> carbonDeficit_;  // per plant, this year's (trees)
   std::vector<int> born_, died_;
 };
 

@@ -2,31 +2,146 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "sim/ecology/light_grid.hpp"
 
 namespace eco {
+namespace {
 
-double grownValue(const GrowthCurve& curve, double value, double vigor) {
-  const double age = curve.ageOf(value);
-  if (!std::isfinite(age)) return std::min(value, curve.max);
-  const double increment = curve.at(age + 1.0) - curve.at(age);
-  return std::min(curve.max, value + std::clamp(vigor, 0.0, 1.0) * increment);
+constexpr double kQuarterPi = std::numbers::pi / 4.0;
+
+}  // namespace
+
+double stemVolume(const LifeHistory& life, double dbh_m, double height_m) {
+  return life.formFactor * kQuarterPi * dbh_m * dbh_m * height_m;
 }
 
 double crownRadiusOf(const LifeHistory& life, double dbh_m, double height_m) {
-  return std::min(life.crownRadius_m(dbh_m), 0.5 * height_m);
+  // The function is fitted to trees of measurable diameter: below 1 cm (and a sapling's
+  // breast height) a crown is only bounded by the plant's height.
+  const double dbh_cm = std::max(1.0, 100.0 * dbh_m);
+  const double h = std::max(kBreastHeight_m, height_m);
+  const auto& a = life.crownDiameterSilva;
+  const double diameter =
+      std::exp(a[0] + a[1] * std::log(dbh_cm) + a[2] * h + a[3] * std::log(h / dbh_cm));
+  return std::min(0.5 * diameter, 0.5 * height_m);
 }
 
-double seedCount(const LifeHistory& life, double dbh_m, double vigor) {
-  const double reference_m = std::min(0.3, life.dbh_m.max);
-  const double size = dbh_m / reference_m;
-  return life.seedsPerYear * size * size * std::clamp(vigor, 0.0, 1.0);
+double maxCrownLeafAreaIndex(const LifeHistory& life) {
+  // Beer's law: under a leaf area index L the light is exp(-k L) of the crown top's.
+  return std::log(1.0 / std::min(1.0, leafCompensationLight(life))) / kLeafExtinction;
 }
 
-double mortalityProbability(const LifeHistory& life, int age_years, int stressYears) {
+double leafAreaOf(const LifeHistory& life, double dbh_m, double height_m) {
+  const double radius = crownRadiusOf(life, dbh_m, height_m);
+  return std::min(life.specificLeafArea * life.foliage.at(100.0 * dbh_m),
+                  maxCrownLeafAreaIndex(life) * std::numbers::pi * radius * radius);
+}
+
+double woodyBiomass(const LifeHistory& life, double dbh_m) {
+  const double d = 100.0 * dbh_m;
+  return life.stem.at(d) + life.branches.at(d) + life.coarseRoots.at(d);
+}
+
+double diameterOfWoodyBiomass(const LifeHistory& life, double biomass_kg, double guess_m) {
+  if (biomass_kg <= 0.0) return 0.0;
+  // Newton's method on the increasing, convex sum of power laws, from the guess (a tree's
+  // last diameter: two steps then suffice) or the stem's own inverse.
+  double d = guess_m > 0.0
+                 ? 100.0 * guess_m
+                 : std::pow(biomass_kg / (life.stem.a + life.branches.a + life.coarseRoots.a),
+                            1.0 / life.stem.b);
+  for (int i = 0; i < 30; ++i) {
+    const double stem = life.stem.at(d), branches = life.branches.at(d),
+                 roots = life.coarseRoots.at(d);
+    const double f = stem + branches + roots - biomass_kg;
+    const double slope =
+        (life.stem.b * stem + life.branches.b * branches + life.coarseRoots.b * roots) / d;
+    const double next = std::max(0.5 * d, d - f / slope);
+    if (std::abs(next - d) < 1e-9 * d) return next / 100.0;
+    d = next;
+  }
+  return d / 100.0;
+}
+
+double crownUpkeep(const LifeHistory& life, double leafArea_m2) {
+  const double foliage_kg = leafArea_m2 / life.specificLeafArea;
+  return foliage_kg * (life.leafTurnover + life.fineRootFoliageRatio * life.fineRootTurnover);
+}
+
+double leafCompensationLight(const LifeHistory& life) {
+  // A thin layer of leaves in light I absorbs k I per m2 of leaf (Beer's law's slope).
+  return crownUpkeep(life, 1.0) / (life.lightUseEfficiency * kLeafExtinction);
+}
+
+double potentialHeightIncrement(const LifeHistory& life, double height_m) {
+  const GrowthCurve& curve = life.height_m;
+  const double age = curve.ageOf(height_m);
+  if (!std::isfinite(age)) return 0.0;
+  return curve.at(age + 1.0) - curve.at(age);
+}
+
+double GrowingConditions::heightShare() const {
+  return productionShare() * std::clamp(lightResponse, 0.0, 1.0);
+}
+
+double GrowingConditions::productionShare() const {
+  return std::clamp(suitability, 0.0, 1.0) * std::max(0.0, growthFactor);
+}
+
+double TreeYear::carbonDeficit() const {
+  if (upkeep_kg <= 0.0 || production_kg >= upkeep_kg) return 0.0;
+  return std::min(1.0, (upkeep_kg - production_kg) / upkeep_kg);
+}
+
+TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double leafArea_m2,
+                  double absorbed_m2, const GrowingConditions& conditions) {
+  TreeYear year;
+  year.production_kg = life.lightUseEfficiency * absorbed_m2 * conditions.productionShare();
+  year.upkeep_kg = crownUpkeep(life, leafArea_m2);
+  const double wood_kg = year.production_kg - year.upkeep_kg;
+  year.dbh_m = dbh_m;
+  year.height_m = height_m;
+  if (wood_kg <= 0.0) return year;  // nothing left to grow on
+  year.dbh_m =
+      std::max(dbh_m, diameterOfWoodyBiomass(life, woodyBiomass(life, dbh_m) + wood_kg, dbh_m));
+  // Height as the light and the site allow, never past the species' maximum; and a metre
+  // of height needs new wood: at most maxHeightDiameter metres per metre of new diameter,
+  // so a tree that makes little wood falls behind its neighbours.
+  const double increment =
+      std::min(potentialHeightIncrement(life, height_m) * conditions.heightShare(),
+               life.maxHeightDiameter * (year.dbh_m - dbh_m));
+  year.height_m = std::min(life.height_m.max, height_m + increment);
+  return year;
+}
+
+SaplingYear growSapling(const LifeHistory& life, double height_m,
+                        const GrowingConditions& conditions) {
+  const double share = conditions.heightShare();
+  return {std::min(life.height_m.max, height_m + potentialHeightIncrement(life, height_m) * share),
+          share < life.saplingStressThreshold};
+}
+
+double saplingDiameter(const LifeHistory& life, double height_m) {
+  return height_m / life.saplingHeightDiameter;
+}
+
+double intrinsicMortality(const LifeHistory& life) {
+  return 1.0 - std::pow(life.intrinsicSurvival, 1.0 / life.maxAge_years);
+}
+
+double treeMortality(const LifeHistory& life, int age_years, double carbonDeficit) {
   if (age_years >= life.maxAge_years) return 1.0;
-  double p = 4.605 / life.maxAge_years;
-  if (stressYears >= life.stressYearsTolerated) p = std::max(p, 0.368);
-  return std::min(p, 1.0);
+  const double stress = 1.0 - std::exp(-life.stressMortality * std::clamp(carbonDeficit, 0.0, 1.0));
+  return std::min(1.0, intrinsicMortality(life) + stress);
+}
+
+double seedProduction(const LifeHistory& life, double crownRadius_m, bool mastYear,
+                      double relativeLight) {
+  const double crownArea = std::numbers::pi * crownRadius_m * crownRadius_m;
+  return life.fecundity_m2 * crownArea * (mastYear ? 1.0 : life.nonMastFraction) *
+         std::clamp(relativeLight, 0.0, 1.0);
 }
 
 }  // namespace eco

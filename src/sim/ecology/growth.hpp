@@ -1,6 +1,16 @@
-// One year of a plant's life history (docs/ecology.md, "Growth" and "Mortality"): growth
-// along the species' Chapman-Richards curves at the pace its vigor allows, crown size from
-// allometry, and the yearly chance of dying.
+// One year of a plant's life (docs/ecology.md, "Growth" and "Mortality"), as pure
+// functions of its state and what its site and the canopy give it.
+// - A sapling (below breast height) grows in height only: the species' potential height
+//   increment, scaled by the site's suitability and its light response.
+// - A tree makes biomass from the light its crown absorbs (a light-use efficiency). It first
+//   renews its leaves and fine roots (their turnover: iLand's allocation, Seidl et al. 2012);
+//   what is left adds wood to stem, branches and coarse roots by their allometries, which
+//   sets the new diameter. Its height grows by the potential increment scaled by suitability
+//   and the light at its top, but no more slender than the species can carry: a suppressed
+//   tree keeps growing in height on little wood. A tree whose production does not cover its
+//   upkeep starves. As a leaf pays its way only above a light (leafCompensationLight()), a
+//   stand's leaf area is bounded, and the number of trees falls as their foliage grows:
+//   self-thinning along the foliage allometry.
 #pragma once
 
 #include "sim/ecology/species_ecology.hpp"
@@ -10,23 +20,79 @@ namespace eco {
 // Plants shorter than this have no stem diameter and cast no shade in the light model.
 inline constexpr double kBreastHeight_m = 1.3;
 
-// Grows `value` by vigor times the curve's increment over one year from the age at which
-// the curve reaches `value`: a plant at full vigor follows the curve, a suppressed one
-// stalls, and nothing exceeds the curve's maximum.
-double grownValue(const GrowthCurve& curve, double value, double vigor);
-
-// Crown radius from the stem diameter (the species' allometry), at most half the height so
-// that small plants are not wider than tall.
+// Stem volume: form factor x basal area x height, m3.
+double stemVolume(const LifeHistory& life, double dbh_m, double height_m);
+// Crown radius from stem diameter and height (SILVA's crown diameter function), at most half
+// the height.
 double crownRadiusOf(const LifeHistory& life, double dbh_m, double height_m);
+// Leaf area, m2: the foliage allometry times the specific leaf area, as in iLand, but no more
+// than the crown's projection can light: leaves deeper in a crown than where the open sky's
+// light has fallen to the leaf compensation light never pay their way, so a crown holds at
+// most maxCrownLeafAreaIndex() m2 of leaf per m2 of its projection (docs/ecology.md).
+// Pruning moves the leaves up the stem, to where there is light, but does not shrink them:
+// a suppressed tree must feed all of them.
+double leafAreaOf(const LifeHistory& life, double dbh_m, double height_m);
+double maxCrownLeafAreaIndex(const LifeHistory& life);
+// Wood (stem, branches, coarse roots), kg, and its inverse.
+double woodyBiomass(const LifeHistory& life, double dbh_m);
+// The inverse starts from `guess_m` when given (the diameter before a year's growth).
+double diameterOfWoodyBiomass(const LifeHistory& life, double biomass_kg, double guess_m = 0.0);
+// The yearly upkeep of a crown's leaves and the fine roots that feed them, kg.
+double crownUpkeep(const LifeHistory& life, double leafArea_m2);
+// The light (fraction of open sky) at which a leaf makes just its upkeep: branches in less
+// light die (crown pruning).
+double leafCompensationLight(const LifeHistory& life);
+// The potential height increment over one year from a height (the curve's next year from the
+// age it has that height).
+double potentialHeightIncrement(const LifeHistory& life, double height_m);
 
-// Seeds a mature plant sends out this year: the species' seeds_per_year at 30 cm stem
-// diameter, scaled by (dbh / 30 cm)^2 as SORTIE's fecundity (Ribbens, Silander and Pacala
-// 1994) and by vigor. Shrubs, whose stems stay thin, use their maximum diameter as reference.
-double seedCount(const LifeHistory& life, double dbh_m, double vigor);
+// What a plant's place and nature give its growth this year.
+struct GrowingConditions {
+  double suitability = 1.0;    // the site's, 0..1
+  double lightResponse = 1.0;  // the species' response to the light at the plant's top, 0..1
+  double growthFactor = 1.0;   // the individual's lasting rate (genotype, microsite), at most 1
+  // Share of the potential height increment: all three together.
+  double heightShare() const;
+  // Share of the light-use efficiency: site and individual (light enters as absorbed light).
+  double productionShare() const;
+};
 
-// Probability of dying this year: the intrinsic rate 4.605 / max age of JABOWA (Botkin et
-// al. 1972: 1 % of trees reach the maximum age), certain death past the maximum age, and
-// 0.368 a year once vigor has stayed below the stress threshold too many years in a row.
-double mortalityProbability(const LifeHistory& life, int age_years, int stressYears);
+struct TreeYear {
+  double dbh_m = 0.0;
+  double height_m = 0.0;
+  double production_kg = 0.0;  // light-use efficiency x absorbed light x production share
+  double upkeep_kg = 0.0;      // what the leaves and fine roots cost this year
+  // The share of the upkeep production did not cover, 0 (none missing) .. 1 (nothing made).
+  double carbonDeficit() const;
+};
+
+// A tree's growth over a year. `absorbed_m2` is the light its crown (of `leafArea_m2`)
+// absorbed, in m2 of open-sky light.
+TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double leafArea_m2,
+                  double absorbed_m2, const GrowingConditions& conditions);
+
+// A sapling's new height, and whether the year was poor for it (less than the species'
+// stress threshold of its potential growth).
+struct SaplingYear {
+  double height_m = 0.0;
+  bool poor = false;
+};
+SaplingYear growSapling(const LifeHistory& life, double height_m,
+                        const GrowingConditions& conditions);
+// The stem diameter a sapling has as it passes breast height.
+double saplingDiameter(const LifeHistory& life, double height_m);
+
+// Probability that a tree dies this year: the intrinsic rate that lets `intrinsicSurvival` of
+// a cohort reach the maximum age, certain at it, plus iLand's carbon-starvation hazard
+// 1 - exp(-stressMortality x deficit) (Seidl et al. 2012).
+double treeMortality(const LifeHistory& life, int age_years, double carbonDeficit);
+// The intrinsic part alone, a year.
+double intrinsicMortality(const LifeHistory& life);
+
+// Seeds a mature tree sends out this year: fecundity per m2 of crown projection, in full in
+// a mast year and the non-mast share otherwise, scaled by how much of its crown's potential
+// light the tree gets (a suppressed tree hardly fruits).
+double seedProduction(const LifeHistory& life, double crownRadius_m, bool mastYear,
+                      double relativeLight);
 
 }  // namespace eco

@@ -17,11 +17,13 @@ struct Plants {
   std::vector<std::int32_t> age_years;
   std::vector<float> height_m;
   std::vector<float> crownRadius_m;
+  std::vector<float> crownBase_m;          // height of the lowest living branches
   std::vector<float> dbh_m;                // stem diameter at breast height, 0 below 1.3 m
   std::vector<float> vigor;                // 0..1, this year's
   std::vector<float> light;                // fraction of open-sky light at the crown top
+  std::vector<float> growthFactor;         // the individual's lasting growth rate, about 1
   std::vector<std::uint64_t> variantSeed;  // the tree model's individual seed
-  std::vector<std::uint16_t> stressYears;  // years in a row with vigor below the threshold
+  std::vector<std::uint16_t> stressYears;  // a sapling's poor years in a row
   std::vector<std::uint8_t> alive;
 
   // Calls f(column) for every column, in a fixed order (resizing, compaction, checkpoints).
@@ -45,8 +47,8 @@ struct Plants {
   template <typename Self, typename F>
   static void visitColumns(Self& p, F& f) {
     f(p.id), f(p.species), f(p.east_m), f(p.north_m), f(p.ground_m), f(p.cell), f(p.age_years),
-        f(p.height_m), f(p.crownRadius_m), f(p.dbh_m), f(p.vigor), f(p.light), f(p.variantSeed),
-        f(p.stressYears), f(p.alive);
+        f(p.height_m), f(p.crownRadius_m), f(p.crownBase_m), f(p.dbh_m), f(p.vigor), f(p.light),
+        f(p.growthFactor), f(p.variantSeed), f(p.stressYears), f(p.alive);
   }
 };
 

@@ -1,5 +1,6 @@
 #include "sim/ecology/species_ecology.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -17,6 +18,16 @@ Polyline trapezoid(double zeroLo, double fullLo, double fullHi, double zeroHi) {
 // it is unsuitable (Ellenberg values are modes of a species' realised niche, docs/ecology.md).
 constexpr double kFullWithin = 1.5, kZeroBeyond = 3.5;
 
+// Mean annual temperature of T = 5 (the submontane belt) and per unit of T (ours: central
+// Europe's belts, colline 8-10 C, submontane 6-8 C, montane 4-6 C; docs/ecology.md).
+constexpr double kTemperatureOfT5_c = 7.0, kTemperaturePerUnit_c = 1.5;
+
+// Windiness a species bears fully, and where it bears none, from its wind firmness (ours,
+// docs/ecology.md): the firmer, the more exposure. CReg of the firmest European trees is
+// about 160 (iLand's beech and maple), of spruce 126.
+constexpr double kZeroWindinessAtFirmness160 = 0.85, kWindinessPerFirmness = 0.002;
+constexpr double kWindinessBand = 0.35;
+
 int ellenbergValue(TomlTable& table, std::string_view key, int highest) {
   if (!table.has(key))
     table.fail(key, "missing Ellenberg value (a number, or \"x\" if indifferent)");
@@ -27,14 +38,86 @@ int ellenbergValue(TomlTable& table, std::string_view key, int highest) {
   return static_cast<int>(table.integer(key, {}, {1, static_cast<double>(highest)}));
 }
 
-GrowthCurve growthCurve(TomlTable& life, const std::string& prefix, std::string_view maxKey,
-                        Range maxRange) {
+Allometry allometry(TomlTable& life, std::string_view key) {
+  const std::vector<double> ab = life.numbers(key, 2, {}, {0.0, 10.0});
+  if (!(ab[0] > 0.0 && ab[1] > 0.0))
+    life.fail(key, "expected [a, b] with a, b > 0 (kg = a dbh_cm^b)");
+  return {ab[0], ab[1]};
+}
+
+GrowthCurve heightCurve(TomlTable& life) {
   GrowthCurve curve;
-  curve.max = life.number(maxKey, {}, maxRange);
-  if (!(curve.max > 0.0)) life.fail(maxKey, "must be positive");
-  curve.rate = life.number(prefix + "_growth_rate", {}, {1e-4, 1.0});
-  curve.shape = life.number(prefix + "_growth_shape", {}, {0.5, 5.0});
+  curve.max = life.number("max_height_m", {}, {0.1, 150.0});
+  if (!(curve.max > 0.0)) life.fail("max_height_m", "must be positive");
+  curve.rate = life.number("height_growth_rate", {}, {1e-4, 1.0});
+  curve.shape = life.number("height_growth_shape", {}, {0.3, 5.0});
   return curve;
+}
+
+DispersalVector dispersalOf(TomlTable& life) {
+  const std::string vector = life.string("dispersal");
+  if (vector == "gravity") return DispersalVector::Gravity;
+  if (vector == "animal") return DispersalVector::Animal;
+  if (vector != "wind")
+    life.fail("dispersal", "unknown dispersal '" + vector + "' (expected gravity, animal or wind)");
+  return DispersalVector::Wind;
+}
+
+// Reproduction: fecundity, mast years, the seed kernel and establishment.
+void parseReproduction(TomlTable& life, LifeHistory& h) {
+  h.maturityAge_years = static_cast<int>(life.integer("maturity_age_years", {}, {0, 10000}));
+  h.fecundity_m2 = life.number("fecundity_per_m2", {}, {0.0, 100000.0});
+  h.mastIntervalYears =
+      static_cast<int>(life.integer("mast_interval_years", h.mastIntervalYears, {1, 50}));
+  h.nonMastFraction = life.number("non_mast_fraction", h.nonMastFraction, {0.0, 1.0});
+  h.germination = life.number("germination", h.germination, {0.0, 1.0});
+  h.litterEstablishment = life.number("litter_establishment", h.litterEstablishment, {0.0, 1.0});
+  h.seedlingHeight_m = life.number("seedling_height_m", h.seedlingHeight_m, {0.01, 2.0});
+  if (h.seedlingHeight_m >= h.height_m.max)
+    life.fail("seedling_height_m", "must be below max_height_m");
+  h.dispersal = dispersalOf(life);
+  h.dispersalMean_m = life.number("dispersal_mean_m", {}, {0.01, 100000.0});
+  h.downwindBias = life.number("downwind_bias", h.downwindBias, {0.0, 1.0});
+  if (h.downwindBias > 0.0 && h.dispersal != DispersalVector::Wind)
+    life.fail("downwind_bias", "only wind-dispersed species drift downwind");
+  h.longDistanceFraction =
+      life.number("long_distance_fraction", h.longDistanceFraction, {0.0, 1.0});
+  if (h.longDistanceFraction > 0.0) {
+    h.longDistanceMean_m = life.number("long_distance_mean_m", {}, {0.01, 100000.0});
+    if (h.longDistanceMean_m <= h.dispersalMean_m)
+      life.fail("long_distance_mean_m", "must be longer than dispersal_mean_m");
+  }
+}
+
+LifeHistory parseLife(TomlTable& life) {
+  LifeHistory h;
+  h.maxAge_years = static_cast<int>(life.integer("max_age_years", {}, {1, 10000}));
+  h.height_m = heightCurve(life);
+  h.formFactor = life.number("form_factor", {}, {0.1, 1.0});
+  h.foliage = allometry(life, "foliage_biomass");
+  h.stem = allometry(life, "stem_biomass");
+  h.branches = allometry(life, "branch_biomass");
+  h.coarseRoots = allometry(life, "coarse_root_biomass");
+  h.specificLeafArea = life.number("specific_leaf_area_m2_per_kg", {}, {0.5, 100.0});
+  h.leafTurnover = life.number("leaf_turnover_per_year", {}, {0.01, 1.0});
+  h.fineRootFoliageRatio = life.number("fine_root_foliage_ratio", {}, {0.0, 10.0});
+  h.fineRootTurnover = life.number("fine_root_turnover_per_year", {}, {0.0, 1.0});
+  const std::vector<double> crown = life.numbers("crown_diameter_silva", 4, {}, {-10.0, 10.0});
+  std::copy(crown.begin(), crown.end(), h.crownDiameterSilva.begin());
+  h.crownRatio = life.number("crown_ratio", {}, {0.05, 1.0});
+  h.saplingHeightDiameter =
+      life.number("sapling_height_diameter", h.saplingHeightDiameter, {10.0, 400.0});
+  h.maxHeightDiameter = life.number("max_height_diameter", h.maxHeightDiameter, {10.0, 400.0});
+  h.lightUseEfficiency = life.number("light_use_efficiency", {}, {1e-3, 100.0});
+  h.intrinsicSurvival = life.number("intrinsic_survival", h.intrinsicSurvival, {1e-6, 1.0});
+  h.stressMortality = life.number("stress_mortality", h.stressMortality, {0.0, 100.0});
+  h.saplingStressYears =
+      static_cast<int>(life.integer("sapling_stress_years", h.saplingStressYears, {1, 1000}));
+  h.saplingStressThreshold =
+      life.number("sapling_stress_threshold", h.saplingStressThreshold, {0.0, 1.0});
+  parseReproduction(life, h);
+  life.finish();
+  return h;
 }
 
 }  // namespace
@@ -48,11 +131,9 @@ const char* toString(Condition condition) {
     case Condition::Moisture:
       return "moisture";
     case Condition::Windiness:
-      return "windiness";
-    case Condition::Sunniness:
-      return "sunniness";
+      break;
   }
-  return "?";
+  return "windiness";
 }
 
 const Polyline& ToleranceCurves::of(Condition c) const {
@@ -68,11 +149,13 @@ Polyline& ToleranceCurves::of(Condition c) {
     case Condition::Moisture:
       return moisture;
     case Condition::Windiness:
-      return windiness;
-    case Condition::Sunniness:
       break;
   }
-  return sunniness;
+  return windiness;
+}
+
+double Allometry::at(double dbh_cm) const {
+  return a * std::pow(dbh_cm, b);
 }
 
 double GrowthCurve::at(double years) const {
@@ -98,105 +181,82 @@ Polyline lightResponseFor(int light) {
   return Polyline({{c, 0.0}, {c + 0.3, 1.0}});
 }
 
-ToleranceCurves deriveTolerances(const Ellenberg& e) {
+double meanAnnualTemperatureOf(double temperatureValue) {
+  return kTemperatureOfT5_c + kTemperaturePerUnit_c * (temperatureValue - 5.0);
+}
+
+double altitudeOfTemperature(double temperature_c, const Climate& climate) {
+  return climate.temperatureAltitude_m +
+         (climate.meanAnnualTemperature_c - temperature_c) / climate.lapseRate_K_per_m;
+}
+
+ToleranceCurves deriveTolerances(const Ellenberg& e, double windFirmness, const Climate& climate) {
   ToleranceCurves t;
-  // Moisture: the site's moisture number is F = 1 + 8 m for the moisture field m in [0, 1].
+  // Moisture: the site's moisture number on Ellenberg's F scale against the species' F.
   if (e.moisture == 0) {
     t.moisture = Polyline::constant(1.0);
   } else {
-    auto m = [](double f) { return (f - 1.0) / 8.0; };
-    t.moisture = trapezoid(m(e.moisture - kZeroBeyond), m(e.moisture - kFullWithin),
-                           m(e.moisture + kFullWithin), m(e.moisture + kZeroBeyond));
+    t.moisture = trapezoid(e.moisture - kZeroBeyond, e.moisture - kFullWithin,
+                           e.moisture + kFullWithin, e.moisture + kZeroBeyond);
   }
-  // Temperature by altitude: vegetation belts of central Europe, one T unit per 450 m,
-  // T = 6 at 300 m (colline), 5 submontane, 4 montane at about 1200 m.
-  if (e.temperature == 0) {
+  // Temperature: T's mean annual temperature, and the altitudes that have it in this
+  // climate (warmer is lower: the trapezoid over altitude runs from the hot end).
+  if (e.temperature == 0 || climate.lapseRate_K_per_m <= 0.0) {
     t.altitude_m = Polyline::constant(1.0);
   } else {
-    auto altitude = [](double temperature) { return 300.0 + 450.0 * (6.0 - temperature); };
+    auto altitude = [&](double value) {
+      return altitudeOfTemperature(meanAnnualTemperatureOf(value), climate);
+    };
     t.altitude_m =
         trapezoid(altitude(e.temperature + kZeroBeyond), altitude(e.temperature + kFullWithin),
                   altitude(e.temperature - kFullWithin), altitude(e.temperature - kZeroBeyond));
   }
-  // Exposure: continental species (high K) bear wind, frost and drought on exposed sites.
-  if (e.continentality == 0) {
-    t.windiness = Polyline::constant(1.0);
-  } else {
-    const double full = 0.3 + 0.07 * e.continentality;
-    t.windiness = Polyline({{full, 1.0}, {full + 0.4, 0.0}});
-  }
-  // Terrain shade: a site darker than the species' light minimum cannot carry it.
-  const double c = lightCompensation(e.light);
-  t.sunniness = Polyline({{c, 0.0}, {c + 0.3, 1.0}});
-  // Slope has no Ellenberg value: soils thin out on steep ground (files set their own).
+  // Exposure: the firmer the stem and roots against wind, the more windiness is borne.
+  const double zero =
+      std::min(1.0, kZeroWindinessAtFirmness160 + kWindinessPerFirmness * (windFirmness - 160.0));
+  t.windiness = Polyline({{zero - kWindinessBand, 1.0}, {zero, 0.0}});
+  // Slope has no indicator value: soils thin out on steep ground (files set their own).
   t.slope_deg = Polyline({{35.0, 1.0}, {65.0, 0.0}});
   return t;
+}
+
+ToleranceCurves Ecology::tolerances(const Climate& climate) const {
+  ToleranceCurves t = deriveTolerances(ellenberg, windFirmness, climate);
+  for (int i = 0; i < kConditionCount; ++i)
+    if (toleranceOverride[i]) t.of(static_cast<Condition>(i)) = *toleranceOverride[i];
+  return t;
+}
+
+double Ecology::lightCompensation() const {
+  return eco::lightCompensation(ellenberg.light);
 }
 
 Ecology parseEcology(TomlTable& table) {
   Ecology ecology;
   std::optional<TomlTable> values = table.table("ellenberg");
   if (!values)
-    table.fail("ellenberg",
-               "missing table ellenberg = { light, temperature, moisture, continentality }");
+    table.fail("ellenberg", "missing table ellenberg = { light, temperature, moisture }");
   Ellenberg& e = ecology.ellenberg;
   e.light = ellenbergValue(*values, "light", 9);
   e.temperature = ellenbergValue(*values, "temperature", 9);
   e.moisture = ellenbergValue(*values, "moisture", 12);
-  e.continentality = ellenbergValue(*values, "continentality", 9);
   values->finish();
+  ecology.windFirmness = table.number("wind_firmness", {}, {1.0, 1000.0});
 
-  ecology.tolerance = deriveTolerances(e);
   ecology.lightResponse = table.has("light_response") ? table.polyline("light_response", {0.0, 1.0})
                                                       : lightResponseFor(e.light);
   if (std::optional<TomlTable> tolerance = table.table("tolerance")) {
-    const char* keys[kConditionCount] = {"altitude_m", "slope_deg", "moisture", "windiness",
-                                         "sunniness"};
+    // The keys of ToleranceCurves' members, in Condition's order.
+    static constexpr const char* kKeys[kConditionCount] = {"altitude_m", "slope_deg", "moisture",
+                                                           "windiness"};
     for (int i = 0; i < kConditionCount; ++i)
-      if (tolerance->has(keys[i]))
-        ecology.tolerance.of(static_cast<Condition>(i)) = tolerance->polyline(keys[i], {0.0, 1.0});
+      if (tolerance->has(kKeys[i]))
+        ecology.toleranceOverride[i] = tolerance->polyline(kKeys[i], {0.0, 1.0});
     tolerance->finish();
   }
-
   std::optional<TomlTable> life = table.table("life");
   if (!life) table.fail("life", "missing table [ecology.life]");
-  LifeHistory& h = ecology.life;
-  h.maxAge_years = static_cast<int>(life->integer("max_age_years", {}, {1, 10000}));
-  h.height_m = growthCurve(*life, "height", "max_height_m", {0.1, 150.0});
-  h.dbh_m = growthCurve(*life, "dbh", "max_dbh_m", {0.001, 10.0});
-  h.crownRadius_m = life->polyline("crown_radius_m", {0.0, 50.0});
-  h.crownRatio = life->number("crown_ratio", {}, {0.05, 1.0});
-  h.crownTransmittance = life->number("crown_transmittance", {}, {0.0, 1.0});
-  h.seedlingHeight_m = life->number("seedling_height_m", h.seedlingHeight_m, {0.01, 2.0});
-  if (h.seedlingHeight_m >= h.height_m.max)
-    life->fail("seedling_height_m", "must be below max_height_m");
-  h.maturityAge_years = static_cast<int>(life->integer("maturity_age_years", {}, {0, 10000}));
-  h.seedsPerYear = life->number("seeds_per_year", {}, {0.0, 100000.0});
-  h.germination = life->number("germination", {}, {0.0, 1.0});
-  const std::string vector = life->string("dispersal");
-  if (vector == "gravity")
-    h.dispersal = DispersalVector::Gravity;
-  else if (vector == "animal")
-    h.dispersal = DispersalVector::Animal;
-  else if (vector == "wind")
-    h.dispersal = DispersalVector::Wind;
-  else
-    life->fail("dispersal",
-               "unknown dispersal '" + vector + "' (expected gravity, animal or wind)");
-  h.dispersalMean_m = life->number("dispersal_mean_m", {}, {0.01, 100000.0});
-  h.downwindBias = life->number("downwind_bias", 0.0, {0.0, 1.0});
-  if (h.downwindBias > 0.0 && h.dispersal != DispersalVector::Wind)
-    life->fail("downwind_bias", "only wind-dispersed species drift downwind");
-  h.longDistanceFraction = life->number("long_distance_fraction", 0.0, {0.0, 1.0});
-  if (h.longDistanceFraction > 0.0) {
-    h.longDistanceMean_m = life->number("long_distance_mean_m", {}, {0.01, 100000.0});
-    if (h.longDistanceMean_m <= h.dispersalMean_m)
-      life->fail("long_distance_mean_m", "must be longer than dispersal_mean_m");
-  }
-  h.stressVigor = life->number("stress_vigor", h.stressVigor, {0.0, 1.0});
-  h.stressYearsTolerated =
-      static_cast<int>(life->integer("stress_years_tolerated", h.stressYearsTolerated, {1, 1000}));
-  life->finish();
+  ecology.life = parseLife(*life);
   table.finish();
   return ecology;
 }

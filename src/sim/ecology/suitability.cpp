@@ -10,7 +10,7 @@ std::array<double, kConditionCount> conditionSuitabilities(const ToleranceCurves
                                                            const ConditionFields& fields,
                                                            std::size_t cell) {
   const Field* field[kConditionCount] = {&fields.altitude_m, &fields.slope_deg, &fields.moisture,
-                                         &fields.windiness, &fields.sunniness};
+                                         &fields.windiness};
   std::array<double, kConditionCount> values;
   for (int i = 0; i < kConditionCount; ++i)
     values[i] = std::clamp(tolerance.of(static_cast<Condition>(i))((*field[i])[cell]), 0.0, 1.0);

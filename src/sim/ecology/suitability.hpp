@@ -1,5 +1,6 @@
 // How well a site suits a species (docs/ecology.md): each living condition through the
-// species' tolerance curve gives a suitability in [0, 1]; the site's suitability is their
+// species' tolerance curve gives a suitability in [0, 1] (sunniness acts through the light
+// response instead, with the canopy's shade: light counts once); the site's suitability is their
 // minimum (Liebig's law of the minimum, as the EcoMod paper puts it: "a single inconvenient
 // living condition can fully stop the prosperity of some tree") or, as an option, product.
 #pragma once

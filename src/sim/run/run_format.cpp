@@ -17,8 +17,10 @@
 namespace eco {
 namespace {
 
-constexpr const char* kTreesHeader =
-    "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed";
+constexpr const char* kStatsHeader =
+    "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,qmd_cm,"
+    "dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,densest_hectare_basal_area_m2_per_ha";
+constexpr int kTreesColumns = 12;
 
 std::string fileText(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -76,12 +78,14 @@ std::vector<std::string> RunPaths::mapNames() const {
 
 void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow>& rows,
                    const std::vector<EcosystemSpecies>& species) {
-  std::string text =
-      "year,species,alive,born,died,mean_height_m,basal_area_m2_per_ha,cover_fraction\n";
+  std::string text = std::string(kStatsHeader) + "\n";
   for (const StatsRow& r : rows)
-    text += fmt::format("{},{},{},{},{},{:.3f},{:.4f},{:.4f}\n", r.year,
-                        species[r.species].species.name, r.alive, r.born, r.died, r.meanHeight_m,
-                        r.basalArea_m2PerHa, r.coverFraction);
+    text += fmt::format(
+        "{},{},{},{},{},{:.3f},{:.1f},{:.4f},{:.2f},{:.2f},{:.1f},{:.2f},{:.4f},{:.4f}\n", r.year,
+        r.species == kAllSpecies ? std::string("all") : species[r.species].species.name, r.alive,
+        r.born, r.died, r.meanHeight_m, r.stemsPerHa, r.basalArea_m2PerHa, r.qmd_cm,
+        r.dominantHeight_m, r.sdi, r.volume_m3PerHa, r.coverFraction,
+        r.densestHectareBasalArea_m2PerHa);
   AtomicFile out(file);
   out.write(text);
   out.commit();
@@ -98,13 +102,13 @@ void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem
     text.reserve((end - c * kRowsPerChunk) * 96);
     for (std::size_t i = c * kRowsPerChunk; i < end; ++i)
       fmt::format_to(std::back_inserter(text),
-                     "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.4f},{:.3f},{}\n", p.id[i],
-                     ecosystem.species()[p.species[i]].species.name, p.east_m[i], p.north_m[i],
-                     p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i], p.dbh_m[i],
-                     p.vigor[i], p.variantSeed[i]);
+                     "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.4f},{:.3f},{}\n",
+                     p.id[i], ecosystem.species()[p.species[i]].species.name, p.east_m[i],
+                     p.north_m[i], p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i],
+                     p.crownBase_m[i], p.dbh_m[i], p.vigor[i], p.variantSeed[i]);
   });
   AtomicFile out(file);
-  out.write(std::string(kTreesHeader) + "\n");
+  out.write(std::string(kTreesCsvHeader) + "\n");
   for (const std::string& text : chunks) out.write(text);
   out.commit();
 }
@@ -122,15 +126,15 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
     lineStart = lineEnd + 1;
     ++line;
     if (line == 1) {
-      if (row != kTreesHeader)
+      if (row != kTreesCsvHeader)
         throw InputError({file.string(), 1, ""},
-                         fmt::format("not a trees file: the header must be '{}'", kTreesHeader));
+                         fmt::format("not a trees file: the header must be '{}'", kTreesCsvHeader));
       continue;
     }
     if (row.empty()) continue;
-    std::string_view fields[11];
+    std::string_view fields[kTreesColumns];
     int count = 0;
-    for (std::size_t start = 0; count < 11;) {
+    for (std::size_t start = 0; count < kTreesColumns;) {
       const std::size_t comma = row.find(',', start);
       fields[count++] = row.substr(
           start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
@@ -138,15 +142,17 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
       start = comma + 1;
     }
     TreeRow tree;
-    bool ok = count == 11 && parseField(fields[0], tree.id) && parseField(fields[2], tree.east_m) &&
-              parseField(fields[3], tree.north_m) && parseField(fields[4], tree.ground_m) &&
-              parseField(fields[5], tree.age_years) && parseField(fields[6], tree.height_m) &&
-              parseField(fields[7], tree.crownRadius_m) && parseField(fields[8], tree.dbh_m) &&
-              parseField(fields[9], tree.vigor) && parseField(fields[10], tree.variantSeed) &&
+    bool ok = count == kTreesColumns && parseField(fields[0], tree.id) &&
+              parseField(fields[2], tree.east_m) && parseField(fields[3], tree.north_m) &&
+              parseField(fields[4], tree.ground_m) && parseField(fields[5], tree.age_years) &&
+              parseField(fields[6], tree.height_m) && parseField(fields[7], tree.crownRadius_m) &&
+              parseField(fields[8], tree.crownBase_m) && parseField(fields[9], tree.dbh_m) &&
+              parseField(fields[10], tree.vigor) && parseField(fields[11], tree.variantSeed) &&
               !fields[1].empty();
     if (!ok)
-      throw InputError({file.string(), line, ""},
-                       "expected 11 comma-separated values: id,species,x_m,...,variant_seed");
+      throw InputError(
+          {file.string(), line, ""},
+          fmt::format("expected {} comma-separated values: {}", kTreesColumns, kTreesCsvHeader));
     auto [it, added] = speciesIndex.try_emplace(std::string(fields[1]),
                                                 static_cast<int>(snapshot.speciesNames.size()));
     if (added) snapshot.speciesNames.emplace_back(fields[1]);

@@ -31,26 +31,38 @@ struct RunPaths {
   std::vector<std::string> mapNames() const;
 };
 
-// One line of stats.csv. Plain numbers without padding so that checkpoints can hold rows.
+// One line of stats.csv: a species in a year, or the whole stand (species kAllSpecies).
+// Plain numbers without padding so that checkpoints can hold rows.
+inline constexpr std::int32_t kAllSpecies = -1;
 struct StatsRow {
   std::int32_t year = 0;
   std::int32_t species = 0;
   std::int64_t alive = 0, born = 0, died = 0;
-  double meanHeight_m = 0.0;
-  double basalArea_m2PerHa = 0.0;  // stem cross-sections at breast height per hectare
-  double coverFraction = 0.0;      // share of cell centres under a crown of the species
+  double meanHeight_m = 0.0;  // of every plant
+  // The forester's measures (stand_measures.hpp), trees of at least 10 cm dbh.
+  double stemsPerHa = 0.0;
+  double basalArea_m2PerHa = 0.0;
+  double qmd_cm = 0.0;
+  double dominantHeight_m = 0.0;
+  double sdi = 0.0;
+  double volume_m3PerHa = 0.0;
+  double coverFraction = 0.0;  // share of cell centres under a crown of the species
+  // The whole stand's row: the basal area of the densest 1-ha block of the map.
+  double densestHectareBasalArea_m2PerHa = 0.0;
 };
 
 void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow>& rows,
                    const std::vector<EcosystemSpecies>& species);
 
-// A snapshot: one row per living plant.
+// A snapshot: one row per living plant, under this header.
+inline constexpr const char* kTreesCsvHeader =
+    "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,variant_seed";
 struct TreeRow {
   std::uint64_t id = 0;
   int species = 0;  // index into TreeSnapshot::speciesNames
   double east_m = 0.0, north_m = 0.0, ground_m = 0.0;
   int age_years = 0;
-  float height_m = 0.0f, crownRadius_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
+  float height_m = 0.0f, crownRadius_m = 0.0f, crownBase_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
   std::uint64_t variantSeed = 0;
 };
 

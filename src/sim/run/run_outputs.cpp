@@ -5,6 +5,8 @@
 #include <numbers>
 #include <vector>
 
+#include "sim/ecology/stand_measures.hpp"
+
 namespace eco {
 namespace {
 
@@ -31,29 +33,40 @@ void forCellsUnderCrown(const Grid& g, const Plants& p, std::size_t i, F&& f) {
 std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem) {
   const Plants& p = ecosystem.plants();
   const Grid& g = ecosystem.grid();
-  const std::size_t speciesCount = ecosystem.species().size();
-  std::vector<StatsRow> rows(speciesCount);
-  std::vector<double> heightSum(speciesCount, 0.0);
-  std::vector<std::vector<std::uint8_t>> covered(speciesCount,
-                                                 std::vector<std::uint8_t>(g.cellCount(), 0));
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    StatsRow& row = rows[p.species[i]];
-    ++row.alive;
-    heightSum[p.species[i]] += p.height_m[i];
-    row.basalArea_m2PerHa += std::numbers::pi / 4.0 * p.dbh_m[i] * p.dbh_m[i];
-    forCellsUnderCrown(g, p, i, [&](std::size_t cell) { covered[p.species[i]][cell] = 1; });
-  }
+  const auto speciesCount = static_cast<int>(ecosystem.species().size());
   const double area_ha = g.area_m2() / 1e4;
-  for (std::size_t s = 0; s < speciesCount; ++s) {
-    StatsRow& row = rows[s];
+  std::vector<StatsRow> rows(static_cast<std::size_t>(speciesCount) + 1);
+  std::vector<double> heightSum(rows.size(), 0.0);
+  // Cover per species, and of the stand (the last row).
+  std::vector<std::vector<std::uint8_t>> covered(rows.size(),
+                                                 std::vector<std::uint8_t>(g.cellCount(), 0));
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t r : {static_cast<std::size_t>(p.species[i]), rows.size() - 1}) {
+      ++rows[r].alive;
+      heightSum[r] += p.height_m[i];
+      forCellsUnderCrown(g, p, i, [&](std::size_t cell) { covered[r][cell] = 1; });
+    }
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    StatsRow& row = rows[r];
+    const bool stand = r + 1 == rows.size();
     row.year = ecosystem.year();
-    row.species = static_cast<std::int32_t>(s);
-    row.born = ecosystem.bornLastYear()[s];
-    row.died = ecosystem.diedLastYear()[s];
-    row.meanHeight_m = row.alive ? heightSum[s] / row.alive : 0.0;
-    row.basalArea_m2PerHa /= area_ha;
-    row.coverFraction = static_cast<double>(std::count(covered[s].begin(), covered[s].end(), 1)) /
+    row.species = stand ? kAllSpecies : static_cast<std::int32_t>(r);
+    for (int s = 0; s < speciesCount; ++s)
+      if (stand || s == static_cast<int>(r)) {
+        row.born += ecosystem.bornLastYear()[s];
+        row.died += ecosystem.diedLastYear()[s];
+      }
+    row.meanHeight_m = row.alive ? heightSum[r] / row.alive : 0.0;
+    const StandMeasures m = measureStand(p, ecosystem.species(), area_ha, row.species);
+    row.stemsPerHa = m.stemsPerHa;
+    row.basalArea_m2PerHa = m.basalArea_m2PerHa;
+    row.qmd_cm = m.qmd_cm;
+    row.dominantHeight_m = m.dominantHeight_m;
+    row.sdi = m.sdi;
+    row.volume_m3PerHa = m.volume_m3PerHa;
+    row.coverFraction = static_cast<double>(std::count(covered[r].begin(), covered[r].end(), 1)) /
                         static_cast<double>(g.cellCount());
+    if (stand) row.densestHectareBasalArea_m2PerHa = densestBlockBasalArea(p, g);
   }
   return rows;
 }

@@ -9,7 +9,7 @@
 
 namespace eco {
 
-// The rows of the year just stepped, one per species.
+// The rows of the year just stepped: one per species, then the whole stand's.
 std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem);
 
 // The height of the tallest plant whose crown covers each cell centre, 0 where none does.

@@ -89,6 +89,25 @@ RunRecord runRecord(const Scenario& scenario, const RunOptions& options, std::ui
   return r;
 }
 
+// The scenario's [[planting]]: each species on its square grid over the whole map.
+void plantStands(Ecosystem& ecosystem, const Scenario& scenario) {
+  const Grid& g = ecosystem.grid();
+  for (const Planting& planting : scenario.planting) {
+    const auto& all = ecosystem.species();
+    const auto found = std::find_if(all.begin(), all.end(), [&](const EcosystemSpecies& s) {
+      return s.species.name == planting.species;
+    });
+    if (found == all.end())
+      throw InputError(planting.where, "no species '" + planting.species + "' in the scenario");
+    const int species = static_cast<int>(found - all.begin());
+    const double width = g.width * g.dx_m, height = g.height * g.dy_m;
+    for (double north = 0.5 * planting.spacing_m; north < height; north += planting.spacing_m)
+      for (double east = 0.5 * planting.spacing_m; east < width; east += planting.spacing_m)
+        ecosystem.plantSapling(species, east - 0.5 * g.dx_m, north - 0.5 * g.dy_m,
+                               planting.height_m);
+  }
+}
+
 // Plants from a checkpoint must fit this scenario's grid and species list.
 void checkState(const EcosystemState& state, const Ecosystem& ecosystem,
                 const std::filesystem::path& file) {
@@ -120,7 +139,8 @@ std::vector<EcosystemSpecies> loadEcosystemSpecies(const Scenario& scenario,
   for (const ScenarioSpecies& entry : scenario.species) {
     EcosystemSpecies s = readEcosystemSpecies(entry.file, entry.where);
     s.seedRainPerHaPerYear = entry.seedRainPerHaPerYear;
-    s.suitability = siteSuitability(s.ecology.tolerance, fields, scenario.simulation.suitability);
+    s.suitability = siteSuitability(s.ecology.tolerances(scenario.climate), fields,
+                                    scenario.simulation.suitability);
     result.push_back(std::move(s));
   }
   return result;
@@ -155,9 +175,8 @@ RunSummary runSimulation(const RunOptions& options) {
   std::vector<EcosystemSpecies> species = loadEcosystemSpecies(scenario, fields);
   summary.conditionsSeconds = secondsSince(conditionsStart);
 
-  EcosystemSettings settings{scenario.seed, scenario.climate.latitude_deg,
-                             scenario.climate.prevailingWindFrom_deg, scenario.simulation};
-  Ecosystem ecosystem(terrain, std::move(species), settings);
+  EcosystemSettings settings{scenario.seed, scenario.climate.prevailingWindFrom_deg};
+  Ecosystem ecosystem(terrain, fields, std::move(species), settings);
   std::vector<StatsRow> stats;
   createFolder(run.mapsFolder());
   createFolder(run.treesFolder());
@@ -171,6 +190,7 @@ RunSummary runSimulation(const RunOptions& options) {
       if (entry.path().extension() == ".csv") std::filesystem::remove(entry.path());
     std::filesystem::remove(run.checkpoint());
     writeConditionOutputs(fields, report, scenario, summary.folder);
+    plantStands(ecosystem, scenario);
     for (const EcosystemSpecies& s : ecosystem.species())
       writeFieldMap(run.mapsFolder(), "suitability_" + s.species.name, "0-1", s.suitability,
                     terrain.grid);
@@ -189,15 +209,18 @@ RunSummary runSimulation(const RunOptions& options) {
     std::vector<StatsRow> rows = statsOfYear(ecosystem);
     stats.insert(stats.end(), rows.begin(), rows.end());
     writeStatsCsv(run.stats(), stats, ecosystem.species());
-    if (year % scenario.output.snapshotEveryYears == 0 || year == summary.targetYears)
+    const bool last = year == summary.targetYears;
+    if (year % scenario.output.snapshotEveryYears == 0 || last)
       writeTreesCsv(run.snapshot(year), ecosystem);
-    writeCheckpoint(run.checkpoint(),
-                    {fingerprint, options.programVersion, ecosystem.state(), stats});
     summary.lastYear = year;
     if (options.progress)
       options.progress(
           {year, summary.targetYears, firstYear, ecosystem.plants().size(), secondsSince(start)});
-    if (options.stop && options.stop->load() && year < summary.targetYears) {
+    const bool stopping = options.stop && options.stop->load() && !last;
+    if (year % scenario.output.checkpointEveryYears == 0 || last || stopping)
+      writeCheckpoint(run.checkpoint(),
+                      {fingerprint, options.programVersion, ecosystem.state(), stats});
+    if (stopping) {
       summary.interrupted = true;
       break;
     }

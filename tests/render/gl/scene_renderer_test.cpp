@@ -103,15 +103,14 @@ TEST(SceneRenderer, DrawsATimelapseInWhichOneTreesSilhouetteGrows) {
   test::useHeadlessGl();
   const auto dir = test::freshDirectory("timelapse_run");
   std::filesystem::create_directories(dir / "trees");
-  const char* header =
-      "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n";
+  const std::string header = std::string(kTreesCsvHeader) + "\n";
   const std::pair<int, double> sizes[] = {{10, 2.0}, {20, 6.0}, {30, 11.0}};
   RunFolder run;
   run.dir = dir;
   for (auto [year, height] : sizes) {
     test::writeFile(dir / "trees" / fmt::format("year_{:04d}.csv", year),
-                    std::string(header) + fmt::format("1,maple,160,160,100,{},{},{},0.1,0.9,1\n",
-                                                      year - 2, height, 0.3 * height));
+                    header + fmt::format("1,maple,160,160,100,{},{},{},{},0.1,0.9,1\n", year - 2,
+                                         height, 0.3 * height, 0.4 * height));
     run.snapshotYears.push_back(year);
   }
   const Terrain terrain = test::flatTerrain(33, 10.0);

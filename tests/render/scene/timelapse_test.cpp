@@ -45,9 +45,8 @@ RunFolder oneTreeRun(const std::string& name) {
   RunFolder run;
   run.dir = dir;
   for (auto [year, height] : {std::pair{10, 0.0}, {20, 4.0}}) {
-    std::string rows =
-        "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n";
-    if (height > 0.0) rows += fmt::format("1,maple,160,160,100,5,{},1.0,0.05,0.9,1\n", height);
+    std::string rows = std::string(kTreesCsvHeader) + "\n";
+    if (height > 0.0) rows += fmt::format("1,maple,160,160,100,5,{},1.0,1.5,0.05,0.9,1\n", height);
     test::writeFile(RunPaths{dir}.snapshot(year), rows);
     run.snapshotYears.push_back(year);
   }

@@ -14,8 +14,10 @@ TEST(Conditions, EveryFieldCoversTheGridInItsRange) {
   for (const FieldInfo& info : conditionFieldInfo())
     EXPECT_EQ((f.*info.field).size(), t.grid.cellCount()) << info.name;
   EXPECT_EQ(f.altitude_m, t.height_m);
-  for (const Field* unit : {&f.moisture, &f.windiness, &f.sunniness})
+  for (const Field* unit : {&f.windiness, &f.sunniness})
     for (float v : *unit) ASSERT_TRUE(v >= 0.0f && v <= 1.0f);
+  for (float v : f.moisture) ASSERT_TRUE(v >= 1.0f && v <= 12.0f);  // Ellenberg's F scale
+  EXPECT_GT(f.openFlatSunniness, 0.0);
   EXPECT_EQ(report.fieldMilliseconds.size(), 5u);
   EXPECT_GT(report.sunRays, t.grid.cellCount());
 }

@@ -13,8 +13,30 @@ TEST(Moisture, FlatPlaneIsUniform) {
   computeSlopeAspect(flat, slope, aspect);
   computeMoisture(flat, slope, 1100.0, moisture);
   for (float m : moisture) ASSERT_EQ(m, moisture.front());
-  EXPECT_GT(moisture.front(), 0.0f);
-  EXPECT_LT(moisture.front(), 1.0f);
+  // Level ground in a temperate 1,100 mm climate is fresh: F about 5.
+  EXPECT_GT(moisture.front(), 4.0f);
+  EXPECT_LT(moisture.front(), 6.0f);
+}
+
+TEST(Moisture, TheClimatesNumberMovesOneUnitPer400mm) {
+  EXPECT_DOUBLE_EQ(climateMoisture(1100.0), 5.0);
+  EXPECT_DOUBLE_EQ(climateMoisture(1500.0), 6.0);
+  EXPECT_DOUBLE_EQ(climateMoisture(500.0), 3.5);
+}
+
+TEST(Moisture, AHillyLandscapeIsAContinuousFieldMostlyFresh) {
+  Terrain hills = generateMidpoint({129, 0.55, 400.0}, 10, 10, 300.0, 7);
+  Field slope, aspect, moisture;
+  computeSlopeAspect(hills, slope, aspect);
+  computeMoisture(hills, slope, 1100.0, moisture);
+  std::size_t clamped = 0, fresh = 0;
+  for (float m : moisture) {
+    clamped += m <= kDriestMoisture || m >= kWettestMoisture;
+    fresh += m >= 4.0f && m <= 6.0f;
+  }
+  const double n = static_cast<double>(moisture.size());
+  EXPECT_LT(clamped / n, 0.02);  // no floor or ceiling holding the cells
+  EXPECT_GT(fresh / n, 0.6);     // mostly F 4-6, as such a valley's woods are
 }
 
 TEST(Moisture, VValleyGathersFlowInItsLine) {
@@ -49,13 +71,12 @@ TEST(Moisture, PitsFillToTheirSpillLevel) {
   EXPECT_GT(filled[centre], 99.0);  // the pond reaches the rim
   EXPECT_LT(filled[centre], 100.01);
   for (std::size_t c = 0; c < filled.size(); ++c) ASSERT_GE(filled[c], bowl.height_m[c]);
-  // The pond is as wet as the climate allows, all over.
+  // The pond is wet (F 9 or more) all over, its outside is not.
   Field slope(bowl.grid.cellCount(), 5.0f), moisture;
   computeMoisture(bowl, slope, 1100.0, moisture);
-  const float wettest = static_cast<float>(1.0 - std::exp(-1100.0 / 800.0));
-  EXPECT_FLOAT_EQ(moisture[centre], wettest);
-  EXPECT_FLOAT_EQ(moisture[bowl.grid.index(25, 20)], wettest);
-  EXPECT_LT(moisture[bowl.grid.index(20, 2)], wettest);  // outside the rim
+  EXPECT_GE(moisture[centre], kPondMoisture);
+  EXPECT_GE(moisture[bowl.grid.index(25, 20)], kPondMoisture);
+  EXPECT_LT(moisture[bowl.grid.index(20, 2)], kPondMoisture);  // outside the rim
 }
 
 TEST(Moisture, WetterClimateIsWetter) {

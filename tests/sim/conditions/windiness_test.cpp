@@ -1,5 +1,7 @@
 #include "sim/conditions/windiness.hpp"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "terrain_support.hpp"
@@ -10,7 +12,26 @@ TEST(Windiness, FlatPlaneIsUniform) {
   Terrain flat = test::analyticTerrain(40, 40, 10, 10, [](double, double) { return 500.0; });
   Field wind;
   computeWindiness(flat, 270.0, wind);
-  for (float w : wind) ASSERT_FLOAT_EQ(w, wind.front());
+  // Open level ground has the same windiness whatever its size or altitude.
+  for (float w : wind) ASSERT_FLOAT_EQ(w, static_cast<float>(kOpenGroundWindiness));
+}
+
+TEST(Windiness, IsOnAnAbsoluteScaleNotTheMapsOwnRange) {
+  // The same hills, and the same hills with a hundredth of the relief: a near-plain must
+  // not stretch its few centimetres over the whole scale.
+  const Terrain hills = generateMidpoint({65, 0.55, 300.0}, 10, 10, 300.0, 4);
+  Terrain plain = hills;
+  for (float& h : plain.height_m) h = 300.0f + 0.01f * (h - 300.0f);
+  Field windHills, windPlain;
+  computeWindiness(hills, 270.0, windHills);
+  computeWindiness(plain, 270.0, windPlain);
+  auto range = [](const Field& f) {
+    const auto [lo, hi] = std::minmax_element(f.begin(), f.end());
+    return *hi - *lo;
+  };
+  ASSERT_GT(range(windHills), 0.2f);
+  EXPECT_LT(range(windPlain), 0.1f * range(windHills));
+  for (float w : windPlain) EXPECT_NEAR(w, kOpenGroundWindiness, 0.05);
 }
 
 TEST(Windiness, LeeOfARidgeIsCalmer) {

@@ -1,63 +1,160 @@
 #include "sim/ecology/growth.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
+
+#include "sim/ecology/light_grid.hpp"
 
 namespace eco {
 namespace {
 
+// Beech's allometries (iLand's species table) on a 40 m Chapman-Richards height curve.
 LifeHistory life() {
   LifeHistory h;
   h.maxAge_years = 200;
-  h.height_m = {30.0, 0.03, 1.4};
-  h.dbh_m = {1.0, 0.012, 1.3};
-  h.crownRadius_m = Polyline({{0.0, 0.3}, {1.0, 9.3}});
-  h.seedsPerYear = 40.0;
-  h.stressYearsTolerated = 4;
+  h.height_m = {40.0, 0.014, 1.27};
+  h.foliage = {0.021708, 1.7};
+  h.stem = {0.22225, 2.2503739};
+  h.branches = {0.022, 2.3};
+  h.coarseRoots = {0.018, 2.32};
+  h.specificLeafArea = 11.0;
+  h.crownDiameterSilva = {0.5856485, 0.4298499, -0.003455, -0.3238132};
+  h.lightUseEfficiency = 1.5;
+  h.intrinsicSurvival = 0.01;
+  h.stressMortality = 1.39;
+  h.fecundity_m2 = 40.0;
+  h.nonMastFraction = 0.3;
   return h;
 }
 
-TEST(Growth, FullVigorFollowsTheChapmanRichardsCurve) {
-  const GrowthCurve curve = life().height_m;
-  double h = curve.at(1.0);
-  for (int age = 1; age < 120; ++age) h = grownValue(curve, h, 1.0);
-  EXPECT_NEAR(h, curve.at(120.0), 1e-9);
-  EXPECT_NEAR(curve.ageOf(curve.at(37.0)), 37.0, 1e-9);
-}
-
-TEST(Growth, VigorScalesTheIncrementAndNothingPassesTheMaximum) {
-  const GrowthCurve curve = life().height_m;
-  const double h = curve.at(20.0);
-  const double full = grownValue(curve, h, 1.0) - h;
-  EXPECT_NEAR(grownValue(curve, h, 0.25) - h, 0.25 * full, 1e-12);
-  EXPECT_EQ(grownValue(curve, h, 0.0), h);
-  EXPECT_EQ(grownValue(curve, 30.0, 1.0), 30.0);
-  EXPECT_LE(grownValue(curve, 29.9999, 1.0), 30.0);
-}
-
-TEST(Growth, CrownFollowsTheAllometryButIsNoWiderThanHalfTheHeight) {
-  EXPECT_NEAR(crownRadiusOf(life(), 0.5, 30.0), 4.8, 1e-12);
-  EXPECT_NEAR(crownRadiusOf(life(), 0.0, 0.2), 0.1, 1e-12);
-}
-
-TEST(Growth, MortalityIsJabowasIntrinsicRateStressAndTheMaximumAge) {
+TEST(Growth, StemVolumeAndCrownFollowTheirAllometries) {
   const LifeHistory h = life();
-  EXPECT_NEAR(mortalityProbability(h, 50, 0), 4.605 / 200.0, 1e-12);
-  // 1 % of a cohort lives to the maximum age.
-  EXPECT_NEAR(std::pow(1.0 - mortalityProbability(h, 50, 0), 200), 0.01, 0.001);
-  EXPECT_NEAR(mortalityProbability(h, 50, 3), 4.605 / 200.0, 1e-12);
-  EXPECT_NEAR(mortalityProbability(h, 50, 4), 0.368, 1e-12);
-  EXPECT_EQ(mortalityProbability(h, 200, 0), 1.0);
+  EXPECT_NEAR(stemVolume(h, 0.3, 25.0), 0.45 * std::numbers::pi / 4 * 0.09 * 25.0, 1e-12);
+  // SILVA's crown diameter of a 30 cm, 25 m beech.
+  const double cd = std::exp(0.5856485 + 0.4298499 * std::log(30.0) - 0.003455 * 25.0 -
+                             0.3238132 * std::log(25.0 / 30.0));
+  EXPECT_NEAR(crownRadiusOf(h, 0.3, 25.0), cd / 2.0, 1e-12);
+  EXPECT_GT(cd, 6.0);  // a stand-grown beech's crown is some 6-10 m across
+  EXPECT_LT(cd, 10.0);
+  // A young plant's crown is no wider than half its height.
+  EXPECT_DOUBLE_EQ(crownRadiusOf(h, 0.0, 0.8), 0.4);
+  EXPECT_NEAR(leafAreaOf(h, 0.3, 25.0), 11.0 * 0.021708 * std::pow(30.0, 1.7), 1e-9);
 }
 
-TEST(Growth, SeedsScaleWithTheSquareOfTheStemDiameter) {
-  EXPECT_NEAR(seedCount(life(), 0.3, 1.0), 40.0, 1e-12);
-  EXPECT_NEAR(seedCount(life(), 0.6, 1.0), 160.0, 1e-12);
-  EXPECT_NEAR(seedCount(life(), 0.3, 0.5), 20.0, 1e-12);
-  LifeHistory shrub = life();
-  shrub.dbh_m.max = 0.15;
-  EXPECT_NEAR(seedCount(shrub, 0.15, 1.0), 40.0, 1e-12);
+TEST(Growth, ACrownHoldsNoMoreLeavesThanItsProjectionCanLight) {
+  LifeHistory h = life();
+  // At the deepest leaf the open sky's light has fallen to the compensation light.
+  EXPECT_NEAR(std::exp(-kLeafExtinction * maxCrownLeafAreaIndex(h)), leafCompensationLight(h),
+              1e-12);
+  // Beech's foliage stays below it; a foliage allometry four times as heavy reaches it.
+  const double radius = crownRadiusOf(h, 0.3, 25.0);
+  const double projection = std::numbers::pi * radius * radius;
+  EXPECT_LT(leafAreaOf(h, 0.3, 25.0), maxCrownLeafAreaIndex(h) * projection);
+  h.foliage.a *= 4.0;
+  EXPECT_NEAR(leafAreaOf(h, 0.3, 25.0), maxCrownLeafAreaIndex(h) * projection, 1e-9);
+  // A more efficient leaf pays its way deeper in the crown.
+  LifeHistory efficient = life();
+  efficient.lightUseEfficiency *= 2.0;
+  EXPECT_NEAR(maxCrownLeafAreaIndex(efficient) - maxCrownLeafAreaIndex(life()),
+              std::log(2.0) / kLeafExtinction, 1e-12);
+}
+
+TEST(Growth, WoodyBiomassInvertsToTheDiameter) {
+  const LifeHistory h = life();
+  for (double dbh : {0.011, 0.05, 0.2, 0.45, 0.9}) {
+    EXPECT_NEAR(diameterOfWoodyBiomass(h, woodyBiomass(h, dbh)), dbh, 1e-8 * dbh) << dbh;
+    // From last year's diameter, as a growing tree asks.
+    EXPECT_NEAR(diameterOfWoodyBiomass(h, woodyBiomass(h, dbh), 0.97 * dbh), dbh, 1e-8 * dbh);
+  }
+  EXPECT_EQ(diameterOfWoodyBiomass(h, 0.0), 0.0);
+  EXPECT_NEAR(woodyBiomass(h, 0.3),
+              0.22225 * std::pow(30.0, 2.2503739) + 0.022 * std::pow(30.0, 2.3) +
+                  0.018 * std::pow(30.0, 2.32),
+              1e-9);
+}
+
+TEST(Growth, TheCrownsUpkeepIsItsTurnoverAndALeafAtTheCompensationLightJustPaysIt) {
+  const LifeHistory h = life();
+  // One leaf turnover a year, and fine roots of 0.75 the foliage renewed once a year.
+  EXPECT_NEAR(crownUpkeep(h, 110.0), 10.0 * (1.0 + 0.75), 1e-12);
+  const double light = leafCompensationLight(h);
+  EXPECT_NEAR(h.lightUseEfficiency * kLeafExtinction * light, crownUpkeep(h, 1.0), 1e-12);
+  EXPECT_GT(light, 0.0);
+  EXPECT_LT(light, 1.0);
+}
+
+TEST(Growth, WoodIsWhatProductionLeavesAfterTheUpkeep) {
+  const LifeHistory h = life();
+  const double dbh = 0.2, height = 20.0, leaves = leafAreaOf(h, dbh, height);
+  const double absorbed = 0.6 * leaves;
+  const TreeYear year = growTree(h, dbh, height, leaves, absorbed, {});
+  EXPECT_NEAR(year.production_kg, 1.5 * absorbed, 1e-12);
+  EXPECT_NEAR(year.upkeep_kg, crownUpkeep(h, leaves), 1e-12);
+  EXPECT_NEAR(woodyBiomass(h, year.dbh_m) - woodyBiomass(h, dbh),
+              year.production_kg - year.upkeep_kg, 1e-6);
+  EXPECT_EQ(year.carbonDeficit(), 0.0);
+  EXPECT_GT(year.height_m, height);
+  // The site and the individual scale production; light enters only as absorbed light.
+  const TreeYear poorSite = growTree(h, dbh, height, leaves, absorbed, {.suitability = 0.5});
+  EXPECT_NEAR(poorSite.production_kg, 0.5 * year.production_kg, 1e-12);
+  // Making less than the upkeep: no growth, and the missing share is the carbon deficit.
+  const double starving = 0.25 * crownUpkeep(h, leaves) / h.lightUseEfficiency;
+  const TreeYear hungry = growTree(h, dbh, height, leaves, starving, {});
+  EXPECT_EQ(hungry.dbh_m, dbh);
+  EXPECT_EQ(hungry.height_m, height);
+  EXPECT_NEAR(hungry.carbonDeficit(), 0.75, 1e-12);
+  EXPECT_EQ(growTree(h, dbh, height, leaves, 0.0, {}).carbonDeficit(), 1.0);
+}
+
+TEST(Growth, HeightFollowsThePotentialNoFasterThanTheNewWoodCarries) {
+  const LifeHistory h = life();
+  const double dbh = 0.25, height = 25.0, leaves = leafAreaOf(h, dbh, height);
+  const TreeYear open = growTree(h, dbh, height, leaves, 0.7 * leaves, {});
+  EXPECT_NEAR(open.height_m - height, potentialHeightIncrement(h, height), 1e-12);
+  EXPECT_NEAR(potentialHeightIncrement(h, height),
+              h.height_m.at(h.height_m.ageOf(height) + 1.0) - height, 1e-12);
+  // Little wood: the increment is capped by the slenderness a stem can carry.
+  const double barely = 1.02 * crownUpkeep(h, leaves) / h.lightUseEfficiency;
+  const TreeYear thin = growTree(h, dbh, height, leaves, barely, {.lightResponse = 0.9});
+  EXPECT_NEAR(thin.height_m - height, h.maxHeightDiameter * (thin.dbh_m - dbh), 1e-9);
+  // A suppressed tree puts its little wood into height: it grows more slender.
+  const TreeYear shaded = growTree(h, dbh, height, leaves, 0.25 * leaves, {.lightResponse = 0.6});
+  EXPECT_GT((shaded.height_m - height) / (shaded.dbh_m - dbh),
+            (open.height_m - height) / (open.dbh_m - dbh));
+  // Nothing passes the species' maximum height.
+  EXPECT_EQ(growTree(h, 0.8, 40.0, leafAreaOf(h, 0.8, 40.0), 1e4, {}).height_m, 40.0);
+}
+
+TEST(Growth, SaplingsGrowInHeightAsLightAndSiteAllow) {
+  const LifeHistory h = life();
+  const double potential = potentialHeightIncrement(h, 0.5);
+  const SaplingYear full = growSapling(h, 0.5, {});
+  EXPECT_NEAR(full.height_m - 0.5, potential, 1e-12);
+  EXPECT_FALSE(full.poor);
+  const SaplingYear shade = growSapling(h, 0.5, {.suitability = 0.5, .lightResponse = 0.5});
+  EXPECT_NEAR(shade.height_m - 0.5, 0.25 * potential, 1e-12);
+  EXPECT_TRUE(growSapling(h, 0.5, {.lightResponse = 0.04}).poor);  // below the 5 % threshold
+  EXPECT_NEAR(saplingDiameter(h, 1.3), 1.3 / h.saplingHeightDiameter, 1e-12);
+}
+
+TEST(Growth, MortalityIsIntrinsicPlusCarbonStarvation) {
+  const LifeHistory h = life();
+  // 1 % of a cohort reaches the maximum age, and none passes it.
+  EXPECT_NEAR(std::pow(1.0 - treeMortality(h, 50, 0.0), 200), 0.01, 1e-12);
+  EXPECT_EQ(treeMortality(h, 200, 0.0), 1.0);
+  // iLand's stress hazard 1 - exp(-probStress x deficit).
+  EXPECT_NEAR(treeMortality(h, 50, 1.0), intrinsicMortality(h) + 1.0 - std::exp(-1.39), 1e-12);
+  EXPECT_NEAR(treeMortality(h, 50, 0.5), intrinsicMortality(h) + 1.0 - std::exp(-0.695), 1e-12);
+}
+
+TEST(Growth, SeedsScaleWithCrownAreaMastYearsAndLight) {
+  const LifeHistory h = life();
+  EXPECT_NEAR(seedProduction(h, 2.0, true, 1.0), 40.0 * std::numbers::pi * 4.0, 1e-9);
+  EXPECT_NEAR(seedProduction(h, 4.0, true, 1.0), 4.0 * seedProduction(h, 2.0, true, 1.0), 1e-9);
+  EXPECT_NEAR(seedProduction(h, 2.0, false, 1.0), 0.3 * seedProduction(h, 2.0, true, 1.0), 1e-9);
+  EXPECT_NEAR(seedProduction(h, 2.0, true, 0.5), 0.5 * seedProduction(h, 2.0, true, 1.0), 1e-9);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #include "sim/ecology/species_ecology.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include <fmt/format.h>
 
 #include <gtest/gtest.h>
 
@@ -23,20 +26,35 @@ std::string errorOf(const std::string& text) {
   return "no error";
 }
 
+// The line of the first `key = ` in a text, counting from 1.
+int lineOf(const std::string& text, const std::string& key) {
+  const std::size_t at = text.find("\n" + key + " = ");
+  return 2 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+const char* kHead =
+    "[ecology]\nellenberg = { light = 3, temperature = 5, moisture = 5 }\nwind_firmness = 160\n";
+
 const char* kLife = R"(
 [ecology.life]
 max_age_years = 100
 max_height_m = 20.0
 height_growth_rate = 0.05
 height_growth_shape = 1.2
-max_dbh_m = 0.5
-dbh_growth_rate = 0.02
-dbh_growth_shape = 1.1
-crown_radius_m = [[0, 0.3], [0.5, 4.0]]
+form_factor = 0.45
+foliage_biomass = [0.02, 1.7]
+stem_biomass = [0.2, 2.3]
+branch_biomass = [0.02, 2.3]
+coarse_root_biomass = [0.02, 2.3]
+specific_leaf_area_m2_per_kg = 10.0
+leaf_turnover_per_year = 1.0
+fine_root_foliage_ratio = 0.75
+fine_root_turnover_per_year = 1.0
+crown_diameter_silva = [0.34, 0.33, 0.0145, -0.041]
 crown_ratio = 0.5
-crown_transmittance = 0.2
+light_use_efficiency = 1.5
 maturity_age_years = 15
-seeds_per_year = 10
+fecundity_per_m2 = 10
 germination = 0.4
 dispersal = "wind"
 dispersal_mean_m = 30.0
@@ -56,29 +74,43 @@ TEST(Ecology, LightMinimaFollowEllenbergsDefinitions) {
 }
 
 TEST(Ecology, TolerancesDerivedFromEllenbergValues) {
+  // 10 degC at sea level, 5 K colder per km: 200 m per degree.
+  Climate climate;
+  climate.meanAnnualTemperature_c = 10.0;
+  climate.temperatureAltitude_m = 0.0;
+  climate.lapseRate_K_per_m = 0.005;
   const ToleranceCurves t =
-      deriveTolerances({.light = 3, .temperature = 5, .moisture = 5, .continentality = 2});
-  // Moisture number F = 1 + 8 m: full within 1.5 units of F = 5, zero 3.5 units away.
-  EXPECT_DOUBLE_EQ(t.moisture((5.0 - 1.0) / 8.0), 1.0);
-  EXPECT_DOUBLE_EQ(t.moisture((5.0 - 1.5 - 1.0) / 8.0), 1.0);
-  EXPECT_NEAR(t.moisture((5.0 - 2.5 - 1.0) / 8.0), 0.5, 1e-12);
-  EXPECT_DOUBLE_EQ(t.moisture((5.0 + 3.5 - 1.0) / 8.0), 0.0);
-  // T = 5 is the submontane belt: full from 75 m to 1425 m, zero above 2325 m.
-  EXPECT_DOUBLE_EQ(t.altitude_m(750.0), 1.0);
-  EXPECT_DOUBLE_EQ(t.altitude_m(1425.0), 1.0);
-  EXPECT_NEAR(t.altitude_m(1875.0), 0.5, 1e-12);
-  EXPECT_DOUBLE_EQ(t.altitude_m(2325.0), 0.0);
-  // K = 2: exposure tolerated up to windiness 0.44, none past 0.84.
-  EXPECT_DOUBLE_EQ(t.windiness(0.44), 1.0);
-  EXPECT_NEAR(t.windiness(0.64), 0.5, 1e-12);
-  EXPECT_DOUBLE_EQ(t.windiness(0.9), 0.0);
-  EXPECT_DOUBLE_EQ(t.sunniness(0.02), 0.0);
-  EXPECT_DOUBLE_EQ(t.sunniness(0.32), 1.0);
+      deriveTolerances({.light = 3, .temperature = 5, .moisture = 5}, 160.0, climate);
+  // The site's F against the species' F = 5: full within 1.5 units, zero 3.5 units away.
+  EXPECT_DOUBLE_EQ(t.moisture(5.0), 1.0);
+  EXPECT_DOUBLE_EQ(t.moisture(3.5), 1.0);
+  EXPECT_NEAR(t.moisture(2.5), 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(t.moisture(8.5), 0.0);
+  EXPECT_DOUBLE_EQ(t.moisture(1.5), 0.0);
+  // T = 5 is 7 degC, 1.5 K per unit: full from 9.25 degC (150 m) to 4.75 degC (1050 m),
+  // none at 1.75 degC (1650 m).
+  EXPECT_DOUBLE_EQ(t.altitude_m(150.0), 1.0);
+  EXPECT_DOUBLE_EQ(t.altitude_m(1050.0), 1.0);
+  EXPECT_NEAR(t.altitude_m(1350.0), 0.5, 1e-9);
+  EXPECT_DOUBLE_EQ(t.altitude_m(1650.0), 0.0);
+  EXPECT_NEAR(altitudeOfTemperature(7.0, climate), 600.0, 1e-9);
+  // The same species in a climate 3 K warmer lives 600 m higher.
+  climate.meanAnnualTemperature_c = 13.0;
+  const ToleranceCurves warm =
+      deriveTolerances({.light = 3, .temperature = 5, .moisture = 5}, 160.0, climate);
+  EXPECT_NEAR(warm.altitude_m(1950.0), 0.5, 1e-9);
+  // Wind firmness 160 bears windiness 0.5 fully and none from 0.85; a weaker stem less.
+  EXPECT_DOUBLE_EQ(t.windiness(0.5), 1.0);
+  EXPECT_NEAR(t.windiness(0.675), 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(t.windiness(0.85), 0.0);
+  const ToleranceCurves weak = deriveTolerances({.light = 3}, 110.0, climate);
+  EXPECT_DOUBLE_EQ(weak.windiness(0.75), 0.0);
+  EXPECT_DOUBLE_EQ(weak.windiness(0.4), 1.0);
   // Indifferent ("x") values tolerate the whole range.
-  const ToleranceCurves x = deriveTolerances({.light = 7});
-  EXPECT_DOUBLE_EQ(x.moisture(0.0), 1.0);
+  const ToleranceCurves x = deriveTolerances({.light = 7}, 160.0, climate);
+  EXPECT_DOUBLE_EQ(x.moisture(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(x.moisture(12.0), 1.0);
   EXPECT_DOUBLE_EQ(x.altitude_m(3000.0), 1.0);
-  EXPECT_DOUBLE_EQ(x.windiness(1.0), 1.0);
 }
 
 TEST(Ecology, GrowthCurveAndItsInverse) {
@@ -92,7 +124,8 @@ TEST(Ecology, GrowthCurveAndItsInverse) {
 TEST(Ecology, ParsesAFileAndItsOverrides) {
   const TomlDocument document = TomlDocument::parse(std::string(R"(
 [ecology]
-ellenberg = { light = 6, temperature = "x", moisture = 4, continentality = 3 }
+ellenberg = { light = 6, temperature = "x", moisture = 4 }
+wind_firmness = 150
 light_response = [[0.1, 0], [0.2, 1]]
 [ecology.tolerance]
 slope_deg = [[10, 1], [20, 0]]
@@ -104,8 +137,13 @@ slope_deg = [[10, 1], [20, 0]]
   EXPECT_EQ(e.ellenberg.light, 6);
   EXPECT_EQ(e.ellenberg.temperature, 0);
   EXPECT_DOUBLE_EQ(e.lightResponse(0.15), 0.5);
-  EXPECT_DOUBLE_EQ(e.tolerance.slope_deg(15.0), 0.5);
-  EXPECT_DOUBLE_EQ(e.tolerance.moisture(0.375), 1.0);  // derived: F = 4
+  const ToleranceCurves t = e.tolerances(Climate{});
+  EXPECT_DOUBLE_EQ(t.slope_deg(15.0), 0.5);
+  EXPECT_DOUBLE_EQ(t.moisture(4.0), 1.0);  // derived: F = 4
+  EXPECT_DOUBLE_EQ(t.moisture(8.0), 0.0);
+  EXPECT_DOUBLE_EQ(e.windFirmness, 150.0);
+  EXPECT_DOUBLE_EQ(e.life.foliage.at(10.0), 0.02 * std::pow(10.0, 1.7));
+  EXPECT_DOUBLE_EQ(e.life.lightUseEfficiency, 1.5);
   EXPECT_EQ(e.life.dispersal, DispersalVector::Wind);
   EXPECT_DOUBLE_EQ(e.life.downwindBias, 0.3);
   EXPECT_DOUBLE_EQ(e.life.height_m.max, 20.0);
@@ -113,14 +151,16 @@ slope_deg = [[10, 1], [20, 0]]
 }
 
 TEST(Ecology, ALongDistanceShareNeedsALongerMean) {
-  const std::string head =
-      "[ecology]\nellenberg = { light = 3, temperature = 5, moisture = 5, continentality = 2 }\n";
+  const std::string head = kHead;
   EXPECT_NE(errorOf(head + kLife + "long_distance_fraction = 0.1\n")
                 .find("ecology.life.long_distance_mean_m: missing"),
             std::string::npos);
-  EXPECT_NE(errorOf(head + kLife + "long_distance_fraction = 0.1\nlong_distance_mean_m = 20\n")
-                .find("eco.toml:22: ecology.life.long_distance_mean_m: must be longer than "
-                      "dispersal_mean_m"),
+  const std::string tooShort =
+      head + kLife + "long_distance_fraction = 0.1\nlong_distance_mean_m = 20\n";
+  EXPECT_NE(errorOf(tooShort).find(
+                fmt::format("eco.toml:{}: ecology.life.long_distance_mean_m: must be longer than "
+                            "dispersal_mean_m",
+                            lineOf(tooShort, "long_distance_mean_m"))),
             std::string::npos);
   EXPECT_EQ(errorOf(head + kLife + "long_distance_fraction = 0.1\nlong_distance_mean_m = 300\n"),
             "no error");
@@ -128,21 +168,28 @@ TEST(Ecology, ALongDistanceShareNeedsALongerMean) {
 
 TEST(Ecology, BadValuesAreReportedAtTheirLine) {
   EXPECT_NE(errorOf(std::string("[ecology]\nellenberg = { light = 3, temperature = \"y\", "
-                                "moisture = 5, continentality = 2 }\n") +
+                                "moisture = 5 }\nwind_firmness = 160\n") +
                     kLife)
                 .find("eco.toml:2: ecology.ellenberg.temperature: expected a number or \"x\""),
             std::string::npos);
   EXPECT_NE(errorOf(std::string("[ecology]\nellenberg = { light = 10, temperature = 5, "
-                                "moisture = 5, continentality = 2 }\n") +
+                                "moisture = 5 }\nwind_firmness = 160\n") +
                     kLife)
                 .find("ecology.ellenberg.light: value 10 is outside [1, 9]"),
             std::string::npos);
   std::string animal = kLife;
   animal.replace(animal.find("\"wind\""), 6, "\"animal\"");
-  EXPECT_NE(errorOf("[ecology]\nellenberg = { light = 3, temperature = 5, moisture = 5, "
-                    "continentality = 2 }\n" +
-                    animal)
-                .find("only wind-dispersed species drift downwind"),
+  EXPECT_NE(errorOf(kHead + animal).find("only wind-dispersed species drift downwind"),
+            std::string::npos);
+  std::string noLue = kLife;
+  noLue.erase(noLue.find("light_use_efficiency"), noLue.find("maturity") - noLue.find("light_use"));
+  EXPECT_NE(errorOf(kHead + noLue).find("ecology.life.light_use_efficiency: missing"),
+            std::string::npos);
+  std::string badAllometry = kLife;
+  badAllometry.replace(badAllometry.find("[0.02, 1.7]"), 11, "[0.0, 1.7]");
+  EXPECT_NE(errorOf(kHead + badAllometry)
+                .find(fmt::format("eco.toml:{}: ecology.life.foliage_biomass: expected [a, b]",
+                                  lineOf(kHead + badAllometry, "foliage_biomass"))),
             std::string::npos);
 }
 

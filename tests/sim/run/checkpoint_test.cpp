@@ -20,7 +20,17 @@ Checkpoint sample() {
     c.state.plants.height_m[i] = 1.5f * i;
     c.state.plants.stressYears[i] = static_cast<std::uint16_t>(i);
   }
-  c.stats.push_back({17, 0, 3, 1, 2, 0.75, 0.01, 0.2});
+  c.state.plants.growthFactor = {1.0f, 0.9f, 0.7f};
+  c.stats.push_back({.year = 17,
+                     .species = 0,
+                     .alive = 3,
+                     .born = 1,
+                     .died = 2,
+                     .meanHeight_m = 0.75,
+                     .stemsPerHa = 2.0,
+                     .basalArea_m2PerHa = 0.01,
+                     .sdi = 1.5,
+                     .coverFraction = 0.2});
   return c;
 }
 
@@ -43,9 +53,11 @@ TEST(Checkpoint, RoundTripsTheState) {
   EXPECT_EQ(back.state.plants.id, sample().state.plants.id);
   EXPECT_EQ(back.state.plants.height_m, sample().state.plants.height_m);
   EXPECT_EQ(back.state.plants.stressYears, sample().state.plants.stressYears);
+  EXPECT_EQ(back.state.plants.growthFactor, sample().state.plants.growthFactor);
   ASSERT_EQ(back.stats.size(), 1u);
   EXPECT_EQ(back.stats[0].died, 2);
   EXPECT_EQ(back.stats[0].coverFraction, 0.2);
+  EXPECT_EQ(back.stats[0].sdi, 1.5);
 }
 
 TEST(Checkpoint, RefusesCorruptTruncatedForeignAndMissingFiles) {

@@ -14,15 +14,15 @@ namespace {
 using test::OneHectare;
 
 const char* kHeader =
-    "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed\n";
+    "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,variant_seed\n";
 
 TEST(RunFormat, ReadsATreesFileAndNumbersSpeciesInOrderOfAppearance) {
   const auto file = test::freshDirectory("run_folder_csv") / "year_0010.csv";
-  test::writeFile(
-      file, std::string(kHeader) +
-                "7,pine,10.500,20.250,412.000,12,6.500,1.200,0.0800,0.900,123\n"
-                "9,beech,1.000,2.000,400.000,3,0.400,0.100,0.0000,1.000,5\n"
-                "11,pine,3.000,4.000,401.000,40,20.000,3.000,0.3000,0.500,18446744073709551615\n");
+  test::writeFile(file, std::string(kHeader) +
+                            "7,pine,10.500,20.250,412.000,12,6.500,1.200,2.500,0.0800,0.900,123\n"
+                            "9,beech,1.000,2.000,400.000,3,0.400,0.100,0.000,0.0000,1.000,5\n"
+                            "11,pine,3.000,4.000,401.000,40,20.000,3.000,12.000,0.3000,0.500,"
+                            "18446744073709551615\n");
   const TreeSnapshot s = readTreesCsv(file);
   ASSERT_EQ(s.trees.size(), 3u);
   EXPECT_EQ(s.speciesNames, (std::vector<std::string>{"pine", "beech"}));
@@ -30,6 +30,7 @@ TEST(RunFormat, ReadsATreesFileAndNumbersSpeciesInOrderOfAppearance) {
   EXPECT_EQ(s.trees[0].species, 0);
   EXPECT_DOUBLE_EQ(s.trees[0].north_m, 20.25);
   EXPECT_FLOAT_EQ(s.trees[0].height_m, 6.5f);
+  EXPECT_FLOAT_EQ(s.trees[0].crownBase_m, 2.5f);
   EXPECT_EQ(s.trees[1].species, 1);
   EXPECT_EQ(s.trees[2].species, 0);
   EXPECT_EQ(s.trees[2].variantSeed, 18446744073709551615ull);
@@ -37,8 +38,8 @@ TEST(RunFormat, ReadsATreesFileAndNumbersSpeciesInOrderOfAppearance) {
 
 TEST(RunFormat, AMalformedTreesFileNamesTheLine) {
   const auto file = test::freshDirectory("run_folder_bad") / "trees.csv";
-  test::writeFile(file,
-                  std::string(kHeader) + "1,pine,1,2,3,4,5,6,7,8,9\n2,pine,1,2,x,4,5,6,7,8,9\n");
+  test::writeFile(
+      file, std::string(kHeader) + "1,pine,1,2,3,4,5,6,7,8,9,10\n2,pine,1,2,x,4,5,6,7,8,9,10\n");
   try {
     readTreesCsv(file);
     FAIL();
@@ -56,12 +57,16 @@ TEST_F(OneHectare, CsvFilesHaveTheDocumentedColumns) {
   writeStatsCsv(folder / "stats.csv", statsOfYear(ecosystem), ecosystem.species());
   const std::string trees = test::readFile(folder / "trees.csv");
   EXPECT_EQ(trees.substr(0, trees.find('\n')),
-            "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,dbh_m,vigor,variant_seed");
+            "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,"
+            "variant_seed");
   EXPECT_NE(trees.find("\n1,t,12.000,33.000,50.000,40,"), std::string::npos) << trees;
   const std::string stats = test::readFile(folder / "stats.csv");
   EXPECT_EQ(stats.substr(0, stats.find('\n')),
-            "year,species,alive,born,died,mean_height_m,basal_area_m2_per_ha,cover_fraction");
+            "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,qmd_cm,"
+            "dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,"
+            "densest_hectare_basal_area_m2_per_ha");
   EXPECT_NE(stats.find("\n0,t,1,0,0,"), std::string::npos) << stats;
+  EXPECT_NE(stats.find("\n0,all,1,0,0,"), std::string::npos) << stats;
 }
 
 TEST_F(OneHectare, TheTreesReaderReadsWhatTheWriterWrote) {

@@ -18,10 +18,19 @@ TEST_F(OneHectare, BasalAreaCoverAndCanopyFromThePlants) {
   ecosystem.plant(0, 41.0, 43.0, 100);
   const Plants& p = ecosystem.plants();
   const std::vector<StatsRow> rows = statsOfYear(ecosystem);
-  ASSERT_EQ(rows.size(), 1u);
-  EXPECT_EQ(rows[0].alive, 1);
-  EXPECT_NEAR(rows[0].meanHeight_m, p.height_m[0], 1e-6);
-  EXPECT_NEAR(rows[0].basalArea_m2PerHa, std::numbers::pi / 4.0 * p.dbh_m[0] * p.dbh_m[0], 1e-6);
+  ASSERT_EQ(rows.size(), 2u);  // the species, and the whole stand
+  EXPECT_EQ(rows[1].species, kAllSpecies);
+  for (const StatsRow& row : rows) {
+    EXPECT_EQ(row.alive, 1);
+    EXPECT_NEAR(row.meanHeight_m, p.height_m[0], 1e-6);
+    EXPECT_NEAR(row.basalArea_m2PerHa, std::numbers::pi / 4.0 * p.dbh_m[0] * p.dbh_m[0], 1e-6);
+    ASSERT_GE(p.dbh_m[0], 0.1f);
+    EXPECT_DOUBLE_EQ(row.stemsPerHa, 1.0);
+    EXPECT_NEAR(row.qmd_cm, 100.0 * p.dbh_m[0], 1e-4);
+    EXPECT_NEAR(row.dominantHeight_m, p.height_m[0], 1e-6);
+  }
+  // The hectare is the map: its one tree makes the densest block.
+  EXPECT_NEAR(rows[1].densestHectareBasalArea_m2PerHa, rows[1].basalArea_m2PerHa, 1e-9);
   // The cell centres inside the crown circle, counted directly.
   int inside = 0;
   const Grid& g = terrain.grid;

@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 
 #include "core/error.hpp"
+#include "sim/run/checkpoint.hpp"
 #include "test_files.hpp"
 
 namespace eco {
@@ -75,14 +76,16 @@ TEST(Simulation, WritesTheRunFolder) {
         "maps/suitability_pine.exr", "maps/canopy_height.png"})
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
   const std::string stats = test::readFile(out / "stats.csv");
-  EXPECT_EQ(std::count(stats.begin(), stats.end(), '\n'), 1 + 30 * 3);
+  // A header, then each year a row per species (three) and one for the whole stand.
+  EXPECT_EQ(std::count(stats.begin(), stats.end(), '\n'), 1 + 30 * 4);
   const std::string json = test::readFile(out / "run.json");
   EXPECT_NE(json.find("\"status\": \"complete\""), std::string::npos);
   EXPECT_NE(json.find("\"fingerprint\""), std::string::npos);
   EXPECT_NE(json.find("\"mean_site_of_map\""), std::string::npos);
   EXPECT_NE(json.find("\"mean_site_taller_than_5m\""), std::string::npos);
   // Where the taller plants stand: a mean of each condition over their cells, so within
-  // the terrain's altitudes (base 400 m, relief 60 m) and the 0..1 of the unitless fields.
+  // the terrain's altitudes (base 400 m, relief 60 m), Ellenberg's F scale for moisture and
+  // the 0..1 of the unitless fields.
   ASSERT_EQ(summary.meanSite.size(), conditionFieldInfo().size());
   int speciesWithTallPlants = 0;
   for (const SpeciesCount& c : summary.counts) {
@@ -97,7 +100,10 @@ TEST(Simulation, WritesTheRunFolder) {
       if (name == "altitude") {
         EXPECT_GT(c.meanSiteOver5m[f], 340.0);
         EXPECT_LT(c.meanSiteOver5m[f], 520.0);
-      } else if (name == "moisture" || name == "windiness" || name == "sunniness") {
+      } else if (name == "moisture") {
+        EXPECT_GE(c.meanSiteOver5m[f], 1.0) << name;
+        EXPECT_LE(c.meanSiteOver5m[f], 12.0) << name;
+      } else if (name == "windiness" || name == "sunniness") {
         EXPECT_GE(c.meanSiteOver5m[f], 0.0) << name;
         EXPECT_LE(c.meanSiteOver5m[f], 1.0) << name;
       }
@@ -138,6 +144,33 @@ TEST(Simulation, ResumedRunEndsWithTheSameOutputsAsAnUninterruptedOne) {
   rest.progress = [&](const RunProgress& p) { firstYear = p.firstYear; };
   EXPECT_EQ(runSimulation(rest).lastYear, 30);
   EXPECT_EQ(firstYear, 14);
+  EXPECT_TRUE(outputsOf(whole) == outputsOf(pieces));
+}
+
+// With a checkpoint every 5 years, the checkpoint lags the run by up to 4 years; a stopped run
+// still writes one for the year it stops at, and resumes to the same outputs.
+TEST(Simulation, CheckpointsEveryFewYearsStillResumeExactly) {
+  const auto scenario = smallScenario("every5", "checkpoint_every_years = 5\n");
+  const auto whole = test::freshDirectory("simulation_every5_whole");
+  runSimulation(optionsFor(scenario, whole));
+  const auto pieces = test::freshDirectory("simulation_every5_pieces");
+  std::atomic<bool> stop{false};
+  RunOptions first = optionsFor(scenario, pieces);
+  first.stop = &stop;
+  std::vector<int> checkpointYears;
+  const std::uint64_t fingerprint = scenarioFingerprint(loadScenario(scenario));
+  first.progress = [&](const RunProgress& p) {
+    if (std::filesystem::exists(pieces / "checkpoint.bin"))
+      checkpointYears.push_back(readCheckpoint(pieces / "checkpoint.bin", fingerprint).state.year);
+    stop = p.year >= 13;
+  };
+  EXPECT_TRUE(runSimulation(first).interrupted);
+  // At the progress of years 6..13 the checkpoint on disk is year 5's, then year 10's.
+  EXPECT_EQ(checkpointYears, (std::vector<int>{5, 5, 5, 5, 5, 10, 10, 10}));
+  EXPECT_EQ(readCheckpoint(pieces / "checkpoint.bin", fingerprint).state.year, 13);
+  RunOptions rest = optionsFor(scenario, pieces);
+  rest.resume = true;
+  EXPECT_EQ(runSimulation(rest).lastYear, 30);
   EXPECT_TRUE(outputsOf(whole) == outputsOf(pieces));
 }
 

@@ -1,0 +1,184 @@
+#include "sim/ecology/light_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+
+namespace eco {
+namespace {
+
+constexpr double kColumnArea_m2 = kLightColumn_m * kLightColumn_m;
+// A crown's projection is sampled on this many points per column side to share it out.
+constexpr int kSamples = 4;
+
+double crownArea(const CrownShape& crown) {
+  return std::numbers::pi * crown.radius_m * crown.radius_m;
+}
+
+// The share of light a crown's leaves take from what reaches them.
+double absorbedShare(const CrownShape& crown) {
+  const double area = crownArea(crown);
+  if (area <= 0.0) return 0.0;
+  return 1.0 - std::exp(-kLeafExtinction * crown.leafArea_m2 / area);
+}
+
+}  // namespace
+
+LightGrid::LightGrid(const Grid& terrain, const Field& topLight)
+    : columnsX_(
+          std::max(1, static_cast<int>(std::ceil(terrain.width * terrain.dx_m / kLightColumn_m)))),
+      columnsY_(
+          std::max(1, static_cast<int>(std::ceil(terrain.height * terrain.dy_m / kLightColumn_m)))),
+      originEast_m_(-0.5 * terrain.dx_m),
+      originNorth_m_(-0.5 * terrain.dy_m) {
+  ECO_ASSERT(topLight.size() == terrain.cellCount(),
+             "top light " << topLight.size() << " for " << terrain.cellCount() << " cells");
+  topLight_.resize(static_cast<std::size_t>(columnsX_) * columnsY_);
+  for (int y = 0; y < columnsY_; ++y)
+    for (int x = 0; x < columnsX_; ++x) {
+      // The terrain cell under the column's centre.
+      const double east = originEast_m_ + (x + 0.5) * kLightColumn_m;
+      const double north = originNorth_m_ + (y + 0.5) * kLightColumn_m;
+      const int cx =
+          std::clamp(static_cast<int>(std::lround(east / terrain.dx_m)), 0, terrain.width - 1);
+      const int cy =
+          std::clamp(terrain.height - 1 - static_cast<int>(std::lround(north / terrain.dy_m)), 0,
+                     terrain.height - 1);
+      topLight_[static_cast<std::size_t>(y) * columnsX_ + x] = topLight[terrain.index(cx, cy)];
+    }
+  columnStart_.assign(topLight_.size() + 1, 0);
+}
+
+long LightGrid::columnAt(double east_m, double north_m) const {
+  const int x = std::clamp(static_cast<int>(std::floor((east_m - originEast_m_) / kLightColumn_m)),
+                           0, columnsX_ - 1);
+  const int y = std::clamp(
+      static_cast<int>(std::floor((north_m - originNorth_m_) / kLightColumn_m)), 0, columnsY_ - 1);
+  return static_cast<long>(y) * columnsX_ + x;
+}
+
+void LightGrid::footprint(const CrownShape& crown, std::vector<Footprint>& out) const {
+  out.clear();
+  const double r = crown.radius_m;
+  if (r <= 0.5 * kLightColumn_m) {
+    out.push_back({static_cast<std::int32_t>(columnAt(crown.east_m, crown.north_m)), 1.0f});
+    return;
+  }
+  const int x0 = static_cast<int>(std::floor((crown.east_m - r - originEast_m_) / kLightColumn_m));
+  const int x1 = static_cast<int>(std::floor((crown.east_m + r - originEast_m_) / kLightColumn_m));
+  const int y0 =
+      static_cast<int>(std::floor((crown.north_m - r - originNorth_m_) / kLightColumn_m));
+  const int y1 =
+      static_cast<int>(std::floor((crown.north_m + r - originNorth_m_) / kLightColumn_m));
+  int total = 0;
+  for (int y = std::max(y0, 0); y <= std::min(y1, columnsY_ - 1); ++y)
+    for (int x = std::max(x0, 0); x <= std::min(x1, columnsX_ - 1); ++x) {
+      int inside = 0;
+      for (int sy = 0; sy < kSamples; ++sy)
+        for (int sx = 0; sx < kSamples; ++sx) {
+          const double e = originEast_m_ + (x + (sx + 0.5) / kSamples) * kLightColumn_m;
+          const double n = originNorth_m_ + (y + (sy + 0.5) / kSamples) * kLightColumn_m;
+          const double de = e - crown.east_m, dn = n - crown.north_m;
+          inside += de * de + dn * dn <= r * r ? 1 : 0;
+        }
+      if (inside == 0) continue;
+      out.push_back({static_cast<std::int32_t>(static_cast<long>(y) * columnsX_ + x),
+                     static_cast<float>(inside)});
+      total += inside;
+    }
+  if (total == 0) {
+    out.assign(1, {static_cast<std::int32_t>(columnAt(crown.east_m, crown.north_m)), 1.0f});
+    return;
+  }
+  for (Footprint& f : out) f.weight /= static_cast<float>(total);
+}
+
+void LightGrid::compute(const std::vector<CrownShape>& crowns) {
+  const std::size_t n = crowns.size();
+  // Each crown's footprint, in crown order (CSR): count, then fill.
+  crownStart_.assign(n + 1, 0);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    thread_local std::vector<Footprint> columns;
+    footprint(crowns[i], columns);
+    crownStart_[i + 1] = columns.size();
+  });
+  for (std::size_t i = 0; i < n; ++i) crownStart_[i + 1] += crownStart_[i];
+  entries_.resize(crownStart_[n]);
+  std::vector<std::uint32_t> entryCrown(entries_.size());
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    thread_local std::vector<Footprint> columns;
+    footprint(crowns[i], columns);
+    std::copy(columns.begin(), columns.end(), entries_.begin() + crownStart_[i]);
+    std::fill(entryCrown.begin() + crownStart_[i], entryCrown.begin() + crownStart_[i + 1],
+              static_cast<std::uint32_t>(i));
+  });
+
+  // Each column's entries, tallest crown first (ties: the earlier crown).
+  const std::size_t columns = topLight_.size();
+  columnStart_.assign(columns + 1, 0);
+  for (const Footprint& f : entries_) ++columnStart_[f.column + 1];
+  for (std::size_t c = 0; c < columns; ++c) columnStart_[c + 1] += columnStart_[c];
+  std::vector<std::size_t> order(entries_.size());
+  {
+    std::vector<std::size_t> next(columnStart_.begin(), columnStart_.end() - 1);
+    for (std::size_t e = 0; e < entries_.size(); ++e) order[next[entries_[e].column]++] = e;
+  }
+  std::vector<double> entryAbsorbed(entries_.size(), 0.0);
+  layers_.resize(entries_.size());
+  tbb::parallel_for(std::size_t{0}, columns, [&](std::size_t c) {
+    const auto first = order.begin() + static_cast<std::ptrdiff_t>(columnStart_[c]);
+    const auto last = order.begin() + static_cast<std::ptrdiff_t>(columnStart_[c + 1]);
+    std::sort(first, last, [&](std::size_t a, std::size_t b) {
+      const float ta = crowns[entryCrown[a]].top_m, tb = crowns[entryCrown[b]].top_m;
+      return ta != tb ? ta > tb : entryCrown[a] < entryCrown[b];
+    });
+    double light = topLight_[c];
+    for (auto it = first; it != last; ++it) {
+      const CrownShape& crown = crowns[entryCrown[*it]];
+      const double area = std::min(kColumnArea_m2, crownArea(crown) * entries_[*it].weight);
+      const double taken = area * light * absorbedShare(crown);
+      entryAbsorbed[*it] = taken;
+      light = std::max(0.0, light - taken / kColumnArea_m2);
+      layers_[columnStart_[c] + static_cast<std::size_t>(it - first)] = {crown.top_m,
+                                                                         static_cast<float>(light)};
+    }
+  });
+  absorbed_.assign(n, 0.0);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    for (std::size_t e = crownStart_[i]; e < crownStart_[i + 1]; ++e)
+      absorbed_[i] += entryAbsorbed[e];
+  });
+}
+
+double LightGrid::absorbedInTheOpen(const CrownShape& crown) {
+  return crownArea(crown) * absorbedShare(crown);
+}
+
+double LightGrid::lightAt(double east_m, double north_m, double height_m) const {
+  const long column = columnAt(east_m, north_m);
+  // The last crown whose top is above the height sets the light there.
+  const Layer* begin = layersBegin(column);
+  const Layer* end = layersEnd(column);
+  const Layer* below =
+      std::partition_point(begin, end, [&](const Layer& layer) { return layer.top_m > height_m; });
+  return below == begin ? topLight_[column] : (below - 1)->lightBelow;
+}
+
+double LightGrid::heightWithLight(double east_m, double north_m, double from_m, double top_m,
+                                  double light) const {
+  const long column = columnAt(east_m, north_m);
+  if (topLight_[column] < light) return top_m;
+  // Light falls going down the profile: find the first crown that leaves less than `light`;
+  // everything below its top is darker.
+  for (const Layer* layer = layersBegin(column); layer != layersEnd(column); ++layer) {
+    if (layer->lightBelow >= light) continue;
+    return std::clamp(static_cast<double>(layer->top_m), from_m, top_m);
+  }
+  return from_m;
+}
+
+}  // namespace eco

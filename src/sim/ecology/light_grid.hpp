@@ -1,0 +1,87 @@
+// Light in the forest (docs/ecology.md, "Light"): crowns fill the canopy from the top, as in
+// the perfect plasticity approximation (Purves et al. 2008, PNAS 105: 15386; Strigul et al.
+// 2008, Ecol. Monogr. 78: 523).
+// The map is cut into square columns of kLightColumn_m. Light enters each column from above
+// at the terrain's light (sunniness, relative to open level ground). Each crown is a flat
+// disc of leaves at its top, spread over the columns its projection covers; in every column
+// the crowns take light in order of height, tallest first, each absorbing on its own area by
+// Beer's law, 1 - exp(-k LAI) with k = 0.5, from what the taller crowns left. Light is mixed
+// across a column, so a crown shares it with the neighbours whose crowns overlap its own
+// only when they are taller: competition for light is size-asymmetric, as in a real canopy,
+// where the taller tree takes the space.
+// Cost grows with the number of crowns (a sort per column), not with rays or a canopy's
+// volume; the columns, fixed in metres, make the result independent of the terrain's cell
+// size.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sim/grid.hpp"
+
+namespace eco {
+
+inline constexpr double kLightColumn_m = 5.0;
+inline constexpr double kLeafExtinction = 0.5;  // Beer's law k for a random leaf angle distribution
+
+// A crown as the light grid sees it: a disc of leaves at the top of the tree.
+struct CrownShape {
+  float east_m = 0.0f, north_m = 0.0f;  // map coordinates of the stem
+  float radius_m = 0.5f;
+  float top_m = 1.0f;  // height above the ground
+  float leafArea_m2 = 0.0f;
+};
+
+class LightGrid {
+ public:
+  // Columns covering the terrain grid; `topLight` (one value per terrain cell) is the light
+  // above the canopy through the terrain, relative to open level ground.
+  LightGrid(const Grid& terrain, const Field& topLight);
+
+  // This year's light through these crowns (any order; ties in height go to the earlier).
+  void compute(const std::vector<CrownShape>& crowns);
+
+  // Light absorbed by crown i of the last compute(), in m2 of open-sky light.
+  double absorbed(std::size_t crown) const { return absorbed_[crown]; }
+  // What the same crown would absorb standing alone on open level ground.
+  static double absorbedInTheOpen(const CrownShape& crown);
+  // Light (a fraction of open level ground's) at a height above the ground: what the crowns
+  // with their tops above it leave.
+  double lightAt(double east_m, double north_m, double height_m) const;
+  // The lowest height in [from_m, top_m] at the stem's column where the light reaches at
+  // least `light` (crown pruning); `top_m` if none below it does.
+  double heightWithLight(double east_m, double north_m, double from_m, double top_m,
+                         double light) const;
+
+  int columnsX() const { return columnsX_; }
+  int columnsY() const { return columnsY_; }
+
+ private:
+  struct Footprint {
+    std::int32_t column;
+    float weight;  // share of the crown's projection over the column
+  };
+  // A crown's place in a column's light profile: its top, and the light it leaves below it.
+  struct Layer {
+    float top_m;
+    float lightBelow;
+  };
+  void footprint(const CrownShape& crown, std::vector<Footprint>& out) const;
+  long columnAt(double east_m, double north_m) const;
+  // The column's profile, tallest crown first.
+  const Layer* layersBegin(long column) const { return layers_.data() + columnStart_[column]; }
+  const Layer* layersEnd(long column) const { return layers_.data() + columnStart_[column + 1]; }
+
+  int columnsX_ = 0, columnsY_ = 0;
+  double originEast_m_ = 0.0, originNorth_m_ = 0.0;  // south-west corner of the columns
+  std::vector<float> topLight_;                      // per column
+  // Per crown: its footprint entries (CSR), and the light it absorbed.
+  std::vector<std::size_t> crownStart_;
+  std::vector<Footprint> entries_;
+  std::vector<double> absorbed_;
+  // Per column: its crowns' layers, tallest first (CSR).
+  std::vector<std::size_t> columnStart_;
+  std::vector<Layer> layers_;
+};
+
+}  // namespace eco

@@ -1,0 +1,74 @@
+#include "sim/ecology/stand_measures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace eco {
+
+double basalAreaOf(double dbh_m) {
+  return std::numbers::pi / 4.0 * dbh_m * dbh_m;
+}
+
+void StandTally::add(double dbh_m, double height_m, double formFactor) {
+  if (dbh_m < kMeasuredDbh_m) return;
+  stems += 1.0;
+  basalArea_m2 += basalAreaOf(dbh_m);
+  diameterSquares_m2 += dbh_m * dbh_m;
+  volume_m3 += formFactor * basalAreaOf(dbh_m) * height_m;
+}
+
+StandMeasures StandTally::perHectare(double area_ha) const {
+  StandMeasures m;
+  if (area_ha <= 0.0 || stems <= 0.0) return m;
+  m.stemsPerHa = stems / area_ha;
+  m.basalArea_m2PerHa = basalArea_m2 / area_ha;
+  m.volume_m3PerHa = volume_m3 / area_ha;
+  m.qmd_cm = 100.0 * std::sqrt(diameterSquares_m2 / stems);
+  m.sdi = m.stemsPerHa * std::pow(m.qmd_cm / kReinekeReference_cm, kReinekeSlope);
+  return m;
+}
+
+StandMeasures measureStand(const Plants& p, const std::vector<EcosystemSpecies>& species,
+                           double area_ha, int onlySpecies,
+                           const std::function<bool(std::size_t)>& inside) {
+  if (area_ha <= 0.0) return {};
+  StandTally tally;
+  std::vector<float> heights;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (onlySpecies >= 0 && p.species[i] != onlySpecies) continue;
+    if (inside && !inside(i)) continue;
+    heights.push_back(p.height_m[i]);
+    tally.add(p.dbh_m[i], p.height_m[i], species[p.species[i]].ecology.life.formFactor);
+  }
+  StandMeasures m = tally.perHectare(area_ha);
+  // The 100 tallest per hectare (all of them on a smaller stand).
+  const std::size_t tallest = std::min(
+      heights.size(), static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
+  if (tallest > 0) {
+    std::nth_element(heights.begin(), heights.begin() + (tallest - 1), heights.end(),
+                     std::greater<>());
+    double sum = 0.0;
+    for (std::size_t k = 0; k < tallest; ++k) sum += heights[k];
+    m.dominantHeight_m = sum / static_cast<double>(tallest);
+  }
+  return m;
+}
+
+double densestBlockBasalArea(const Plants& p, const Grid& g, double block_m) {
+  const int bx = static_cast<int>(std::floor(g.width * g.dx_m / block_m));
+  const int by = static_cast<int>(std::floor(g.height * g.dy_m / block_m));
+  if (bx < 1 || by < 1) return 0.0;
+  std::vector<double> area(static_cast<std::size_t>(bx) * by, 0.0);
+  const double originEast = -0.5 * g.dx_m, originNorth = -0.5 * g.dy_m;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.dbh_m[i] < kMeasuredDbh_m) continue;
+    const int x = static_cast<int>(std::floor((p.east_m[i] - originEast) / block_m));
+    const int y = static_cast<int>(std::floor((p.north_m[i] - originNorth) / block_m));
+    if (x < 0 || y < 0 || x >= bx || y >= by) continue;
+    area[static_cast<std::size_t>(y) * bx + x] += basalAreaOf(p.dbh_m[i]);
+  }
+  return *std::max_element(area.begin(), area.end()) / (block_m * block_m / 1e4);
+}
+
+}  // namespace eco

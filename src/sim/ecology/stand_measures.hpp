@@ -1,0 +1,48 @@
+// What foresters measure in a stand (docs/ecology.md, "Forester's measures"), from the
+// plants' arrays: stems and basal area of the trees of at least 10 cm dbh, their quadratic
+// mean diameter, Reineke's stand density index, their stem volume, and the dominant height.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "sim/ecology/ecosystem.hpp"
+
+namespace eco {
+
+inline constexpr double kMeasuredDbh_m = 0.10;  // the calipering limit of the measures
+inline constexpr double kReinekeSlope = 1.605;  // Reineke (1933): N ~ Dq^-1.605
+inline constexpr double kReinekeReference_cm = 25.4;
+
+struct StandMeasures {
+  double stemsPerHa = 0.0;         // dbh >= 10 cm
+  double basalArea_m2PerHa = 0.0;  // dbh >= 10 cm
+  double qmd_cm = 0.0;             // quadratic mean diameter of those stems
+  double sdi = 0.0;                // Reineke: stems x (qmd / 25.4 cm)^1.605
+  double volume_m3PerHa = 0.0;     // their stem volume, form factor x basal area x height
+  double dominantHeight_m = 0.0;   // mean height of the 100 tallest trees per hectare
+};
+
+// The sums the measures are made of: each tree of at least the calipering limit adds its
+// stem, basal area and volume.
+struct StandTally {
+  double stems = 0.0, basalArea_m2 = 0.0, diameterSquares_m2 = 0.0, volume_m3 = 0.0;
+  void add(double dbh_m, double height_m, double formFactor);  // thinner trees add nothing
+  // The measures on `area_ha` (all but the dominant height).
+  StandMeasures perHectare(double area_ha) const;
+};
+
+// The basal area of a stem, m2.
+double basalAreaOf(double dbh_m);
+
+// The measures of the plants of one species (or all, with -1) on `area_ha`; `inside`, when
+// given, limits them to the plants for which it is true (a block of the map).
+StandMeasures measureStand(const Plants& plants, const std::vector<EcosystemSpecies>& species,
+                           double area_ha, int onlySpecies = -1,
+                           const std::function<bool(std::size_t)>& inside = {});
+
+// The basal area (trees of at least 10 cm) of the densest whole block of block_m x block_m
+// on the map, per hectare; 0 where the map holds no whole block.
+double densestBlockBasalArea(const Plants& plants, const Grid& grid, double block_m = 100.0);
+
+}  // namespace eco

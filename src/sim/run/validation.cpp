@@ -1,0 +1,175 @@
+#include "sim/run/validation.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "core/binary_io.hpp"
+#include "core/error.hpp"
+#include "sim/terrain.hpp"
+
+namespace eco {
+namespace {
+
+constexpr const char* kYieldTableHeader = "age,stems_per_ha,basal_area_m2_per_ha,qmd_cm";
+
+double parseNumber(std::string_view text, const SourceLocation& where) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
+      value <= 0.0)
+    throw InputError(where, fmt::format("expected a positive number, got '{}'", text));
+  return value;
+}
+
+double relativeError(double simulated, double table) {
+  return table > 0.0 ? simulated / table - 1.0 : 0.0;
+}
+
+}  // namespace
+
+std::vector<YieldTableRow> readYieldTable(const std::filesystem::path& file) {
+  const std::optional<std::string> text = readFileBytes(file);
+  if (!text) throw InputError({file.string()}, "cannot read the yield table");
+  std::vector<YieldTableRow> rows;
+  bool header = false;
+  int lineNumber = 0;
+  std::size_t start = 0;
+  while (start < text->size()) {
+    std::size_t end = text->find('\n', start);
+    if (end == std::string::npos) end = text->size();
+    std::string_view line(text->data() + start, end - start);
+    start = end + 1;
+    ++lineNumber;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.empty() || line.front() == '#') continue;
+    const SourceLocation where{file.string(), lineNumber};
+    if (!header) {
+      if (line != kYieldTableHeader)
+        throw InputError(where, fmt::format("expected the header {}", kYieldTableHeader));
+      header = true;
+      continue;
+    }
+    std::vector<std::string_view> fields;
+    for (std::size_t from = 0;;) {
+      const std::size_t comma = line.find(',', from);
+      fields.push_back(
+          line.substr(from, comma == std::string_view::npos ? line.npos : comma - from));
+      if (comma == std::string_view::npos) break;
+      from = comma + 1;
+    }
+    if (fields.size() != 4) throw InputError(where, "expected 4 comma-separated values");
+    YieldTableRow row;
+    const double age = parseNumber(fields[0], where);
+    if (age != std::floor(age)) throw InputError(where, "the age must be whole years");
+    row.age_years = static_cast<int>(age);
+    row.stemsPerHa = parseNumber(fields[1], where);
+    row.basalArea_m2PerHa = parseNumber(fields[2], where);
+    row.qmd_cm = parseNumber(fields[3], where);
+    if (!rows.empty() && row.age_years <= rows.back().age_years)
+      throw InputError(where, "ages must ascend");
+    rows.push_back(row);
+  }
+  if (rows.empty()) throw InputError({file.string()}, "the yield table has no rows");
+  return rows;
+}
+
+double ValidationAge::stemsError() const {
+  return relativeError(simulated.stemsPerHa, table.stemsPerHa);
+}
+double ValidationAge::basalAreaError() const {
+  return relativeError(simulated.basalArea_m2PerHa, table.basalArea_m2PerHa);
+}
+double ValidationAge::qmdError() const {
+  return relativeError(simulated.qmd_cm, table.qmd_cm);
+}
+double ValidationAge::worstError() const {
+  return std::max({std::abs(stemsError()), std::abs(basalAreaError()), std::abs(qmdError())});
+}
+
+bool ValidationReport::agesPassed() const {
+  return std::all_of(ages.begin(), ages.end(), [&](const ValidationAge& a) {
+    return !a.checked || a.worstError() <= settings.tolerance;
+  });
+}
+
+bool ValidationReport::slopePassed() const {
+  return simulatedSlope >= settings.steepestThinningSlope &&
+         simulatedSlope <= settings.shallowestThinningSlope;
+}
+
+double selfThinningSlope(const std::vector<StandMeasures>& stands) {
+  double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (const StandMeasures& m : stands) {
+    if (m.stemsPerHa <= 0.0 || m.qmd_cm <= 0.0) continue;
+    const double x = std::log(m.qmd_cm), y = std::log(m.stemsPerHa);
+    n += 1.0, sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  const double spread = n * sxx - sx * sx;
+  if (n < 2.0 || spread <= 0.0) return std::numeric_limits<double>::quiet_NaN();
+  return (n * sxy - sx * sy) / spread;
+}
+
+ValidationReport validateRun(const RunFolder& run) {
+  const Scenario& scenario = run.scenario;
+  if (!scenario.validation)
+    throw InputError({scenario.file.string()},
+                     "the scenario has no [validation] table (docs/validation.md)");
+  ValidationReport report;
+  report.settings = *scenario.validation;
+  const ValidationSettings& v = report.settings;
+  const std::vector<YieldTableRow> table = readYieldTable(v.yieldTable);
+  for (int age : v.checkedAges)
+    if (std::none_of(table.begin(), table.end(),
+                     [&](const YieldTableRow& row) { return row.age_years == age; }))
+      throw InputError(
+          v.where, fmt::format("checked age {} is not an age of {}", age, v.yieldTable.string()));
+  const double area_ha = loadTerrain(scenario).grid.area_m2() / 1e4;
+
+  // The planted cohort in a snapshot: the species' trees as old as the run.
+  auto cohortOf = [&](int year) {
+    const TreeSnapshot snapshot = readSnapshot(run, year);
+    const auto named =
+        std::find(snapshot.speciesNames.begin(), snapshot.speciesNames.end(), v.species);
+    StandTally tally;
+    if (named != snapshot.speciesNames.end()) {
+      const int species = static_cast<int>(named - snapshot.speciesNames.begin());
+      for (const TreeRow& tree : snapshot.trees)
+        if (tree.species == species && tree.age_years == year)
+          tally.add(tree.dbh_m, tree.height_m, 0.0);
+    }
+    return tally.perHectare(area_ha);
+  };
+  auto hasSnapshot = [&](int year) {
+    return std::binary_search(run.snapshotYears.begin(), run.snapshotYears.end(), year);
+  };
+  std::vector<StandMeasures> thinning, tableThinning;
+  for (const YieldTableRow& row : table) {
+    const bool checked =
+        v.checkedAges.empty() ||
+        std::find(v.checkedAges.begin(), v.checkedAges.end(), row.age_years) != v.checkedAges.end();
+    const bool inThinning =
+        row.age_years >= v.thinningFrom_years && row.age_years <= v.thinningTo_years;
+    if (inThinning) {
+      StandMeasures published;
+      published.stemsPerHa = row.stemsPerHa;
+      published.qmd_cm = row.qmd_cm;
+      tableThinning.push_back(published);
+    }
+    if (!hasSnapshot(row.age_years)) {
+      if (checked && !v.checkedAges.empty()) requireSnapshotYear(run, row.age_years);
+      continue;
+    }
+    ValidationAge age{row, cohortOf(row.age_years), checked};
+    if (inThinning) thinning.push_back(age.simulated);
+    report.ages.push_back(age);
+  }
+  report.simulatedSlope = selfThinningSlope(thinning);
+  report.tableSlope = selfThinningSlope(tableThinning);
+  return report;
+}
+
+}  // namespace eco

@@ -1,0 +1,110 @@
+#include "sim/ecology/light_grid.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+namespace eco {
+namespace {
+
+// A flat 50 m x 50 m map of 5 m cells: 10 x 10 light columns, cell centres at 0, 5, ...
+// so column (x, y) spans east [-2.5 + 5x, 2.5 + 5x).
+struct FiftyMetres {
+  Grid grid{10, 10, 5.0, 5.0};
+  LightGrid light{grid, Field(grid.cellCount(), 1.0f)};
+};
+
+double discArea(double r) {
+  return std::numbers::pi * r * r;
+}
+
+TEST(LightGrid, ACrownAloneAbsorbsByBeersLaw) {
+  FiftyMetres m;
+  const CrownShape crown{20.0f, 20.0f, 2.0f, 15.0f, 30.0f};
+  m.light.compute({crown});
+  const double expected = discArea(2.0) * (1.0 - std::exp(-kLeafExtinction * 30.0 / discArea(2.0)));
+  EXPECT_NEAR(m.light.absorbed(0), expected, 1e-4);
+  EXPECT_NEAR(LightGrid::absorbedInTheOpen(crown), expected, 1e-4);
+  // A wide crown shared over several columns absorbs as much as alone in the open.
+  const CrownShape wide{22.0f, 21.0f, 6.0f, 20.0f, 200.0f};
+  m.light.compute({wide});
+  EXPECT_NEAR(m.light.absorbed(0), LightGrid::absorbedInTheOpen(wide),
+              1e-4 * LightGrid::absorbedInTheOpen(wide));
+}
+
+TEST(LightGrid, TheTallerCrownTakesItsLightFirst) {
+  FiftyMetres m;
+  const CrownShape tall{20.0f, 20.0f, 2.0f, 20.0f, 30.0f}, low{21.0f, 21.0f, 2.0f, 10.0f, 30.0f};
+  m.light.compute({low, tall});
+  const double share = 1.0 - std::exp(-kLeafExtinction * 30.0 / discArea(2.0));
+  const double takenByTall = discArea(2.0) * share;
+  EXPECT_NEAR(m.light.absorbed(1), takenByTall, 1e-4);
+  const double leftInColumn = 1.0 - takenByTall / (kLightColumn_m * kLightColumn_m);
+  EXPECT_NEAR(m.light.absorbed(0), discArea(2.0) * leftInColumn * share, 1e-4);
+  // The light profile of the column: open above, then what each crown leaves.
+  EXPECT_DOUBLE_EQ(m.light.lightAt(20.0, 20.0, 25.0), 1.0);
+  EXPECT_NEAR(m.light.lightAt(20.0, 20.0, 15.0), leftInColumn, 1e-6);
+  EXPECT_NEAR(m.light.lightAt(20.0, 20.0, 1.0),
+              leftInColumn - m.light.absorbed(0) / (kLightColumn_m * kLightColumn_m), 1e-6);
+  // The neighbouring column is untouched.
+  EXPECT_DOUBLE_EQ(m.light.lightAt(30.0, 20.0, 1.0), 1.0);
+  // Crown pruning: the lowest height with at least this much light.
+  EXPECT_DOUBLE_EQ(m.light.heightWithLight(20.0, 20.0, 0.0, 20.0, leftInColumn - 0.01), 10.0);
+  EXPECT_DOUBLE_EQ(m.light.heightWithLight(20.0, 20.0, 0.0, 20.0, 0.01), 0.0);
+  EXPECT_DOUBLE_EQ(m.light.heightWithLight(20.0, 20.0, 0.0, 20.0, leftInColumn + 0.01), 20.0);
+  EXPECT_DOUBLE_EQ(m.light.heightWithLight(20.0, 20.0, 0.0, 30.0, 0.99), 20.0);
+}
+
+TEST(LightGrid, AColumnNeverGivesMoreLightThanReachesIt) {
+  FiftyMetres m;
+  std::vector<CrownShape> crowns;
+  for (int i = 0; i < 40; ++i)
+    crowns.push_back({20.0f + 0.05f * i, 20.0f, 2.4f, 5.0f + 0.5f * i, 60.0f});
+  m.light.compute(crowns);
+  double total = 0.0;
+  for (std::size_t i = 0; i < crowns.size(); ++i) total += m.light.absorbed(i);
+  EXPECT_LE(total, kLightColumn_m * kLightColumn_m * 1.000001);
+  EXPECT_GT(total, 0.99 * kLightColumn_m * kLightColumn_m);  // 40 thick crowns take nearly all
+  // Deep in the stack a crown gets almost nothing.
+  EXPECT_LT(m.light.absorbed(0), 1e-3 * m.light.absorbed(39));
+}
+
+TEST(LightGrid, TheTerrainsLightScalesWhatCrownsGet) {
+  Grid grid{10, 10, 5.0, 5.0};
+  LightGrid half(grid, Field(grid.cellCount(), 0.5f));
+  const CrownShape crown{20.0f, 20.0f, 2.0f, 15.0f, 30.0f};
+  half.compute({crown});
+  EXPECT_NEAR(half.absorbed(0), 0.5 * LightGrid::absorbedInTheOpen(crown), 1e-4);
+  EXPECT_DOUBLE_EQ(half.lightAt(20.0, 20.0, 30.0), 0.5);
+}
+
+TEST(LightGrid, TheOrderOfTheCrownsAndTheThreadCountDoNotMatter) {
+  FiftyMetres m;
+  std::vector<CrownShape> crowns;
+  for (int i = 0; i < 300; ++i)
+    crowns.push_back({static_cast<float>((i * 37) % 47), static_cast<float>((i * 53) % 43),
+                      1.0f + static_cast<float>(i % 7), 3.0f + static_cast<float>((i * 11) % 29),
+                      20.0f + static_cast<float>(i % 13) * 10.0f});
+  std::vector<double> forward;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    m.light.compute(crowns);
+    for (std::size_t i = 0; i < crowns.size(); ++i) forward.push_back(m.light.absorbed(i));
+  }
+  std::vector<CrownShape> reversed(crowns.rbegin(), crowns.rend());
+  m.light.compute(reversed);
+  for (std::size_t i = 0; i < crowns.size(); ++i) {
+    // Ties in height go to the earlier crown: compare only crowns of a unique height.
+    int sameHeight = 0;
+    for (const CrownShape& c : crowns) sameHeight += c.top_m == crowns[i].top_m ? 1 : 0;
+    if (sameHeight == 1)
+      EXPECT_NEAR(m.light.absorbed(crowns.size() - 1 - i), forward[i], 1e-9 + 1e-9 * forward[i]);
+  }
+  m.light.compute(crowns);
+  for (std::size_t i = 0; i < crowns.size(); ++i) EXPECT_EQ(m.light.absorbed(i), forward[i]);
+}
+
+}  // namespace
+}  // namespace eco

@@ -1,0 +1,70 @@
+#include "sim/ecology/stand_measures.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "ecosystem_support.hpp"
+
+namespace eco {
+namespace {
+
+void addTree(Plants& p, int species, float east, float north, float dbh, float height) {
+  const std::size_t i = p.size();
+  p.resize(i + 1);
+  p.id[i] = i + 1;
+  p.species[i] = static_cast<std::uint8_t>(species);
+  p.east_m[i] = east, p.north_m[i] = north;
+  p.dbh_m[i] = dbh, p.height_m[i] = height;
+  p.alive[i] = 1;
+}
+
+TEST(StandMeasures, CountsWhatAForesterCalipers) {
+  const std::vector<EcosystemSpecies> species = {test::shippedSpecies("beech"),
+                                                 test::shippedSpecies("pine")};
+  Plants p;
+  addTree(p, 0, 10, 10, 0.30f, 30.0f);
+  addTree(p, 0, 20, 10, 0.40f, 32.0f);
+  addTree(p, 1, 30, 10, 0.20f, 25.0f);
+  addTree(p, 0, 40, 10, 0.05f, 6.0f);  // below the calipering limit
+  const StandMeasures all = measureStand(p, species, 0.5);
+  EXPECT_DOUBLE_EQ(all.stemsPerHa, 6.0);
+  const double ba = std::numbers::pi / 4 * (0.09 + 0.16 + 0.04);
+  EXPECT_NEAR(all.basalArea_m2PerHa, ba / 0.5, 1e-6);
+  EXPECT_NEAR(all.qmd_cm, 100.0 * std::sqrt((0.09 + 0.16 + 0.04) / 3.0), 1e-4);
+  // Reineke: the stems a stand of 25.4 cm mean diameter would have.
+  EXPECT_NEAR(all.sdi, 6.0 * std::pow(all.qmd_cm / 25.4, 1.605), 1e-9);
+  const double f0 = species[0].ecology.life.formFactor, f1 = species[1].ecology.life.formFactor;
+  EXPECT_NEAR(all.volume_m3PerHa,
+              std::numbers::pi / 4 * (f0 * 0.09 * 30 + f0 * 0.16 * 32 + f1 * 0.04 * 25) / 0.5,
+              1e-4);
+  // On half a hectare the 50 tallest: here all four plants.
+  EXPECT_NEAR(all.dominantHeight_m, (30.0 + 32.0 + 25.0 + 6.0) / 4.0, 1e-6);
+  const StandMeasures pine = measureStand(p, species, 0.5, 1);
+  EXPECT_DOUBLE_EQ(pine.stemsPerHa, 2.0);
+  const StandMeasures west =
+      measureStand(p, species, 0.5, -1, [&](std::size_t i) { return p.east_m[i] < 25.0f; });
+  EXPECT_DOUBLE_EQ(west.stemsPerHa, 4.0);
+}
+
+TEST(StandMeasures, DominantHeightIsTheMeanOfTheHundredTallestPerHectare) {
+  const std::vector<EcosystemSpecies> species = {test::shippedSpecies("beech")};
+  Plants p;
+  for (int i = 0; i < 400; ++i) addTree(p, 0, 1.0f * i, 0, 0.2f, static_cast<float>(i % 40));
+  // One hectare: the 100 tallest are ten each of 30..39 m.
+  EXPECT_NEAR(measureStand(p, species, 1.0).dominantHeight_m, 34.5, 1e-9);
+}
+
+TEST(StandMeasures, TheDensestBlockIsFoundWhereverItLies) {
+  const Grid grid{30, 20, 10.0, 10.0};  // 300 m x 200 m: 3 x 2 blocks of a hectare
+  Plants p;
+  for (int i = 0; i < 10; ++i) addTree(p, 0, 250.0f, 150.0f + i, 0.4f, 30.0f);
+  for (int i = 0; i < 3; ++i) addTree(p, 0, 20.0f, 20.0f + i, 0.4f, 30.0f);
+  addTree(p, 0, 290.0f, 10.0f, 0.05f, 5.0f);  // too thin to count
+  EXPECT_NEAR(densestBlockBasalArea(p, grid), 10 * std::numbers::pi / 4 * 0.16, 1e-5);
+  EXPECT_EQ(densestBlockBasalArea(p, Grid{5, 5, 10.0, 10.0}), 0.0);  // smaller than a block
+}
+
+}  // namespace
+}  // namespace eco

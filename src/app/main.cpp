@@ -12,6 +12,7 @@
 #include "app/run_command.hpp"
 #include "app/timelapse_command.hpp"
 #include "app/tree_command.hpp"
+#include "app/validate_command.hpp"
 #include "app/view_command.hpp"
 #include "core/error.hpp"
 
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   eco::addConditionsCommand(app);
   eco::addTerrainCommand(app);
   eco::addRunCommand(app);
+  eco::addValidateCommand(app);
   eco::addRenderCommand(app);
   eco::addViewCommand(app);
   eco::addExportCommand(app);

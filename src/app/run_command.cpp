@@ -10,6 +10,7 @@
 #include <tbb/global_control.h>
 
 #include "app/data_paths.hpp"
+#include "app/run_progress.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "sim/run/simulation.hpp"
@@ -31,33 +32,6 @@ extern "C" void requestStop(int) {
   stopRequested = true;
 }
 
-std::string clock(double seconds) {
-  const int s = static_cast<int>(seconds + 0.5);
-  return s >= 3600 ? fmt::format("{}:{:02d}:{:02d}", s / 3600, s / 60 % 60, s % 60)
-                   : fmt::format("{}:{:02d}", s / 60, s % 60);
-}
-
-// A bar redrawn in place on a terminal; otherwise a plain line about every tenth of the run.
-void showProgress(const RunProgress& p, bool terminal) {
-  const int done = p.year - p.firstYear + 1;
-  const double rate = p.seconds > 0.0 ? done / p.seconds : 0.0;
-  const double eta = rate > 0.0 ? (p.lastYear - p.year) / rate : 0.0;
-  if (terminal) {
-    constexpr int kWidth = 24;
-    const int filled = kWidth * p.year / p.lastYear;
-    std::fprintf(stderr, "\ryear %d/%d [%s%s] %zu plants  %.1f years/s  ETA %s   ", p.year,
-                 p.lastYear, std::string(filled, '#').c_str(),
-                 std::string(kWidth - filled, '.').c_str(), p.plants, rate, clock(eta).c_str());
-    if (p.year == p.lastYear) std::fputc('\n', stderr);
-    std::fflush(stderr);
-    return;
-  }
-  const int every = std::max(1, (p.lastYear - p.firstYear + 1) / 10);
-  if (done % every == 0 || p.year == p.lastYear)
-    std::fprintf(stderr, "year %d/%d: %zu plants, %.1f years/s, ETA %s\n", p.year, p.lastYear,
-                 p.plants, rate, clock(eta).c_str());
-}
-
 int runScenario(const RunArguments& args) {
   std::optional<tbb::global_control> threads;
   if (args.threads) threads.emplace(tbb::global_control::max_allowed_parallelism, *args.threads);
@@ -69,7 +43,7 @@ int runScenario(const RunArguments& args) {
   options.programVersion = ECOFOREST_VERSION;
   options.stop = &stopRequested;
   const bool terminal = Progress::stderrIsTerminal();
-  options.progress = [terminal](const RunProgress& p) { showProgress(p, terminal); };
+  options.progress = [terminal](const RunProgress& p) { showRunProgress(p, terminal); };
   options.warn = [](const std::string& message) {
     std::cerr << "ecoforest: warning: " << message << "\n";
   };

@@ -55,6 +55,8 @@ class InternalError : public std::logic_error {
 inline constexpr int kExitBug = 1;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitEnvironment = 3;
+// `validate`: the run missed its yield table by more than the tolerance.
+inline constexpr int kExitValidationFailed = 4;
 inline constexpr int kExitInterrupted = 130;  // 128 + SIGINT, as shells report Ctrl-C
 
 [[noreturn]] void assertionFailed(const char* expression, const char* function, const char* file,

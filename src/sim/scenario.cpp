@@ -117,6 +117,7 @@ Scenario loadScenario(const std::filesystem::path& file) {
     species.where = entry.where("file");
     species.file = file.parent_path() / entry.string("file");
     species.seedRainPerHaPerYear = entry.number("seed_rain_per_ha_per_year", 0.0, {0.0, 1e6});
+    species.surroundingForestShare = entry.number("surrounding_forest_share", 0.0, {0.0, 1.0});
     entry.finish();
     s.species.push_back(std::move(species));
   }

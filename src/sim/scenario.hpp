@@ -77,7 +77,8 @@ struct ValidationSettings {
 struct ScenarioSpecies {
   std::filesystem::path file;  // absolute after loading
   double seedRainPerHaPerYear = 0.0;
-  SourceLocation where;  // the [[species]] entry, for errors about this species
+  double surroundingForestShare = 0.0;  // of the forest around the map (its seed source)
+  SourceLocation where;                 // the [[species]] entry, for errors about this species
 };
 
 struct OutputSettings {

@@ -133,6 +133,30 @@ lapse_rate_k_per_m = 0.006
   EXPECT_NEAR(Climate{}.temperatureAt(1300.0), 3.0, 1e-12);
 }
 
+TEST(Scenario, ReadsTheSpeciesAndTheirSeedSources) {
+  const Scenario s = loadScenario(write(R"([terrain]
+cell_size_m = 5
+[terrain.generate]
+size = 9
+[[species]]
+file = "species/beech.toml"
+seed_rain_per_ha_per_year = 2.5
+surrounding_forest_share = 0.33
+[[species]]
+file = "species/pine.toml"
+)"));
+  ASSERT_EQ(s.species.size(), 2u);
+  EXPECT_EQ(s.species[0].file, s.file.parent_path() / "species/beech.toml");
+  EXPECT_DOUBLE_EQ(s.species[0].seedRainPerHaPerYear, 2.5);
+  EXPECT_DOUBLE_EQ(s.species[0].surroundingForestShare, 0.33);
+  EXPECT_DOUBLE_EQ(s.species[1].surroundingForestShare, 0.0);
+  EXPECT_NE(std::string(errorOf("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n"
+                                "[[species]]\nfile = \"b.toml\"\nsurrounding_forest_share = 2\n")
+                            .what())
+                .find("s.toml:7: species[0].surrounding_forest_share: value 2 is outside [0, 1]"),
+            std::string::npos);
+}
+
 TEST(Scenario, ReadsPlantings) {
   const Scenario s = loadScenario(write(R"([terrain]
 cell_size_m = 5

@@ -81,7 +81,16 @@ std::size_t SeedMap::cellOf(const Layer& layer, double east_m, double north_m) c
 }
 
 void SeedMap::clear() {
-  for (Layer& layer : layers_) std::fill(layer.sources.begin(), layer.sources.end(), 0.0);
+  for (Layer& layer : layers_) {
+    std::fill(layer.sources.begin(), layer.sources.end(), 0.0);
+    layer.outsideSource = 0.0;
+  }
+}
+
+void SeedMap::setSurroundingSeeds(int species, double seedsPerM2) {
+  for (Layer& layer : layers_)
+    if (layer.species == species)
+      layer.outsideSource = seedsPerM2 * layer.cell_m * layer.cell_m * layer.share;
 }
 
 void SeedMap::addSeeds(int species, double east_m, double north_m, double seeds) {
@@ -100,8 +109,10 @@ void SeedMap::disperse() {
         double seeds = 0.0;
         for (const Tap& tap : layer.stencil) {
           const int sx = x - tap.dx, sy = y - tap.dy;
-          if (sx < 0 || sy < 0 || sx >= layer.width || sy >= layer.height) continue;
-          seeds += layer.sources[static_cast<std::size_t>(sy) * layer.width + sx] * tap.share;
+          const bool outside = sx < 0 || sy < 0 || sx >= layer.width || sy >= layer.height;
+          seeds += (outside ? layer.outsideSource
+                            : layer.sources[static_cast<std::size_t>(sy) * layer.width + sx]) *
+                   tap.share;
         }
         layer.density[static_cast<std::size_t>(y) * layer.width + x] =
             static_cast<float>(seeds / area);

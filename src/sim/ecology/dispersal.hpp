@@ -35,6 +35,9 @@ class SeedMap {
   // Starts a year: no seeds.
   void clear();
   void addSeeds(int species, double east_m, double north_m, double seeds);
+  // The forest around the map sends this year this many seeds of a species per m2 of its
+  // ground: its seeds reach into the map by the same kernel as the map's own.
+  void setSurroundingSeeds(int species, double seedsPerM2);
   // Spreads the sources by each species' kernel.
   void disperse();
   // Seeds per m2 of a species at a map position this year (before any seed rain).
@@ -52,6 +55,7 @@ class SeedMap {
     int width = 0, height = 0;
     std::vector<Tap> stencil;
     std::vector<double> sources;  // seeds per cell
+    double outsideSource = 0.0;   // seeds per cell beyond the map's edges
     std::vector<float> density;   // seeds per m2
   };
   std::size_t cellOf(const Layer& layer, double east_m, double north_m) const;

@@ -235,6 +235,14 @@ void Ecosystem::produceSeeds() {
     const double seeds = seedProduction(life, p.crownRadius_m[i], mast[p.species[i]], relative);
     if (seeds > 0.0) seeds_.addSeeds(p.species[i], p.east_m[i], p.north_m[i], seeds);
   }
+  // The forest around the map: a closed canopy of full-grown trees in the light, each
+  // species fruiting on its share of the ground.
+  for (std::size_t s = 0; s < species_.size(); ++s) {
+    const LifeHistory& life = species_[s].ecology.life;
+    if (species_[s].surroundingForestShare > 0.0)
+      seeds_.setSurroundingSeeds(static_cast<int>(s), species_[s].surroundingForestShare *
+                                                          seedsPerCrownArea(life, mast[s]));
+  }
   seeds_.disperse();
 }
 

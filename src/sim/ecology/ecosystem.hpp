@@ -37,6 +37,8 @@ struct EcosystemSpecies {
   Species species;  // its tree model
   Ecology ecology;  // its niche and life history: the file's [ecology]
   double seedRainPerHaPerYear = 0.0;
+  // The species' share of the canopy of the forest around the map (its seed source), 0..1.
+  double surroundingForestShare = 0.0;
   Field suitability;  // site suitability per cell (altitude, slope, moisture, windiness)
 };
 

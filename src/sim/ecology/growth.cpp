@@ -137,11 +137,14 @@ double treeMortality(const LifeHistory& life, int age_years, double carbonDefici
   return std::min(1.0, intrinsicMortality(life) + stress);
 }
 
+double seedsPerCrownArea(const LifeHistory& life, bool mastYear) {
+  return life.fecundity_m2 * (mastYear ? 1.0 : life.nonMastFraction);
+}
+
 double seedProduction(const LifeHistory& life, double crownRadius_m, bool mastYear,
                       double relativeLight) {
   const double crownArea = std::numbers::pi * crownRadius_m * crownRadius_m;
-  return life.fecundity_m2 * crownArea * (mastYear ? 1.0 : life.nonMastFraction) *
-         std::clamp(relativeLight, 0.0, 1.0);
+  return seedsPerCrownArea(life, mastYear) * crownArea * std::clamp(relativeLight, 0.0, 1.0);
 }
 
 }  // namespace eco

@@ -94,5 +94,7 @@ double intrinsicMortality(const LifeHistory& life);
 // light the tree gets (a suppressed tree hardly fruits).
 double seedProduction(const LifeHistory& life, double crownRadius_m, bool mastYear,
                       double relativeLight);
+// Seeds per m2 of crown projection in the light, in a mast year or another.
+double seedsPerCrownArea(const LifeHistory& life, bool mastYear);
 
 }  // namespace eco

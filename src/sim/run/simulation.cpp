@@ -139,6 +139,7 @@ std::vector<EcosystemSpecies> loadEcosystemSpecies(const Scenario& scenario,
   for (const ScenarioSpecies& entry : scenario.species) {
     EcosystemSpecies s = readEcosystemSpecies(entry.file, entry.where);
     s.seedRainPerHaPerYear = entry.seedRainPerHaPerYear;
+    s.surroundingForestShare = entry.surroundingForestShare;
     s.suitability = siteSuitability(s.ecology.tolerances(scenario.climate), fields,
                                     scenario.simulation.suitability);
     result.push_back(std::move(s));
@@ -156,11 +157,13 @@ RunSummary runSimulation(const RunOptions& options) {
   const RunPaths run{summary.folder};
   const std::uint64_t fingerprint = scenarioFingerprint(scenario);
   if (std::all_of(scenario.species.begin(), scenario.species.end(),
-                  [](const ScenarioSpecies& s) { return s.seedRainPerHaPerYear <= 0.0; }) &&
-      !scenario.species.empty() && options.warn)
+                  [](const ScenarioSpecies& s) {
+                    return s.seedRainPerHaPerYear <= 0.0 && s.surroundingForestShare <= 0.0;
+                  }) &&
+      scenario.planting.empty() && !scenario.species.empty() && options.warn)
     options.warn(fmt::format(
-        "{}: every species has seed_rain_per_ha_per_year = 0 and the landscape starts empty, "
-        "so nothing will grow; give at least one species a seed rain",
+        "{}: no species has a seed rain or a share of the surrounding forest, nothing is "
+        "planted, and the landscape starts empty, so nothing will grow",
         scenario.file.string()));
 
   // Read the checkpoint before anything is written, so a refused resume changes nothing.

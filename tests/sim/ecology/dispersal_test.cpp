@@ -46,6 +46,31 @@ TEST(Dispersal, ALongDistanceShareStretchesTheMeanDistance) {
   EXPECT_NEAR(static_cast<double>(beyond100) / n, 0.0682, 0.002);
 }
 
+// A map much smaller than the kernel, set in a uniform forest: nearly every seed landing on it
+// comes from outside (less the few that would have come from the map itself, here about
+// 7 %), and an even source spreads into an even density of the same seeds per m2.
+TEST(Dispersal, TheSurroundingForestSendsItsSeedsAcrossTheEdges) {
+  LifeHistory life;
+  life.dispersalMean_m = 2000.0;
+  SeedMap small(Grid{30, 30, 10.0, 10.0}, {&life}, {1.0, 0.0});
+  small.setSurroundingSeeds(0, 3.0);
+  small.disperse();
+  EXPECT_NEAR(small.density(0, 150.0, 150.0), 3.0, 0.3);
+  EXPECT_LE(small.density(0, 150.0, 150.0), 3.0);
+  // On a map 20 kernel means across, the forest's seeds stay near its edges.
+  LifeHistory beech;
+  beech.dispersalMean_m = 20.0;
+  SeedMap wide(Grid{81, 81, 5.0, 5.0}, {&beech}, {1.0, 0.0});
+  wide.setSurroundingSeeds(0, 3.0);
+  wide.disperse();
+  EXPECT_GT(wide.density(0, 2.0, 200.0), 0.5);     // at the western edge
+  EXPECT_LT(wide.density(0, 200.0, 200.0), 1e-6);  // 10 means in
+  // A new year starts without them.
+  wide.clear();
+  wide.disperse();
+  EXPECT_EQ(wide.density(0, 2.0, 200.0), 0.0);
+}
+
 TEST(Dispersal, WindDispersedSeedsDriftDownwind) {
   LifeHistory life;
   life.dispersal = DispersalVector::Wind;

@@ -39,8 +39,8 @@ std::string reportText(const ValidationReport& r) {
   const ValidationSettings& v = r.settings;
   std::string text =
       fmt::format("planted {} against {}\n", v.species, v.yieldTable.filename().string());
-  text += fmt::format("  {:>5} {:>17} {:>6} {:>19} {:>6} {:>15} {:>6}\n", "age", "stems/ha (table)",
-                      "", "basal area (table)", "", "qmd cm (table)", "");
+  text += fmt::format("  {:>5} {:>17} {:>6} {:>18} {:>6} {:>14} {:>6}\n", "age", "stems/ha (table)",
+                      "", "m2/ha (table)", "", "qmd cm (table)", "");
   for (const ValidationAge& a : r.ages)
     text += fmt::format(
         "{} {:>5} {:>8.0f} ({:>6.0f}) {:>6} {:>9.1f} ({:>6.1f}) {:>6} {:>6.1f} ({:>5.1f}) {:>6}\n",

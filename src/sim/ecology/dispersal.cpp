@@ -37,7 +37,8 @@ SeedMap::SeedMap(const Grid& terrain, const std::vector<const LifeHistory*>& spe
     : originEast_m_(-0.5 * terrain.dx_m),
       originNorth_m_(-0.5 * terrain.dy_m),
       width_m_(terrain.width * terrain.dx_m),
-      height_m_(terrain.height * terrain.dy_m) {
+      height_m_(terrain.height * terrain.dy_m),
+      layersOf_(species.size()) {
   for (int s = 0; s < static_cast<int>(species.size()); ++s) {
     const LifeHistory& life = *species[s];
     for (bool far : {false, true}) {
@@ -67,6 +68,7 @@ SeedMap::SeedMap(const Grid& terrain, const std::vector<const LifeHistory*>& spe
                                  static_cast<float>(static_cast<double>(count) / kStencilSamples)});
       layer.sources.assign(static_cast<std::size_t>(layer.width) * layer.height, 0.0);
       layer.density.assign(layer.sources.size(), 0.0f);
+      layersOf_[s].push_back(layers_.size());
       layers_.push_back(std::move(layer));
     }
   }
@@ -88,15 +90,17 @@ void SeedMap::clear() {
 }
 
 void SeedMap::setSurroundingSeeds(int species, double seedsPerM2) {
-  for (Layer& layer : layers_)
-    if (layer.species == species)
-      layer.outsideSource = seedsPerM2 * layer.cell_m * layer.cell_m * layer.share;
+  for (std::size_t l : layersOf_[species]) {
+    Layer& layer = layers_[l];
+    layer.outsideSource = seedsPerM2 * layer.cell_m * layer.cell_m * layer.share;
+  }
 }
 
 void SeedMap::addSeeds(int species, double east_m, double north_m, double seeds) {
-  for (Layer& layer : layers_)
-    if (layer.species == species)
-      layer.sources[cellOf(layer, east_m, north_m)] += seeds * layer.share;
+  for (std::size_t l : layersOf_[species]) {
+    Layer& layer = layers_[l];
+    layer.sources[cellOf(layer, east_m, north_m)] += seeds * layer.share;
+  }
 }
 
 void SeedMap::disperse() {
@@ -123,8 +127,8 @@ void SeedMap::disperse() {
 
 double SeedMap::density(int species, double east_m, double north_m) const {
   double seeds = 0.0;
-  for (const Layer& layer : layers_)
-    if (layer.species == species) seeds += layer.density[cellOf(layer, east_m, north_m)];
+  for (std::size_t l : layersOf_[species])
+    seeds += layers_[l].density[cellOf(layers_[l], east_m, north_m)];
   return seeds;
 }
 

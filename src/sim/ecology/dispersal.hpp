@@ -62,6 +62,7 @@ class SeedMap {
 
   double originEast_m_, originNorth_m_, width_m_, height_m_;
   std::vector<Layer> layers_;
+  std::vector<std::vector<std::size_t>> layersOf_;  // per species, its layers' indices
 };
 
 }  // namespace eco

@@ -178,7 +178,7 @@ void Ecosystem::grow() {
     const double suitability = s.suitability[p.cell[i]];
     p.age_years[i] += 1;
     if (p.height_m[i] < kBreastHeight_m) {
-      const double light = light_.lightAt(p.east_m[i], p.north_m[i], 0.0);
+      const double light = light_.groundLightAt(p.east_m[i], p.north_m[i]);
       const double response = std::clamp(s.ecology.lightResponse(light), 0.0, 1.0);
       const SaplingYear year =
           growSapling(life, p.height_m[i], {suitability, response, p.growthFactor[i]});
@@ -298,8 +298,8 @@ void Ecosystem::establish() {
       const double north = originNorth + (y + 0.5) * kRegenerationCell_m;
       const long cell = g.cellAt(east, north);
       if (cell < 0) continue;
-      const double ground = light_.lightAt(east, north, 0.0);
-      const bool litter = ground < kLitterLight * light_.lightAt(east, north, 1e6);
+      const double ground = light_.groundLightAt(east, north);
+      const bool litter = ground < kLitterLight * light_.skyLightAt(east, north);
       double total = 0.0;
       for (std::size_t s = 0; s < species_.size(); ++s) {
         const EcosystemSpecies& sp = species_[s];

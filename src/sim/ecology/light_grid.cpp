@@ -168,6 +168,16 @@ double LightGrid::lightAt(double east_m, double north_m, double height_m) const 
   return below == begin ? topLight_[column] : (below - 1)->lightBelow;
 }
 
+double LightGrid::groundLightAt(double east_m, double north_m) const {
+  const long column = columnAt(east_m, north_m);
+  return layersBegin(column) == layersEnd(column) ? topLight_[column]
+                                                  : (layersEnd(column) - 1)->lightBelow;
+}
+
+double LightGrid::skyLightAt(double east_m, double north_m) const {
+  return topLight_[columnAt(east_m, north_m)];
+}
+
 double LightGrid::heightWithLight(double east_m, double north_m, double from_m, double top_m,
                                   double light) const {
   const long column = columnAt(east_m, north_m);

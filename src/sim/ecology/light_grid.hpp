@@ -48,6 +48,9 @@ class LightGrid {
   // Light (a fraction of open level ground's) at a height above the ground: what the crowns
   // with their tops above it leave.
   double lightAt(double east_m, double north_m, double height_m) const;
+  // The same on the ground, below every crown, and above them all (the terrain's light).
+  double groundLightAt(double east_m, double north_m) const;
+  double skyLightAt(double east_m, double north_m) const;
   // The lowest height in [from_m, top_m] at the stem's column where the light reaches at
   // least `light` (crown pruning); `top_m` if none below it does.
   double heightWithLight(double east_m, double north_m, double from_m, double top_m,

@@ -48,6 +48,8 @@ TEST(LightGrid, TheTallerCrownTakesItsLightFirst) {
   EXPECT_NEAR(m.light.lightAt(20.0, 20.0, 15.0), leftInColumn, 1e-6);
   EXPECT_NEAR(m.light.lightAt(20.0, 20.0, 1.0),
               leftInColumn - m.light.absorbed(0) / (kLightColumn_m * kLightColumn_m), 1e-6);
+  EXPECT_DOUBLE_EQ(m.light.groundLightAt(20.0, 20.0), m.light.lightAt(20.0, 20.0, 0.0));
+  EXPECT_DOUBLE_EQ(m.light.skyLightAt(20.0, 20.0), 1.0);
   // The neighbouring column is untouched.
   EXPECT_DOUBLE_EQ(m.light.lightAt(30.0, 20.0, 1.0), 1.0);
   // Crown pruning: the lowest height with at least this much light.

@@ -1,13 +1,14 @@
 // The afforestation simulation (docs/ecology.md): plants on a terrain, stepped a year at a
 // time through light, growth, mortality, seed production and establishment.
-// - Light: the canopy's leaf area in columns (light_grid.hpp).
-// - Growth: saplings in height, trees by the stem volume their absorbed light makes
-//   (growth.hpp); a crown's lowest branches die where its light falls below the species'
-//   compensation point.
+// - Light: crowns fill 5 m columns from the top (light_grid.hpp).
+// - Growth: saplings in height, trees by the wood their absorbed light leaves after the
+//   upkeep of leaves and fine roots (growth.hpp); a crown's lowest branches die where its
+//   light falls below the leaf compensation light.
 // - Mortality: intrinsic, carbon starvation for trees, poor years for saplings.
-// - Reproduction: seed density maps from the mature crowns (dispersal.hpp) and seed rain;
-//   each free 2 m regeneration cell takes at most one new seedling a year, so regeneration
-//   is limited by space, seed, site and light, not by the terrain's cell size.
+// - Reproduction: seed density maps from the mature crowns (dispersal.hpp), the forest
+//   around the map and seed rain; each 2 m regeneration cell without a young plant below
+//   4 m takes at most one new seedling a year, so regeneration is limited by space, seed,
+//   site and light, not by the terrain's cell size.
 // Every random number is keyed by (scenario seed, year, plant or cell id, purpose), and every
 // pass keeps the plants' order, so a run gives the same plants whatever the thread count.
 #pragma once

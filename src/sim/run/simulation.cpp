@@ -89,21 +89,31 @@ RunRecord runRecord(const Scenario& scenario, const RunOptions& options, std::ui
   return r;
 }
 
-// The scenario's [[planting]]: each species on its square grid over the whole map.
-void plantStands(Ecosystem& ecosystem, const Scenario& scenario) {
-  const Grid& g = ecosystem.grid();
+// The species index of each [[planting]]; an InputError at the planting whose species the
+// scenario does not list.
+std::vector<int> plantedSpecies(const Scenario& scenario,
+                                const std::vector<EcosystemSpecies>& all) {
+  std::vector<int> indices;
   for (const Planting& planting : scenario.planting) {
-    const auto& all = ecosystem.species();
     const auto found = std::find_if(all.begin(), all.end(), [&](const EcosystemSpecies& s) {
       return s.species.name == planting.species;
     });
     if (found == all.end())
       throw InputError(planting.where, "no species '" + planting.species + "' in the scenario");
-    const int species = static_cast<int>(found - all.begin());
+    indices.push_back(static_cast<int>(found - all.begin()));
+  }
+  return indices;
+}
+
+// The scenario's [[planting]]: each species on its square grid over the whole map.
+void plantStands(Ecosystem& ecosystem, const Scenario& scenario, const std::vector<int>& species) {
+  const Grid& g = ecosystem.grid();
+  for (std::size_t k = 0; k < scenario.planting.size(); ++k) {
+    const Planting& planting = scenario.planting[k];
     const double width = g.width * g.dx_m, height = g.height * g.dy_m;
     for (double north = 0.5 * planting.spacing_m; north < height; north += planting.spacing_m)
       for (double east = 0.5 * planting.spacing_m; east < width; east += planting.spacing_m)
-        ecosystem.plantSapling(species, east - 0.5 * g.dx_m, north - 0.5 * g.dy_m,
+        ecosystem.plantSapling(species[k], east - 0.5 * g.dx_m, north - 0.5 * g.dy_m,
                                planting.height_m);
   }
 }
@@ -176,6 +186,7 @@ RunSummary runSimulation(const RunOptions& options) {
   ConditionFields fields =
       computeConditions(terrain, scenario.climate, SunlightSettings{}, &report);
   std::vector<EcosystemSpecies> species = loadEcosystemSpecies(scenario, fields);
+  const std::vector<int> planted = plantedSpecies(scenario, species);  // before any output
   summary.conditionsSeconds = secondsSince(conditionsStart);
 
   EcosystemSettings settings{scenario.seed, scenario.climate.prevailingWindFrom_deg};
@@ -193,7 +204,7 @@ RunSummary runSimulation(const RunOptions& options) {
       if (entry.path().extension() == ".csv") std::filesystem::remove(entry.path());
     std::filesystem::remove(run.checkpoint());
     writeConditionOutputs(fields, report, scenario, summary.folder);
-    plantStands(ecosystem, scenario);
+    plantStands(ecosystem, scenario, planted);
     for (const EcosystemSpecies& s : ecosystem.species())
       writeFieldMap(run.mapsFolder(), "suitability_" + s.species.name, "0-1", s.suitability,
                     terrain.grid);

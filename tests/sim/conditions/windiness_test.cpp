@@ -1,6 +1,7 @@
 #include "sim/conditions/windiness.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,20 @@ TEST(Windiness, FlatPlaneIsUniform) {
   computeWindiness(flat, 270.0, wind);
   // Open level ground has the same windiness whatever its size or altitude.
   for (float w : wind) ASSERT_FLOAT_EQ(w, static_cast<float>(kOpenGroundWindiness));
+}
+
+TEST(Windiness, TopographicPositionIsTheRiseAboveTheMeanAround) {
+  // On a tilted plane a cell is as high as the mean of a square centred on it; a 50 m hill
+  // on a plain rises atan(50 m / radius) less its share of the square's mean.
+  Terrain plane = test::analyticTerrain(41, 41, 10, 10, [](double e, double) { return 0.2 * e; });
+  const Field tilted = elevationAngle(plane, 100.0);
+  EXPECT_NEAR(tilted[plane.grid.index(20, 20)], 0.0f, 1e-4f);
+  Terrain hill = test::analyticTerrain(
+      41, 41, 10, 10, [](double e, double n) { return e == 200.0 && n == 200.0 ? 50.0 : 0.0; });
+  const Field rise = elevationAngle(hill, 100.0);  // a 21 x 21 square of 441 cells
+  EXPECT_NEAR(rise[hill.grid.index(20, 20)],
+              std::atan((50.0 - 50.0 / 441.0) / 100.0) * 180.0 / M_PI, 1e-3);
+  EXPECT_LT(rise[hill.grid.index(25, 20)], 0.0f);  // around it, below the mean
 }
 
 TEST(Windiness, IsOnAnAbsoluteScaleNotTheMapsOwnRange) {

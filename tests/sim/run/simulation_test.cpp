@@ -222,6 +222,21 @@ years = -5
       << errorOf(folder / "negative.toml");
   test::writeFile(folder / "none.toml", "name = \"x\"\n[terrain.generate]\nsize = 17\n");
   EXPECT_NE(errorOf(folder / "none.toml").find("no species"), std::string::npos);
+  // Planting a species the scenario lacks is refused before the run folder is touched.
+  test::writeFile(folder / "oak.toml",
+                  "name = \"x\"\n[terrain.generate]\nsize = 17\n"
+                  "[[species]]\nfile = \"" +
+                      speciesFile("beech") + "\"\n[[planting]]\nspecies = \"oak\"\n");
+  const auto out = test::freshDirectory("simulation_bad_planting");
+  try {
+    runSimulation(optionsFor(folder / "oak.toml", out));
+    ADD_FAILURE() << "planted an unknown species";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("oak.toml:7: planting[0].species: no species 'oak'"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(out));
 }
 
 TEST(Simulation, WarnsWhenNothingCanArrive) {

@@ -29,30 +29,34 @@ StandMeasures StandTally::perHectare(double area_ha) const {
   return m;
 }
 
-StandMeasures measureStand(const Plants& p, const std::vector<EcosystemSpecies>& species,
-                           double area_ha, int onlySpecies,
-                           const std::function<bool(std::size_t)>& inside) {
-  if (area_ha <= 0.0) return {};
-  StandTally tally;
-  std::vector<float> heights;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (onlySpecies >= 0 && p.species[i] != onlySpecies) continue;
-    if (inside && !inside(i)) continue;
-    heights.push_back(p.height_m[i]);
-    tally.add(p.dbh_m[i], p.height_m[i], species[p.species[i]].ecology.life.formFactor);
+std::vector<StandMeasures> measureStands(const Plants& p,
+                                         const std::vector<EcosystemSpecies>& species,
+                                         double area_ha) {
+  const std::size_t all = species.size();
+  std::vector<StandTally> tallies(all + 1);
+  std::vector<std::vector<float>> heights(all + 1);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t group : {static_cast<std::size_t>(p.species[i]), all}) {
+      heights[group].push_back(p.height_m[i]);
+      tallies[group].add(p.dbh_m[i], p.height_m[i], species[p.species[i]].ecology.life.formFactor);
+    }
+  std::vector<StandMeasures> measures;
+  for (std::size_t group = 0; group <= all; ++group) {
+    StandMeasures m = tallies[group].perHectare(area_ha);
+    // The 100 tallest per hectare (all of them on a smaller stand).
+    std::vector<float>& h = heights[group];
+    const std::size_t tallest =
+        std::min(h.size(), static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
+    if (tallest > 0 && area_ha > 0.0) {
+      std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(tallest - 1), h.end(),
+                       std::greater<>());
+      double sum = 0.0;
+      for (std::size_t k = 0; k < tallest; ++k) sum += h[k];
+      m.dominantHeight_m = sum / static_cast<double>(tallest);
+    }
+    measures.push_back(m);
   }
-  StandMeasures m = tally.perHectare(area_ha);
-  // The 100 tallest per hectare (all of them on a smaller stand).
-  const std::size_t tallest = std::min(
-      heights.size(), static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
-  if (tallest > 0) {
-    std::nth_element(heights.begin(), heights.begin() + (tallest - 1), heights.end(),
-                     std::greater<>());
-    double sum = 0.0;
-    for (std::size_t k = 0; k < tallest; ++k) sum += heights[k];
-    m.dominantHeight_m = sum / static_cast<double>(tallest);
-  }
-  return m;
+  return measures;
 }
 
 double densestBlockBasalArea(const Plants& p, const Grid& g, double block_m) {

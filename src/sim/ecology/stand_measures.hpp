@@ -3,7 +3,6 @@
 // mean diameter, Reineke's stand density index, their stem volume, and the dominant height.
 #pragma once
 
-#include <functional>
 #include <vector>
 
 #include "sim/ecology/ecosystem.hpp"
@@ -35,11 +34,11 @@ struct StandTally {
 // The basal area of a stem, m2.
 double basalAreaOf(double dbh_m);
 
-// The measures of the plants of one species (or all, with -1) on `area_ha`; `inside`, when
-// given, limits them to the plants for which it is true (a block of the map).
-StandMeasures measureStand(const Plants& plants, const std::vector<EcosystemSpecies>& species,
-                           double area_ha, int onlySpecies = -1,
-                           const std::function<bool(std::size_t)>& inside = {});
+// The measures on `area_ha` of each species' plants, in the species' order, and last of all
+// the plants together: one pass over the plants.
+std::vector<StandMeasures> measureStands(const Plants& plants,
+                                         const std::vector<EcosystemSpecies>& species,
+                                         double area_ha);
 
 // The basal area (trees of at least 10 cm) of the densest whole block of block_m x block_m
 // on the map, per hectare; 0 where the map holds no whole block.

@@ -46,6 +46,7 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem) {
       heightSum[r] += p.height_m[i];
       forCellsUnderCrown(g, p, i, [&](std::size_t cell) { covered[r][cell] = 1; });
     }
+  const std::vector<StandMeasures> measures = measureStands(p, ecosystem.species(), area_ha);
   for (std::size_t r = 0; r < rows.size(); ++r) {
     StatsRow& row = rows[r];
     const bool stand = r + 1 == rows.size();
@@ -57,7 +58,7 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem) {
         row.died += ecosystem.diedLastYear()[s];
       }
     row.meanHeight_m = row.alive ? heightSum[r] / row.alive : 0.0;
-    const StandMeasures m = measureStand(p, ecosystem.species(), area_ha, row.species);
+    const StandMeasures& m = measures[r];
     row.stemsPerHa = m.stemsPerHa;
     row.basalArea_m2PerHa = m.basalArea_m2PerHa;
     row.qmd_cm = m.qmd_cm;

@@ -172,7 +172,7 @@ TEST(Ecosystem, APlantedStandThinsItself) {
   for (int year = 1; year <= 100; ++year) {
     ecosystem.step();
     if (year >= 60 && year % 20 == 0)
-      decades.push_back(measureStand(ecosystem.plants(), ecosystem.species(), area_ha, 0));
+      decades.push_back(measureStands(ecosystem.plants(), ecosystem.species(), area_ha)[0]);
   }
   for (std::size_t d = 1; d < decades.size(); ++d) {
     EXPECT_LT(decades[d].stemsPerHa, decades[d - 1].stemsPerHa) << "year " << 60 + 20 * d;
@@ -274,7 +274,8 @@ TEST(Ecosystem, AStandDoesNotDependOnTheCellSize) {
     for (int year = 1; year <= 150; ++year) {
       ecosystem.step();
       if (year == 100 || year == 150)
-        at.push_back(measureStand(ecosystem.plants(), ecosystem.species(), 64.0 * 64.0 / 1e4));
+        at.push_back(
+            measureStands(ecosystem.plants(), ecosystem.species(), 64.0 * 64.0 / 1e4).back());
     }
     return at;
   };

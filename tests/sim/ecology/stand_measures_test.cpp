@@ -28,7 +28,9 @@ TEST(StandMeasures, CountsWhatAForesterCalipers) {
   addTree(p, 0, 20, 10, 0.40f, 32.0f);
   addTree(p, 1, 30, 10, 0.20f, 25.0f);
   addTree(p, 0, 40, 10, 0.05f, 6.0f);  // below the calipering limit
-  const StandMeasures all = measureStand(p, species, 0.5);
+  const std::vector<StandMeasures> measures = measureStands(p, species, 0.5);
+  ASSERT_EQ(measures.size(), 3u);  // beech, pine, and all
+  const StandMeasures& all = measures[2];
   EXPECT_DOUBLE_EQ(all.stemsPerHa, 6.0);
   const double ba = std::numbers::pi / 4 * (0.09 + 0.16 + 0.04);
   EXPECT_NEAR(all.basalArea_m2PerHa, ba / 0.5, 1e-6);
@@ -41,11 +43,11 @@ TEST(StandMeasures, CountsWhatAForesterCalipers) {
               1e-4);
   // On half a hectare the 50 tallest: here all four plants.
   EXPECT_NEAR(all.dominantHeight_m, (30.0 + 32.0 + 25.0 + 6.0) / 4.0, 1e-6);
-  const StandMeasures pine = measureStand(p, species, 0.5, 1);
-  EXPECT_DOUBLE_EQ(pine.stemsPerHa, 2.0);
-  const StandMeasures west =
-      measureStand(p, species, 0.5, -1, [&](std::size_t i) { return p.east_m[i] < 25.0f; });
-  EXPECT_DOUBLE_EQ(west.stemsPerHa, 4.0);
+  EXPECT_DOUBLE_EQ(measures[1].stemsPerHa, 2.0);  // pine
+  EXPECT_DOUBLE_EQ(measures[0].stemsPerHa, 4.0);  // beech
+  EXPECT_NEAR(measures[0].basalArea_m2PerHa + measures[1].basalArea_m2PerHa, all.basalArea_m2PerHa,
+              1e-12);
+  EXPECT_NEAR(measures[1].dominantHeight_m, 25.0, 1e-6);  // its only tree
 }
 
 TEST(StandMeasures, DominantHeightIsTheMeanOfTheHundredTallestPerHectare) {
@@ -53,7 +55,7 @@ TEST(StandMeasures, DominantHeightIsTheMeanOfTheHundredTallestPerHectare) {
   Plants p;
   for (int i = 0; i < 400; ++i) addTree(p, 0, 1.0f * i, 0, 0.2f, static_cast<float>(i % 40));
   // One hectare: the 100 tallest are ten each of 30..39 m.
-  EXPECT_NEAR(measureStand(p, species, 1.0).dominantHeight_m, 34.5, 1e-9);
+  EXPECT_NEAR(measureStands(p, species, 1.0).back().dominantHeight_m, 34.5, 1e-9);
 }
 
 TEST(StandMeasures, TheDensestBlockIsFoundWhereverItLies) {

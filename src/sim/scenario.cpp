@@ -1,5 +1,7 @@
 #include "sim/scenario.hpp"
 
+#include <algorithm>
+
 #include "core/toml_reader.hpp"
 
 namespace eco {
@@ -49,11 +51,18 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
   return spec;
 }
 
-ValidationSettings parseValidation(TomlTable& table, const std::filesystem::path& scenarioFolder) {
+ValidationSettings parseValidation(TomlTable& table, const std::filesystem::path& scenarioFolder,
+                                   const std::vector<Planting>& planting) {
   ValidationSettings v;
   v.where = table.where("yield_table");
   v.yieldTable = scenarioFolder / table.string("yield_table");
   v.species = table.string("species");
+  // The cohort measured is a planted one.
+  if (std::none_of(planting.begin(), planting.end(),
+                   [&](const Planting& p) { return p.species == v.species; }))
+    table.fail("species", "'" + v.species +
+                              "' is not planted: a [[planting]] of it is the stand "
+                              "compared with the yield table");
   for (double age : table.numberList("checked_ages", std::vector<double>{}, {1.0, 10000.0}))
     v.checkedAges.push_back(static_cast<int>(age));
   v.tolerance = table.number("tolerance", v.tolerance, {0.0, 10.0});
@@ -131,7 +140,7 @@ Scenario loadScenario(const std::filesystem::path& file) {
     s.planting.push_back(std::move(planting));
   }
   if (std::optional<TomlTable> validation = root.table("validation"))
-    s.validation = parseValidation(*validation, file.parent_path());
+    s.validation = parseValidation(*validation, file.parent_path(), s.planting);
   s.output.dir = std::filesystem::path("out") / s.name;
   if (std::optional<TomlTable> output = root.table("output")) {
     if (output->has("dir")) s.output.dir = output->string("dir");

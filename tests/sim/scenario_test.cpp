@@ -95,6 +95,8 @@ TEST(Scenario, ReadsTheValidationTable) {
 cell_size_m = 5
 [terrain.generate]
 size = 9
+[[planting]]
+species = "beech"
 [validation]
 yield_table = "table.csv"
 species = "beech"
@@ -108,12 +110,19 @@ checked_ages = [100, 140]
   EXPECT_EQ(s.validation->thinningFrom_years, 60);
   EXPECT_EQ(s.validation->thinningTo_years, 120);
   EXPECT_DOUBLE_EQ(s.validation->steepestThinningSlope, -2.0);
-  EXPECT_NE(std::string(errorOf("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n"
-                                "[validation]\nyield_table = \"t.csv\"\nspecies = \"b\"\n"
-                                "self_thinning_slope = [-1.3, -2.0]\n")
+  const std::string planted =
+      "[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n"
+      "[[planting]]\nspecies = \"b\"\n";
+  EXPECT_NE(std::string(errorOf(planted + "[validation]\nyield_table = \"t.csv\"\nspecies = \"b\"\n"
+                                          "self_thinning_slope = [-1.3, -2.0]\n")
                             .what())
-                .find("s.toml:8: validation.self_thinning_slope: expected [steepest, shallowest]"),
+                .find("s.toml:10: validation.self_thinning_slope: expected [steepest, shallowest]"),
             std::string::npos);
+  EXPECT_NE(
+      std::string(
+          errorOf(planted + "[validation]\nyield_table = \"t.csv\"\nspecies = \"oak\"\n").what())
+          .find("s.toml:9: validation.species: 'oak' is not planted"),
+      std::string::npos);
 }
 
 TEST(Scenario, ClimateTemperatureFallsWithTheLapseRate) {

@@ -78,6 +78,8 @@ cell_size_m = 5
 [terrain.generate]
 size = 17
 relief_m = 0
+[[planting]]
+species = "beech"
 [validation]
 yield_table = "table.csv"
 species = "beech"

@@ -157,6 +157,35 @@ TEST(Ecosystem, PineStarvesUnderBeechWhereBeechSurvives) {
   EXPECT_GT(youngOf(0), 3 * youngOf(1));
 }
 
+// Beech planted under a 30-year-old pine stand grows up through it and overtops it within
+// 120 years, while the pines, now among its crowns, decline (the shade-tolerant replacing
+// the pioneer, by mechanism; slowly, as it does in real stands).
+TEST(Ecosystem, BeechUnderPineOvertopsItAndPineDeclines) {
+  const Terrain terrain = flat(20, 5.0);  // 100 m x 100 m
+  const ConditionFields fields = test::uniformConditions(terrain);
+  Ecosystem ecosystem(terrain, fields,
+                      {test::inEcosystem(test::shippedSpecies("beech"), fields),
+                       test::inEcosystem(test::shippedSpecies("pine"), fields)},
+                      settings());
+  for (double north = -1.0; north < 97.0; north += 4.0)
+    for (double east = -1.0; east < 97.0; east += 4.0) ecosystem.plant(1, east, north, 30);
+  for (double north = 0.0; north < 97.0; north += 2.0)
+    for (double east = 0.0; east < 97.0; east += 2.0) ecosystem.plantSapling(0, east, north, 0.3);
+  auto measures = [&] { return measureStands(ecosystem.plants(), ecosystem.species(), 1.0); };
+  const double pinesAtStart = measures()[1].stemsPerHa;
+  std::vector<StandMeasures> at100;
+  for (int year = 1; year <= 120; ++year) {
+    ecosystem.step();
+    if (year == 100) at100 = measures();
+  }
+  const std::vector<StandMeasures> at120 = measures();
+  EXPECT_LT(at100[0].dominantHeight_m, at100[1].dominantHeight_m);  // still below at 100
+  EXPECT_GT(at120[0].dominantHeight_m, at120[1].dominantHeight_m);  // above at 120
+  EXPECT_LT(at120[1].stemsPerHa, 0.3 * pinesAtStart);
+  EXPECT_LT(at120[1].basalArea_m2PerHa, at100[1].basalArea_m2PerHa);  // pine past its peak
+  EXPECT_GT(at120[0].basalArea_m2PerHa, at100[0].basalArea_m2PerHa);
+}
+
 // A planted stand thins itself as its trees grow: stems fall and basal area rises, with no
 // cap on the number of stems.
 TEST(Ecosystem, APlantedStandThinsItself) {

@@ -12,7 +12,6 @@
 #include "app/data_paths.hpp"
 #include "app/run_progress.hpp"
 #include "core/error.hpp"
-#include "core/progress.hpp"
 #include "sim/run/simulation.hpp"
 
 namespace eco {
@@ -42,11 +41,7 @@ int runScenario(const RunArguments& args) {
   options.resume = args.resume;
   options.programVersion = ECOFOREST_VERSION;
   options.stop = &stopRequested;
-  const bool terminal = Progress::stderrIsTerminal();
-  options.progress = [terminal](const RunProgress& p) { showRunProgress(p, terminal); };
-  options.warn = [](const std::string& message) {
-    std::cerr << "ecoforest: warning: " << message << "\n";
-  };
+  reportToTheUser(options);
   // Ctrl-C or a polite kill finishes the current year, whose files are then complete.
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iostream>
 #include <string>
 
 #include <fmt/format.h>
+
+#include "core/progress.hpp"
 
 namespace eco {
 namespace {
@@ -16,6 +19,14 @@ std::string clock(double seconds) {
 }
 
 }  // namespace
+
+void reportToTheUser(RunOptions& options) {
+  const bool terminal = Progress::stderrIsTerminal();
+  options.progress = [terminal](const RunProgress& p) { showRunProgress(p, terminal); };
+  options.warn = [](const std::string& message) {
+    std::cerr << "ecoforest: warning: " << message << "\n";
+  };
+}
 
 void showRunProgress(const RunProgress& p, bool terminal) {
   const int done = p.year - p.firstYear + 1;

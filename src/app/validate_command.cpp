@@ -12,7 +12,6 @@
 #include "app/run_progress.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/progress.hpp"
 #include "sim/run/simulation.hpp"
 #include "sim/run/validation.hpp"
 
@@ -86,11 +85,7 @@ int validate(const ValidateArguments& args) {
           "the scenario has no [validation] table to compare with (docs/validation.md)");
     if (args.out) options.out = *args.out;
     options.programVersion = ECOFOREST_VERSION;
-    const bool terminal = Progress::stderrIsTerminal();
-    options.progress = [terminal](const RunProgress& p) { showRunProgress(p, terminal); };
-    options.warn = [](const std::string& message) {
-      std::cerr << "ecoforest: warning: " << message << "\n";
-    };
+    reportToTheUser(options);
     folder = runSimulation(options).folder;
   }
   const ValidationReport report = validateRun(openRunFolder(folder));

@@ -26,5 +26,17 @@ TEST(RunProgress, ABarRedrawnInPlaceOnATerminal) {
   EXPECT_EQ(bar.find('\n'), std::string::npos);  // only the last year ends the line
 }
 
+TEST(RunProgress, TheUserSeesProgressAndWarningsOnStderr) {
+  RunOptions options;
+  reportToTheUser(options);
+  ASSERT_TRUE(options.progress && options.warn);
+  testing::internal::CaptureStderr();
+  options.warn("nothing will grow");
+  options.progress({1, 1, 1, 5, 1.0});
+  const std::string text = testing::internal::GetCapturedStderr();
+  EXPECT_NE(text.find("ecoforest: warning: nothing will grow\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("year 1/1"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace eco

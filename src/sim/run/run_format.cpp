@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
+#include "core/csv_text.hpp"
 #include "core/error.hpp"
 #include "sim/conditions/conditions.hpp"
 
@@ -20,7 +21,7 @@ namespace {
 constexpr const char* kStatsHeader =
     "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,qmd_cm,"
     "dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,densest_hectare_basal_area_m2_per_ha";
-constexpr int kTreesColumns = 12;
+constexpr std::size_t kTreesColumns = 12;
 
 std::string fileText(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -28,13 +29,6 @@ std::string fileText(const std::filesystem::path& file) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-template <class T>
-bool parseField(std::string_view field, T& value) {
-  const char* end = field.data() + field.size();
-  auto [ptr, ec] = std::from_chars(field.data(), end, value);
-  return ec == std::errc() && ptr == end;
 }
 
 nlohmann::ordered_json siteJson(const std::vector<double>& means) {
@@ -117,30 +111,18 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
   const std::string text = fileText(file);
   TreeSnapshot snapshot;
   std::unordered_map<std::string, int> speciesIndex;
-  std::size_t lineStart = 0;
-  int line = 0;
-  while (lineStart < text.size()) {
-    std::size_t lineEnd = text.find('\n', lineStart);
-    if (lineEnd == std::string::npos) lineEnd = text.size();
-    std::string_view row(text.data() + lineStart, lineEnd - lineStart);
-    lineStart = lineEnd + 1;
-    ++line;
+  int lines = 0;
+  forEachLine(text, [&](int line, std::string_view row) {
+    lines = line;
     if (line == 1) {
       if (row != kTreesCsvHeader)
         throw InputError({file.string(), 1, ""},
                          fmt::format("not a trees file: the header must be '{}'", kTreesCsvHeader));
-      continue;
+      return;
     }
-    if (row.empty()) continue;
+    if (row.empty()) return;
     std::string_view fields[kTreesColumns];
-    int count = 0;
-    for (std::size_t start = 0; count < kTreesColumns;) {
-      const std::size_t comma = row.find(',', start);
-      fields[count++] = row.substr(
-          start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
-      if (comma == std::string_view::npos) break;
-      start = comma + 1;
-    }
+    const std::size_t count = splitFields(row, fields);
     TreeRow tree;
     bool ok = count == kTreesColumns && parseField(fields[0], tree.id) &&
               parseField(fields[2], tree.east_m) && parseField(fields[3], tree.north_m) &&
@@ -158,8 +140,8 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
     if (added) snapshot.speciesNames.emplace_back(fields[1]);
     tree.species = it->second;
     snapshot.trees.push_back(tree);
-  }
-  if (line == 0) throw InputError({file.string(), 0, ""}, "the file is empty");
+  });
+  if (lines == 0) throw InputError({file.string(), 0, ""}, "the file is empty");
   return snapshot;
 }
 

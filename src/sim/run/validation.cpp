@@ -1,13 +1,13 @@
 #include "sim/run/validation.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <limits>
 
 #include <fmt/format.h>
 
 #include "core/binary_io.hpp"
+#include "core/csv_text.hpp"
 #include "core/error.hpp"
 #include "sim/terrain.hpp"
 
@@ -18,9 +18,7 @@ constexpr const char* kYieldTableHeader = "age,stems_per_ha,basal_area_m2_per_ha
 
 double parseNumber(std::string_view text, const SourceLocation& where) {
   double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
-      value <= 0.0)
+  if (!parseField(text, value) || !std::isfinite(value) || value <= 0.0)
     throw InputError(where, fmt::format("expected a positive number, got '{}'", text));
   return value;
 }
@@ -36,32 +34,19 @@ std::vector<YieldTableRow> readYieldTable(const std::filesystem::path& file) {
   if (!text) throw InputError({file.string()}, "cannot read the yield table");
   std::vector<YieldTableRow> rows;
   bool header = false;
-  int lineNumber = 0;
-  std::size_t start = 0;
-  while (start < text->size()) {
-    std::size_t end = text->find('\n', start);
-    if (end == std::string::npos) end = text->size();
-    std::string_view line(text->data() + start, end - start);
-    start = end + 1;
-    ++lineNumber;
+  forEachLine(*text, [&](int lineNumber, std::string_view line) {
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.empty() || line.front() == '#') continue;
+    if (line.empty() || line.front() == '#') return;
     const SourceLocation where{file.string(), lineNumber};
     if (!header) {
       if (line != kYieldTableHeader)
         throw InputError(where, fmt::format("expected the header {}", kYieldTableHeader));
       header = true;
-      continue;
+      return;
     }
-    std::vector<std::string_view> fields;
-    for (std::size_t from = 0;;) {
-      const std::size_t comma = line.find(',', from);
-      fields.push_back(
-          line.substr(from, comma == std::string_view::npos ? line.npos : comma - from));
-      if (comma == std::string_view::npos) break;
-      from = comma + 1;
-    }
-    if (fields.size() != 4) throw InputError(where, "expected 4 comma-separated values");
+    std::string_view fields[4];
+    if (splitFields(line, fields) != 4)
+      throw InputError(where, "expected 4 comma-separated values");
     YieldTableRow row;
     const double age = parseNumber(fields[0], where);
     if (age != std::floor(age)) throw InputError(where, "the age must be whole years");
@@ -72,7 +57,7 @@ std::vector<YieldTableRow> readYieldTable(const std::filesystem::path& file) {
     if (!rows.empty() && row.age_years <= rows.back().age_years)
       throw InputError(where, "ages must ascend");
     rows.push_back(row);
-  }
+  });
   if (rows.empty()) throw InputError({file.string()}, "the yield table has no rows");
   return rows;
 }

@@ -1,0 +1,46 @@
+// Reading comma-separated text (the run folder's CSV files, yield tables): its lines with
+// their numbers, a line's fields, and a field parsed whole as a number.
+#pragma once
+
+#include <charconv>
+#include <cstddef>
+#include <span>
+#include <string_view>
+
+namespace eco {
+
+// Calls f(lineNumber, line) for each line of `text`, numbered from 1, without its '\n'.
+template <class F>
+void forEachLine(std::string_view text, F&& f) {
+  int number = 0;
+  for (std::size_t start = 0; start < text.size();) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    f(++number, text.substr(start, end - start));
+    start = end + 1;
+  }
+}
+
+// Splits a line at its commas into `fields`; returns how many fields the line has (more
+// than fields.size() when it has more, the surplus left unsplit).
+inline std::size_t splitFields(std::string_view line, std::span<std::string_view> fields) {
+  std::size_t count = 0;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = line.find(',', start);
+    if (count == fields.size()) return count + 1;
+    fields[count++] =
+        line.substr(start, comma == std::string_view::npos ? line.npos : comma - start);
+    if (comma == std::string_view::npos) return count;
+    start = comma + 1;
+  }
+}
+
+// Parses the whole field as a number; false if it is not one, or has anything after it.
+template <class T>
+bool parseField(std::string_view field, T& value) {
+  const char* end = field.data() + field.size();
+  auto [ptr, ec] = std::from_chars(field.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+}  // namespace eco

@@ -1,0 +1,46 @@
+#include "core/csv_text.hpp"
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace eco {
+namespace {
+
+TEST(CsvText, LinesComeWithTheirNumbers) {
+  std::vector<std::pair<int, std::string>> lines;
+  forEachLine("a,b\n\nc\nlast",
+              [&](int n, std::string_view line) { lines.emplace_back(n, std::string(line)); });
+  EXPECT_EQ(lines,
+            (std::vector<std::pair<int, std::string>>{{1, "a,b"}, {2, ""}, {3, "c"}, {4, "last"}}));
+  int calls = 0;
+  forEachLine("", [&](int, std::string_view) { ++calls; });
+  EXPECT_EQ(calls, 0);
+}
+
+TEST(CsvText, FieldsAreSplitAtCommasAndASurplusIsCounted) {
+  std::string_view fields[3];
+  EXPECT_EQ(splitFields("1,x,", fields), 3u);
+  EXPECT_EQ(fields[0], "1");
+  EXPECT_EQ(fields[1], "x");
+  EXPECT_EQ(fields[2], "");
+  EXPECT_EQ(splitFields("7", fields), 1u);
+  EXPECT_EQ(fields[0], "7");
+  EXPECT_EQ(splitFields("a,b,c,d,e", fields), 4u);  // more than there is room for
+}
+
+TEST(CsvText, NumbersAreParsedWhole) {
+  double d = 0.0;
+  EXPECT_TRUE(parseField("12.5", d));
+  EXPECT_DOUBLE_EQ(d, 12.5);
+  EXPECT_FALSE(parseField("12.5m", d));
+  EXPECT_FALSE(parseField("", d));
+  int i = 0;
+  EXPECT_FALSE(parseField("3.5", i));
+  EXPECT_TRUE(parseField("-4", i));
+  EXPECT_EQ(i, -4);
+}
+
+}  // namespace
+}  // namespace eco

@@ -18,6 +18,7 @@ struct ExportArgs {
   std::optional<int> year;
   std::string out;
   std::string lod = "1";
+  std::string instancing = "nodes";
 };
 
 void runExport(const ExportArgs& args) {
@@ -25,17 +26,24 @@ void runExport(const ExportArgs& args) {
   if (out.extension() != ".glb" && out.extension() != ".gltf")
     throw InputError({args.out, 0, "--out"}, "the forest is written as .glb or .gltf");
   requireOutputFolder(out);
+  ForestGltfOptions options;
+  options.instancing = args.instancing == "gpu" ? Instancing::Gpu : Instancing::Nodes;
+  options.lod = args.lod == "all" ? kAllLods : std::stoi(args.lod);
+  if (options.lod == kAllLods && options.instancing != Instancing::Gpu)
+    throw InputError({"export", 0, "--lod"},
+                     "--lod all writes the levels through MSFT_lod, which needs --instancing gpu");
   SceneSource source = openRunSource(args.run);
   const int year = args.year.value_or(source.defaultYear());
   source.requireSnapshot(year);
+  const TreeSnapshot snapshot = readSnapshot(*source.run, year);
   source.buildLibrary();
-  const Forest forest = source.forestOf(year, 0);
+  const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
   const ForestGltfSummary summary =
-      exportForest(source.terrain, *source.library, forest, out,
-                   args.lod == "all" ? kAllLods : std::stoi(args.lod));
+      exportForest(source.terrain, *source.library, forest, snapshot.trees, out, options);
   std::cout << fmt::format(
-      "{}: year {}, {} trees as instances of {} tree types (LOD {}), terrain of {} triangles\n",
-      args.out, year, summary.instances, summary.treeMeshes, args.lod, summary.terrainTriangles);
+      "{}: year {}, {} trees as {} of {} tree types (LOD {}), terrain of {} triangles\n", args.out,
+      year, summary.instances, options.instancing == Instancing::Gpu ? "GPU instances" : "nodes",
+      summary.treeMeshes, args.lod, summary.terrainTriangles);
 }
 
 }  // namespace
@@ -43,7 +51,8 @@ void runExport(const ExportArgs& args) {
 void addExportCommand(CLI::App& app) {
   auto args = std::make_shared<ExportArgs>();
   CLI::App* command = app.add_subcommand(
-      "export", "Write a run's forest of one year as glTF: terrain mesh and instanced trees");
+      "export",
+      "Write a run's forest of one year as glTF: the terrain and every tree, with its CSV row");
   command->add_option("run", args->run, "A run folder of `ecoforest run`")->required();
   command->add_option("--year", args->year, "Snapshot year (default: the run's last)");
   command->add_option("--out", args->out, "forest.glb or forest.gltf")->required();
@@ -53,6 +62,12 @@ void addExportCommand(CLI::App& app) {
           "Level of detail of the tree meshes: 0 full, 1 clustered leaves, 2 crown proxies, "
           "all (LOD0 with LOD1 and LOD2 through MSFT_lod)")
       ->check(CLI::IsMember({"0", "1", "2", "all"}));
+  command
+      ->add_option("--instancing", args->instancing,
+                   "nodes: one node per tree sharing its type's mesh (Blender, assimp, every "
+                   "importer); gpu: EXT_mesh_gpu_instancing (three.js, Babylon.js, engines)")
+      ->check(CLI::IsMember({"nodes", "gpu"}))
+      ->capture_default_str();
   command->callback([args] { runExport(*args); });
 }
 

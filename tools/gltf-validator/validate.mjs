@@ -2,6 +2,7 @@
 // Exit status: 0 with no errors, 1 with errors, 2 if the file cannot be read.
 // Usage: node tools/gltf-validator/validate.mjs FILE
 import { readFile } from 'node:fs/promises';
+import { dirname, join } from 'node:path';
 import validator from 'gltf-validator';
 
 const file = process.argv[2];
@@ -12,7 +13,10 @@ try {
   console.error(`cannot read ${file}: ${error.message}`);
   process.exit(2);
 }
-const report = await validator.validateBytes(bytes, { maxIssues: 50 });
+// A .gltf's buffers and images beside it (relative URIs, percent-encoded).
+const externalResourceFunction = async (uri) =>
+  new Uint8Array(await readFile(join(dirname(file), decodeURIComponent(uri))));
+const report = await validator.validateBytes(bytes, { maxIssues: 50, externalResourceFunction });
 const { numErrors, numWarnings, numInfos, messages } = report.issues;
 for (const m of messages) if (m.severity === 0) console.log(`error: ${m.code} ${m.pointer ?? ''}: ${m.message}`);
 console.log(JSON.stringify({ errors: numErrors, warnings: numWarnings, infos: numInfos }));

@@ -1,9 +1,11 @@
 #include "model/export/forest_gltf.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <glm/vec4.hpp>
 
+#include "core/error.hpp"
 #include "model/export/gltf_builder.hpp"
 
 namespace eco {
@@ -24,24 +26,83 @@ int addTerrain(GltfBuilder& builder, const MeshPart& terrain) {
   return builder.addNode(std::move(node));
 }
 
-// EXT_mesh_gpu_instancing's attributes of a type's trees.
+// The unit quaternion (x, y, z, w) of a tree's yaw: the renderer turns x toward z by yaw,
+// a rotation of -yaw about y.
+glm::vec4 yawRotation(float yaw_rad) {
+  const float half = -0.5f * yaw_rad;
+  return {0.0f, std::sin(half), 0.0f, std::cos(half)};
+}
+
+// glTF accessors hold 32-bit integers at most.
+std::uint32_t idOf(const ForestGltfTree& tree) {
+  if (tree.id > std::numeric_limits<std::uint32_t>::max())
+    throw InternalError("tree id " + std::to_string(tree.id) + " does not fit a glTF accessor");
+  return static_cast<std::uint32_t>(tree.id);
+}
+
+template <typename T, typename Of>
+int addPerTree(GltfBuilder& builder, const ForestGltfType& type, int componentType, int gltfType,
+               Of of) {
+  std::vector<T> values;
+  values.reserve(type.trees.size());
+  for (const ForestGltfTree& tree : type.trees) values.push_back(of(tree));
+  return builder.addAccessor(values, componentType, gltfType, 0, false);
+}
+
+// EXT_mesh_gpu_instancing's attributes of a type's trees: the transforms and the trees'
+// CSV columns.
 tinygltf::Value::Object addInstancing(GltfBuilder& builder, const ForestGltfType& type) {
-  std::vector<glm::vec4> rotations;  // unit quaternions (x, y, z, w)
-  for (float yaw : type.yaws_rad) {
-    // The renderer turns x toward z by yaw: a rotation of -yaw about y.
-    const float half = -0.5f * yaw;
-    rotations.emplace_back(0.0f, std::sin(half), 0.0f, std::cos(half));
-  }
+  using Tree = ForestGltfTree;
+  constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  constexpr int kScalar = TINYGLTF_TYPE_SCALAR;
   tinygltf::Value::Object attributes;
-  attributes["TRANSLATION"] = tinygltf::Value(builder.addAccessor(
-      type.translations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 0, false));
-  attributes["ROTATION"] = tinygltf::Value(builder.addAccessor(
-      rotations, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, 0, false));
-  attributes["SCALE"] = tinygltf::Value(builder.addAccessor(
-      type.scales, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 0, false));
+  auto add = [&](const char* name, int accessor) { attributes[name] = tinygltf::Value(accessor); };
+  add("TRANSLATION", addPerTree<glm::vec3>(builder, type, kFloat, TINYGLTF_TYPE_VEC3,
+                                           [](const Tree& t) { return t.translation; }));
+  add("ROTATION", addPerTree<glm::vec4>(builder, type, kFloat, TINYGLTF_TYPE_VEC4,
+                                        [](const Tree& t) { return yawRotation(t.yaw_rad); }));
+  add("SCALE", addPerTree<glm::vec3>(builder, type, kFloat, TINYGLTF_TYPE_VEC3,
+                                     [](const Tree& t) { return t.scale; }));
+  add("_ID", addPerTree<std::uint32_t>(builder, type, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, kScalar,
+                                       idOf));
+  add("_SPECIES",
+      addPerTree<std::uint16_t>(builder, type, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, kScalar,
+                                [&](const Tree&) { return std::uint16_t(type.species); }));
+  add("_AGE",
+      addPerTree<float>(builder, type, kFloat, kScalar, [](const Tree& t) { return t.age_years; }));
+  add("_HEIGHT",
+      addPerTree<float>(builder, type, kFloat, kScalar, [](const Tree& t) { return t.height_m; }));
+  add("_DBH",
+      addPerTree<float>(builder, type, kFloat, kScalar, [](const Tree& t) { return t.dbh_m; }));
+  add("_VIGOR",
+      addPerTree<float>(builder, type, kFloat, kScalar, [](const Tree& t) { return t.vigor; }));
   tinygltf::Value::Object instancing;
   instancing["attributes"] = tinygltf::Value(attributes);
   return instancing;
+}
+
+// A tree's own node (Instancing::Nodes): its transform, and its CSV row as extras, which
+// Blender shows as the object's custom properties.
+tinygltf::Node treeNode(const ForestGltfTree& tree, const std::string& species, int mesh) {
+  tinygltf::Node node;
+  node.name = species + "_" + std::to_string(tree.id);
+  node.mesh = mesh;
+  node.translation = {tree.translation.x, tree.translation.y, tree.translation.z};
+  const glm::vec4 q = yawRotation(tree.yaw_rad);
+  node.rotation = {q.x, q.y, q.z, q.w};
+  node.scale = {tree.scale.x, tree.scale.y, tree.scale.z};
+  tinygltf::Value::Object extras;
+  // Whole numbers as JSON integers where they fit (tinygltf's integers are 32-bit).
+  extras["id"] = tree.id <= std::numeric_limits<int>::max()
+                     ? tinygltf::Value(static_cast<int>(tree.id))
+                     : tinygltf::Value(static_cast<double>(tree.id));
+  extras["species"] = tinygltf::Value(species);
+  extras["age"] = tinygltf::Value(static_cast<int>(tree.age_years));
+  extras["height_m"] = tinygltf::Value(static_cast<double>(tree.height_m));
+  extras["dbh_m"] = tinygltf::Value(static_cast<double>(tree.dbh_m));
+  extras["vigor"] = tinygltf::Value(static_cast<double>(tree.vigor));
+  node.extras = tinygltf::Value(extras);
+  return node;
 }
 
 // MSFT_screencoverage: the switching heights as fractions of the screen.
@@ -54,14 +115,26 @@ tinygltf::Value screenCoverage(const ForestGltfScene& scene) {
   return tinygltf::Value(extras);
 }
 
+// The scene's extras: the species names that _SPECIES indexes.
+tinygltf::Value speciesNames(const ForestGltfScene& scene) {
+  tinygltf::Value::Array names;
+  for (const Species* species : scene.species) names.emplace_back(species->name);
+  tinygltf::Value::Object extras;
+  extras["species"] = tinygltf::Value(names);
+  return tinygltf::Value(extras);
+}
+
 }  // namespace
 
 ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::filesystem::path& file,
-                                  int lod) {
+                                  const ForestGltfOptions& options) {
+  const bool gpu = options.instancing == Instancing::Gpu;
+  if (options.lod == kAllLods && !gpu)
+    throw InternalError("MSFT_lod levels are written for GPU instancing only");
   ForestGltfSummary summary;
   GltfBuilder builder;
-  builder.useExtension("EXT_mesh_gpu_instancing", true);
-  if (lod == kAllLods) builder.useExtension("MSFT_lod", false);
+  if (gpu) builder.useExtension("EXT_mesh_gpu_instancing", true);
+  if (options.lod == kAllLods) builder.useExtension("MSFT_lod", false);
   std::vector<int> roots;
 
   summary.terrainTriangles = scene.terrain.triangleCount();
@@ -70,7 +143,7 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
   // Materials per species and kind, added when first used.
   std::vector<std::vector<int>> materials(scene.species.size(), std::vector<int>(5, -1));
   for (const ForestGltfType& type : scene.types) {
-    if (type.translations.empty()) continue;
+    if (type.trees.empty()) continue;
     const Species& species = *scene.species[type.species];
     auto meshOfLevel = [&](int level) {
       tinygltf::Mesh mesh;
@@ -83,32 +156,37 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
       return builder.addMesh(std::move(mesh));
     };
 
-    const tinygltf::Value::Object instancing = addInstancing(builder, type);
-
-    auto instancedNode = [&](int level) {
-      tinygltf::Node node;
-      node.name = type.name + "_lod" + std::to_string(level);
-      node.mesh = meshOfLevel(level);
-      node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(instancing);
-      return node;
-    };
-    if (lod == kAllLods) {
-      tinygltf::Node base = instancedNode(0);
-      tinygltf::Value::Array ids;
-      for (int level = 1; level < kLodCount; ++level)
-        ids.emplace_back(builder.addNode(instancedNode(level)));
-      tinygltf::Value::Object msftLod;
-      msftLod["ids"] = tinygltf::Value(ids);
-      base.extensions["MSFT_lod"] = tinygltf::Value(msftLod);
-      base.extras = screenCoverage(scene);
-      roots.push_back(builder.addNode(std::move(base)));
+    if (!gpu) {
+      const int mesh = meshOfLevel(options.lod);
+      for (const ForestGltfTree& tree : type.trees)
+        roots.push_back(builder.addNode(treeNode(tree, species.name, mesh)));
     } else {
-      roots.push_back(builder.addNode(instancedNode(lod)));
+      const tinygltf::Value::Object instancing = addInstancing(builder, type);
+      auto instancedNode = [&](int level) {
+        tinygltf::Node node;
+        node.name = type.name + "_lod" + std::to_string(level);
+        node.mesh = meshOfLevel(level);
+        node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(instancing);
+        return node;
+      };
+      if (options.lod == kAllLods) {
+        tinygltf::Node base = instancedNode(0);
+        tinygltf::Value::Array ids;
+        for (int level = 1; level < kLodCount; ++level)
+          ids.emplace_back(builder.addNode(instancedNode(level)));
+        tinygltf::Value::Object msftLod;
+        msftLod["ids"] = tinygltf::Value(ids);
+        base.extensions["MSFT_lod"] = tinygltf::Value(msftLod);
+        base.extras = screenCoverage(scene);
+        roots.push_back(builder.addNode(std::move(base)));
+      } else {
+        roots.push_back(builder.addNode(instancedNode(options.lod)));
+      }
     }
-    summary.instances += type.translations.size();
+    summary.instances += type.trees.size();
     ++summary.treeMeshes;
   }
-  builder.setScene(std::move(roots));
+  builder.setScene(std::move(roots), speciesNames(scene));
   builder.write(file);
   return summary;
 }

@@ -1,12 +1,16 @@
 // A whole forest as one glTF 2.0 file for other tools (Blender, game engines): the terrain
-// as a mesh, each tree type as one mesh, and every tree as an instance of its type's mesh
-// through EXT_mesh_gpu_instancing (translation, rotation, scale accessors). The frame is the
+// as a mesh, each tree type as one mesh shared by its trees, and every tree either as its
+// own node (Instancing::Nodes: what every importer reads) or as an instance of its type's
+// node through EXT_mesh_gpu_instancing (Instancing::Gpu: one draw per type in engines that
+// read the extension). Each tree carries its row of the trees CSV: node extras, or
+// per-instance attributes (_ID, _SPECIES, _AGE, _HEIGHT, _DBH, _VIGOR). The frame is the
 // world frame (core/frames.hpp: x east, y up, z south, metres), glTF's right-handed, y-up
 // convention. The renderer's scene (render/scene/forest_export.hpp) fills it from a run.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -19,24 +23,49 @@
 
 namespace eco {
 
+// One tree: where it stands and how its type's mesh is turned and scaled, and what its row
+// of the trees CSV says about it.
+struct ForestGltfTree {
+  glm::vec3 translation{0.0f};  // stem base
+  float yaw_rad = 0.0f;         // turn of x toward z about the vertical
+  glm::vec3 scale{1.0f};
+  std::uint64_t id = 0;
+  float age_years = 0.0f, height_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
+};
+
 // One tree type: its meshes and every tree drawn with it.
 struct ForestGltfType {
   std::string name;
   int species = 0;                       // index into ForestGltfScene::species
   std::array<TreeMesh, kLodCount> lods;  // the levels exported (others may stay empty)
-  std::vector<glm::vec3> translations;   // stem bases
-  std::vector<float> yaws_rad;           // turns of x toward z about the vertical
-  std::vector<glm::vec3> scales;
+  std::vector<ForestGltfTree> trees;
 };
 
 struct ForestGltfScene {
   MeshPart terrain;
-  std::vector<const Species*> species;  // their materials
+  std::vector<const Species*> species;  // their names and materials
   std::vector<ForestGltfType> types;    // in the order they are written
   // For MSFT_lod: the heights in pixels at which a viewer switches to LOD1, LOD2 and past
   // LOD2, and the screen height they are measured on.
   std::array<float, 3> switchPixels{};
   float screenHeight_px = 0.0f;
+};
+
+enum class Instancing {
+  Nodes,  // one node per tree sharing its type's mesh: Blender, assimp, every viewer
+  Gpu,    // EXT_mesh_gpu_instancing, required: three.js, Babylon.js, engines
+};
+
+// Every level of detail: LOD0 as each type's mesh, LOD1 and LOD2 through MSFT_lod.
+inline constexpr int kAllLods = -1;
+
+struct ForestGltfOptions {
+  Instancing instancing = Instancing::Nodes;
+  // The level each type's mesh is exported at (0 full detail), or kAllLods (Gpu only): the
+  // type's node shows LOD0 and names two sibling nodes with LOD1 and LOD2 (the same
+  // instances), with the screen coverages at which to switch (MSFT_screencoverage).
+  // Viewers without MSFT_lod show LOD0.
+  int lod = 1;
 };
 
 struct ForestGltfSummary {
@@ -45,14 +74,9 @@ struct ForestGltfSummary {
   std::size_t terrainTriangles = 0;
 };
 
-// Every level of detail: LOD0 as each type's mesh, LOD1 and LOD2 through MSFT_lod.
-inline constexpr int kAllLods = -1;
-
-// `lod` picks the level each type's mesh is exported at (0 full detail), or kAllLods for
-// MSFT_lod: the type's node shows LOD0 and names two sibling nodes with LOD1 and LOD2 (the
-// same instances), with the screen coverages at which to switch (MSFT_screencoverage).
-// Viewers without MSFT_lod show LOD0. Types without trees are left out.
+// Types without trees are left out. The per-instance attribute names, as EXT_mesh_gpu_
+// instancing requires of custom ones, start with an underscore.
 ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::filesystem::path& file,
-                                  int lod);
+                                  const ForestGltfOptions& options);
 
 }  // namespace eco

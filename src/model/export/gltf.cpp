@@ -1,6 +1,6 @@
 // glTF 2.0 through tinygltf: one mesh with a primitive per material, PBR materials with
 // embedded PNG textures (alpha mask for leaves), one binary buffer. .glb writes the binary
-// container, .gltf a JSON file with the buffer embedded as a data URI.
+// container, .gltf a JSON file with the buffer beside it as STEM.bin.
 #include "model/export/gltf_builder.hpp"
 #include "model/export/tree_export.hpp"
 

@@ -1,6 +1,11 @@
 #include "model/export/gltf_builder.hpp"
 
+#include <cctype>
 #include <sstream>
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -75,9 +80,10 @@ int GltfBuilder::addNode(tinygltf::Node node) {
   return static_cast<int>(model_.nodes.size() - 1);
 }
 
-void GltfBuilder::setScene(std::vector<int> roots) {
+void GltfBuilder::setScene(std::vector<int> roots, tinygltf::Value extras) {
   tinygltf::Scene scene;
   scene.nodes = std::move(roots);
+  scene.extras = std::move(extras);
   model_.scenes = {scene};
   model_.defaultScene = 0;
 }
@@ -87,15 +93,54 @@ void GltfBuilder::useExtension(const std::string& name, bool required) {
   if (required) model_.extensionsRequired.push_back(name);
 }
 
+namespace {
+
+// A file name as a relative URI: characters other than RFC 3986's unreserved ones
+// percent-encoded (a space is %20).
+std::string uriOf(const std::string& name) {
+  std::string uri;
+  for (unsigned char c : name) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~')
+      uri += static_cast<char>(c);
+    else
+      uri += fmt::format("%{:02X}", c);
+  }
+  return uri;
+}
+
+}  // namespace
+
+std::filesystem::path GltfBuilder::binaryFileFor(const std::filesystem::path& gltf) {
+  return std::filesystem::path(gltf).replace_extension(".bin");
+}
+
 void GltfBuilder::write(const std::filesystem::path& file) {
   const bool binary = file.extension() == ".glb" || file.extension() == ".GLB";
-  std::ostringstream text;
   tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model_, text, /*prettyPrint=*/!binary, binary))
-    throw InternalError("tinygltf could not serialise " + file.string());
-  AtomicFile out(file);
-  out.write(text.view());
-  out.commit();
+  std::ostringstream text;
+  if (binary) {
+    if (!writer.WriteGltfSceneToStream(&model_, text, /*prettyPrint=*/false, true))
+      throw InternalError("tinygltf could not serialise " + file.string());
+    AtomicFile out(file);
+    out.write(text.view());
+    out.commit();
+    return;
+  }
+  // tinygltf's stream writer embeds buffers as base64 (a third larger, slow to parse): the
+  // JSON is written without the bytes and its buffer then points at STEM.bin.
+  std::vector<unsigned char> bytes = std::move(model_.buffers[0].data);
+  model_.buffers[0].data.clear();
+  const bool serialised = writer.WriteGltfSceneToStream(&model_, text, true, false);
+  model_.buffers[0].data = std::move(bytes);
+  if (!serialised) throw InternalError("tinygltf could not serialise " + file.string());
+  nlohmann::ordered_json json = nlohmann::ordered_json::parse(text.str());
+  const std::filesystem::path bin = binaryFileFor(file);
+  json["buffers"][0] = {{"byteLength", model_.buffers[0].data.size()},
+                        {"uri", uriOf(bin.filename().string())}};
+  AtomicFileSet files;
+  files.add(bin).write(model_.buffers[0].data);
+  files.add(file).write(json.dump(2) + "\n");
+  files.commit();
 }
 
 int GltfBuilder::addTexture(const Image& image, bool repeat, const std::string& name) {

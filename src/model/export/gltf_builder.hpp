@@ -1,7 +1,7 @@
 // Building glTF 2.0 files through tinygltf, shared by the single-tree exporter and the
 // whole-forest export: one binary buffer, accessors over it, PBR materials with embedded PNG
 // textures, meshes with one primitive per material part. write() chooses the container by
-// extension: .glb binary, .gltf JSON with the buffer as a data URI; atomically.
+// extension: .glb binary, .gltf JSON with the buffer beside it as STEM.bin; atomically.
 #pragma once
 
 #include <filesystem>
@@ -57,12 +57,14 @@ class GltfBuilder {
   void addPrimitive(tinygltf::Mesh& mesh, const MeshPart& part, int material);
   int addMesh(tinygltf::Mesh mesh);
   int addNode(tinygltf::Node node);
-  // The scene of the given root nodes (the default scene).
-  void setScene(std::vector<int> roots);
+  // The scene of the given root nodes (the default scene), with optional extras.
+  void setScene(std::vector<int> roots, tinygltf::Value extras = {});
   void useExtension(const std::string& name, bool required);
 
   tinygltf::Model& model() { return model_; }
   void write(const std::filesystem::path& file);
+  // Where a .gltf file's buffer goes.
+  static std::filesystem::path binaryFileFor(const std::filesystem::path& gltf);
 
  private:
   int addTexture(const Image& image, bool repeat, const std::string& name);

@@ -1,5 +1,6 @@
 #include "render/scene/forest_export.hpp"
 
+#include "core/error.hpp"
 #include "core/frames.hpp"
 #include "render/scene/culling.hpp"
 #include "render/scene/frame_size.hpp"
@@ -38,7 +39,10 @@ TreeMesh treeMesh(const WindMesh& wind) {
 }  // namespace
 
 ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& library,
-                                const Forest& forest, int lod) {
+                                const Forest& forest, const std::vector<TreeRow>& rows,
+                                const ForestGltfOptions& options) {
+  if (rows.size() != forest.size())
+    throw InternalError("the forest and its trees' rows differ in length");
   ForestGltfScene scene;
   scene.terrain = terrainPart(terrain);
   for (const Species& s : library.species()) scene.species.push_back(&s);
@@ -58,19 +62,29 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
                "_age" + std::to_string(type.ageClass);
     out.species = type.species;
     for (int level = 0; level < kLodCount; ++level)
-      if (lod == kAllLods || lod == level) out.lods[level] = treeMesh(type.meshes.lods[level]);
+      if (options.lod == kAllLods || options.lod == level)
+        out.lods[level] = treeMesh(type.meshes.lods[level]);
+    out.trees.reserve(members[t].size());
     for (std::size_t i : members[t]) {
-      out.translations.push_back(forest.position[i]);
-      out.yaws_rad.push_back(forest.yaw[i]);
-      out.scales.emplace_back(forest.scaleXZ[i], forest.scaleY[i], forest.scaleXZ[i]);
+      const TreeRow& row = rows[i];
+      out.trees.push_back({.translation = forest.position[i],
+                           .yaw_rad = forest.yaw[i],
+                           .scale = {forest.scaleXZ[i], forest.scaleY[i], forest.scaleXZ[i]},
+                           .id = row.id,
+                           .age_years = static_cast<float>(row.age_years),
+                           .height_m = row.height_m,
+                           .dbh_m = row.dbh_m,
+                           .vigor = row.vigor});
     }
   }
   return scene;
 }
 
 ForestGltfSummary exportForest(const Terrain& terrain, const TreeLibrary& library,
-                               const Forest& forest, const std::filesystem::path& file, int lod) {
-  return writeForestGltf(forestGltfScene(terrain, library, forest, lod), file, lod);
+                               const Forest& forest, const std::vector<TreeRow>& rows,
+                               const std::filesystem::path& file,
+                               const ForestGltfOptions& options) {
+  return writeForestGltf(forestGltfScene(terrain, library, forest, rows, options), file, options);
 }
 
 }  // namespace eco

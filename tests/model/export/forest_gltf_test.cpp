@@ -35,16 +35,33 @@ ForestGltfScene smallScene(const Species& species) {
     }
   }
   ForestGltfType& one = scene.types.front();
-  one.translations = {{1, 2, 3}, {4, 5, 6}};
-  one.yaws_rad = {0.0f, static_cast<float>(kPi / 2)};
-  one.scales = {{1, 1, 1}, {2, 3, 2}};
+  one.trees = {{.translation = {1, 2, 3}, .id = 7, .age_years = 30, .height_m = 12.5f},
+               {.translation = {4, 5, 6},
+                .yaw_rad = static_cast<float>(kPi / 2),
+                .scale = {2, 3, 2},
+                .id = 4000000000u,
+                .age_years = 80,
+                .height_m = 31.25f,
+                .dbh_m = 0.5f,
+                .vigor = 0.75f}};
   return scene;
 }
+
+template <typename T>
+std::vector<T> accessorValues(const tinygltf::Model& model, const tinygltf::Value& index) {
+  const tinygltf::Accessor& a = model.accessors[index.GetNumberAsInt()];
+  const tinygltf::BufferView& view = model.bufferViews[a.bufferView];
+  const auto* data = reinterpret_cast<const T*>(model.buffers[view.buffer].data.data() +
+                                                view.byteOffset + a.byteOffset);
+  return std::vector<T>(data, data + a.count);
+}
+
+const ForestGltfOptions kGpu{.instancing = Instancing::Gpu};
 
 TEST(ForestGltf, EachTreeIsAnInstanceTurnedByItsYaw) {
   const Species beech = test::loadNamed("beech");
   const auto file = test::freshDirectory("forest_gltf") / "forest.glb";
-  const ForestGltfSummary summary = writeForestGltf(smallScene(beech), file, 1);
+  const ForestGltfSummary summary = writeForestGltf(smallScene(beech), file, kGpu);
   EXPECT_EQ(summary.instances, 2u);
   EXPECT_EQ(summary.treeMeshes, 1u);  // the type without trees is left out
   EXPECT_EQ(summary.terrainTriangles, 1u);
@@ -63,10 +80,68 @@ TEST(ForestGltf, EachTreeIsAnInstanceTurnedByItsYaw) {
   EXPECT_NEAR(q[4 + 3], std::sqrt(0.5f), 1e-6f);
 }
 
+TEST(ForestGltf, GpuInstancesCarryTheirTreesAttributes) {
+  const Species beech = test::loadNamed("beech");
+  const auto file = test::freshDirectory("forest_gltf_attributes") / "forest.glb";
+  writeForestGltf(smallScene(beech), file, kGpu);
+  const tinygltf::Model model = test::loadGltf(file);
+  const tinygltf::Value& a =
+      model.nodes[1].extensions.at("EXT_mesh_gpu_instancing").Get("attributes");
+  EXPECT_EQ(accessorValues<std::uint32_t>(model, a.Get("_ID")),
+            (std::vector<std::uint32_t>{7u, 4000000000u}));
+  EXPECT_EQ(accessorValues<std::uint16_t>(model, a.Get("_SPECIES")),
+            (std::vector<std::uint16_t>{0, 0}));
+  EXPECT_EQ(accessorValues<float>(model, a.Get("_AGE")), (std::vector<float>{30, 80}));
+  EXPECT_EQ(accessorValues<float>(model, a.Get("_HEIGHT")), (std::vector<float>{12.5f, 31.25f}));
+  EXPECT_EQ(accessorValues<float>(model, a.Get("_DBH")), (std::vector<float>{0.0f, 0.5f}));
+  EXPECT_EQ(accessorValues<float>(model, a.Get("_VIGOR")), (std::vector<float>{0.0f, 0.75f}));
+  // _SPECIES indexes the scene's list of names.
+  EXPECT_EQ(model.scenes[0].extras.Get("species").Get(0).Get<std::string>(), "beech");
+}
+
+TEST(ForestGltf, NodesGiveEachTreeItsOwnNodeSharingTheTypesMesh) {
+  const Species beech = test::loadNamed("beech");
+  const auto file = test::freshDirectory("forest_gltf_nodes") / "forest.gltf";
+  const ForestGltfSummary summary = writeForestGltf(smallScene(beech), file, {});
+  EXPECT_EQ(summary.instances, 2u);
+  const tinygltf::Model model = test::loadGltf(file);
+  EXPECT_TRUE(model.extensionsUsed.empty());
+  ASSERT_EQ(model.nodes.size(), 3u);  // terrain and the two trees
+  const tinygltf::Node& first = model.nodes[1];
+  const tinygltf::Node& second = model.nodes[2];
+  EXPECT_EQ(first.mesh, second.mesh);
+  EXPECT_EQ(model.meshes.size(), 2u);  // terrain, the type's LOD1
+  EXPECT_EQ(first.name, "beech_7");
+  EXPECT_EQ(first.translation, (std::vector<double>{1, 2, 3}));
+  EXPECT_EQ(second.scale, (std::vector<double>{2, 3, 2}));
+  EXPECT_NEAR(second.rotation[1], -std::sqrt(0.5), 1e-6);
+  EXPECT_NEAR(second.rotation[3], std::sqrt(0.5), 1e-6);
+  EXPECT_EQ(first.extras.Get("id").GetNumberAsInt(), 7);
+  EXPECT_EQ(first.extras.Get("species").Get<std::string>(), "beech");
+  EXPECT_EQ(first.extras.Get("age").GetNumberAsInt(), 30);
+  EXPECT_EQ(second.extras.Get("id").GetNumberAsDouble(), 4000000000.0);
+  EXPECT_EQ(second.extras.Get("height_m").GetNumberAsDouble(), 31.25);
+  EXPECT_EQ(second.extras.Get("dbh_m").GetNumberAsDouble(), 0.5);
+  EXPECT_EQ(second.extras.Get("vigor").GetNumberAsDouble(), 0.75);
+}
+
+// A .gltf keeps its bytes in STEM.bin beside it rather than as base64 inside the JSON.
+TEST(ForestGltf, TextGltfKeepsItsBufferInABinFile) {
+  const Species beech = test::loadNamed("beech");
+  const auto dir = test::freshDirectory("forest_gltf_bin");
+  writeForestGltf(smallScene(beech), dir / "forest.gltf", {});
+  ASSERT_TRUE(std::filesystem::exists(dir / "forest.bin"));
+  const tinygltf::Model model = test::loadGltf(dir / "forest.gltf");
+  ASSERT_EQ(model.buffers.size(), 1u);
+  EXPECT_EQ(model.buffers[0].uri, "forest.bin");
+  EXPECT_EQ(model.buffers[0].data.size(), std::filesystem::file_size(dir / "forest.bin"));
+  EXPECT_EQ(test::entriesIn(dir), 2u);  // no temporaries left
+}
+
 TEST(ForestGltf, AllLevelsGoThroughMsftLodWithTheirScreenCoverages) {
   const Species beech = test::loadNamed("beech");
   const auto file = test::freshDirectory("forest_gltf_lods") / "forest.glb";
-  writeForestGltf(smallScene(beech), file, kAllLods);
+  writeForestGltf(smallScene(beech), file, {.instancing = Instancing::Gpu, .lod = kAllLods});
   const tinygltf::Model model = test::loadGltf(file);
   ASSERT_EQ(model.nodes.size(), 4u);  // terrain, LOD1, LOD2, then LOD0 naming them
   const tinygltf::Node& base = model.nodes.back();

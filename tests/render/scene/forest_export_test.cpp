@@ -4,8 +4,8 @@
 #include <tiny_gltf.h>
 #include <glm/gtc/quaternion.hpp>
 
-#include "render/scene/camera.hpp"
 #include "gltf_files.hpp"
+#include "render/scene/camera.hpp"
 #include "render_support.hpp"
 
 namespace eco {
@@ -23,7 +23,10 @@ std::vector<T> accessorValues(const tinygltf::Model& model, int index) {
 struct Scene {
   Terrain terrain = generateMidpoint({33, 0.5, 40.0}, 10.0, 12.0, 200.0, 3);
   Forest forest;
+  std::vector<TreeRow> rows;  // what the trees CSV says of each tree
 };
+
+const ForestGltfOptions kGpu{.instancing = Instancing::Gpu};
 
 Scene smallScene() {
   Scene s;
@@ -31,8 +34,14 @@ Scene smallScene() {
   for (int i = 0; i < 25; ++i) {
     const double east = 20.0 + 11.0 * i, north = 300.0 - 9.0 * i;
     const int type = library.typeIndex(i % 2, 0, (i / 2) % 2);
+    const float height = 3.0f + 0.5f * i;
     s.forest.add(library, type, worldFromMap(east, north, s.terrain.altitudeAt(east, north)),
-                 3.0f + 0.5f * i, 0.0f, 0.8f, static_cast<std::uint64_t>(i));
+                 height, 0.0f, 0.8f, static_cast<std::uint64_t>(i));
+    s.rows.push_back({.id = 100u + i,
+                      .age_years = 5 + i,
+                      .height_m = height,
+                      .dbh_m = 0.01f * i,
+                      .vigor = 0.8f});
   }
   return s;
 }
@@ -41,7 +50,7 @@ TEST(ForestGltf, EveryTreeIsOneInstanceWithConsistentAccessors) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf") / "forest.glb";
   const ForestGltfSummary summary =
-      exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
+      exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file, kGpu);
   EXPECT_EQ(summary.instances, scene.forest.size());
   const tinygltf::Model model = test::loadGltf(file);
   EXPECT_EQ(model.extensionsRequired, std::vector<std::string>{"EXT_mesh_gpu_instancing"});
@@ -67,10 +76,32 @@ TEST(ForestGltf, EveryTreeIsOneInstanceWithConsistentAccessors) {
   EXPECT_EQ(instances, scene.forest.size());
 }
 
+// Each tree's node (the default) stands where its instance would, with its row's values.
+TEST(ForestGltf, NodesAreTheTreesWithTheirRows) {
+  const Scene scene = smallScene();
+  const auto file = test::freshDirectory("forest_gltf_nodes") / "forest.glb";
+  exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file);
+  const tinygltf::Model model = test::loadGltf(file);
+  EXPECT_TRUE(model.extensionsRequired.empty());
+  std::size_t trees = 0;
+  for (const tinygltf::Node& node : model.nodes) {
+    if (!node.extras.Has("id")) continue;
+    const auto i = static_cast<std::size_t>(node.extras.Get("id").GetNumberAsInt() - 100);
+    ASSERT_LT(i, scene.rows.size());
+    EXPECT_EQ(node.extras.Get("age").GetNumberAsInt(), scene.rows[i].age_years);
+    EXPECT_FLOAT_EQ(static_cast<float>(node.extras.Get("dbh_m").GetNumberAsDouble()),
+                    scene.rows[i].dbh_m);
+    EXPECT_FLOAT_EQ(static_cast<float>(node.translation[1]), scene.forest.position[i].y);
+    EXPECT_FLOAT_EQ(static_cast<float>(node.scale[1]), scene.forest.scaleY[i]);
+    ++trees;
+  }
+  EXPECT_EQ(trees, scene.forest.size());
+}
+
 TEST(ForestGltf, TheTerrainsBoundingBoxIsTheHeightmaps) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf_box") / "forest.gltf";
-  exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
+  exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file, kGpu);
   const tinygltf::Model model = test::loadGltf(file);
   const tinygltf::Mesh& terrain = model.meshes[model.nodes[0].mesh];
   ASSERT_EQ(terrain.name, "terrain");
@@ -92,7 +123,8 @@ TEST(ForestGltf, AllLevelsOfDetailThroughMsftLod) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf_lods") / "forest.glb";
   const ForestGltfSummary summary =
-      exportForest(scene.terrain, test::smallLibrary(), scene.forest, file, kAllLods);
+      exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file,
+                   {.instancing = Instancing::Gpu, .lod = kAllLods});
   const tinygltf::Model model = test::loadGltf(file);
   EXPECT_EQ(model.extensionsUsed,
             (std::vector<std::string>{"EXT_mesh_gpu_instancing", "MSFT_lod"}));
@@ -133,7 +165,7 @@ TEST(ForestGltf, InstanceRotationMatchesTheRenderersYaw) {
   Scene scene = smallScene();
   scene.forest.yaw[0] = 0.7f;
   const auto file = test::freshDirectory("forest_gltf_yaw") / "forest.glb";
-  exportForest(scene.terrain, test::smallLibrary(), scene.forest, file);
+  exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file, kGpu);
   const tinygltf::Model model = test::loadGltf(file);
   for (const tinygltf::Node& node : model.nodes) {
     if (!node.extensions.count("EXT_mesh_gpu_instancing")) continue;

@@ -9,6 +9,7 @@
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "render/scene/forest_export.hpp"
+#include "sim/run/trees_geojson.hpp"
 
 namespace eco {
 namespace {
@@ -21,10 +22,22 @@ struct ExportArgs {
   std::string instancing = "nodes";
 };
 
+// The trees as GeoJSON points in the terrain's coordinates, for GIS tools.
+void exportTreesGeoJson(const ExportArgs& args, const SceneSource& source, int year) {
+  const TreeSnapshot snapshot = readSnapshot(*source.run, year);
+  const Grid& grid = source.terrain.grid;
+  writeTreesGeoJson(args.out, snapshot, grid);
+  std::cout << fmt::format(
+      "{}: year {}, {} trees as points in {}\n", args.out, year, snapshot.trees.size(),
+      grid.epsg != 0 ? fmt::format("EPSG:{}", grid.epsg) : std::string("the map's local metres"));
+}
+
 void runExport(const ExportArgs& args) {
   const std::filesystem::path out(args.out);
-  if (out.extension() != ".glb" && out.extension() != ".gltf")
-    throw InputError({args.out, 0, "--out"}, "the forest is written as .glb or .gltf");
+  const bool geojson = out.extension() == ".geojson";
+  if (out.extension() != ".glb" && out.extension() != ".gltf" && !geojson)
+    throw InputError({args.out, 0, "--out"},
+                     "the forest is written as .glb or .gltf, its trees as .geojson");
   requireOutputFolder(out);
   ForestGltfOptions options;
   options.instancing = args.instancing == "gpu" ? Instancing::Gpu : Instancing::Nodes;
@@ -35,6 +48,7 @@ void runExport(const ExportArgs& args) {
   SceneSource source = openRunSource(args.run);
   const int year = args.year.value_or(source.defaultYear());
   source.requireSnapshot(year);
+  if (geojson) return exportTreesGeoJson(args, source, year);
   const TreeSnapshot snapshot = readSnapshot(*source.run, year);
   source.buildLibrary();
   const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
@@ -55,7 +69,11 @@ void addExportCommand(CLI::App& app) {
       "Write a run's forest of one year as glTF: the terrain and every tree, with its CSV row");
   command->add_option("run", args->run, "A run folder of `ecoforest run`")->required();
   command->add_option("--year", args->year, "Snapshot year (default: the run's last)");
-  command->add_option("--out", args->out, "forest.glb or forest.gltf")->required();
+  command
+      ->add_option("--out", args->out,
+                   "forest.glb or forest.gltf (terrain and trees), or trees.geojson (the trees "
+                   "as points in the terrain's coordinates)")
+      ->required();
   command
       ->add_option(
           "--lod", args->lod,

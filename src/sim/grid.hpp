@@ -12,6 +12,11 @@ struct Grid {
   int height = 0;
   double dx_m = 1.0;  // ground distance between cell centres, east-west
   double dy_m = 1.0;  // and north-south
+  // Where the map lies in a projected coordinate system, when its heightmap said so (a
+  // GeoTIFF, geotiff.hpp): the coordinates of map point (0, 0), the centre of the south-west
+  // cell, and the system's EPSG code. Without one (epsg 0) map coordinates are local metres.
+  double originEast_m = 0.0, originNorth_m = 0.0;
+  int epsg = 0;
 
   std::size_t cellCount() const {
     return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
@@ -37,6 +42,7 @@ using Field = std::vector<float>;
 struct FieldStats {
   double min = 0.0, mean = 0.0, max = 0.0;
 };
+// Over the finite values (NaN marks cells outside the landscape); all zero when none is.
 FieldStats statsOf(const Field& field);
 
 }  // namespace eco

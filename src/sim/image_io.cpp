@@ -39,7 +39,7 @@ void writeAtomically(const std::filesystem::path& file, OIIO::ImageSpec spec, OI
 
 }  // namespace
 
-SingleChannelImage readSingleChannel(const std::filesystem::path& file) {
+SingleChannelImage readSingleChannel(const std::filesystem::path& file, bool nanIsNoData) {
   if (!std::filesystem::exists(file)) throw imageError(file, "no such file");
   auto in = OIIO::ImageInput::open(file.string());
   if (!in) throw imageError(file, "cannot read image: " + OIIO::geterror());
@@ -77,7 +77,8 @@ SingleChannelImage readSingleChannel(const std::filesystem::path& file) {
   }
   image.typeMax = scale;
   for (float& v : image.values) {
-    if (!std::isfinite(v)) throw imageError(file, "the heightmap contains NaN or infinite pixels");
+    if (!std::isfinite(v) && !(nanIsNoData && std::isnan(v)))
+      throw imageError(file, "the heightmap contains NaN or infinite pixels");
     if (scale != 1.0) v = static_cast<float>(std::round(v * scale));
   }
   return image;
@@ -103,6 +104,11 @@ void writeRgb8Image(const std::filesystem::path& file, int width, int height,
 
 void writeRgb8Image(const std::filesystem::path& file, const Image& image) {
   writeRgb8Image(file, image.width, image.height, image.rgb());
+}
+
+void writeRgba8Image(const std::filesystem::path& file, const Image& image) {
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  writeAtomically(file, spec, OIIO::TypeDesc::UINT8, image.rgba.data());
 }
 
 }  // namespace eco

@@ -20,8 +20,9 @@ struct SingleChannelImage {
 
 // Reads a one-channel image. Integer pixel types come back as their stored values
 // (a 16-bit 40000 is 40000.0f): OpenImageIO's normalisation is undone. Unreadable files,
-// several channels, fewer than 2 x 2 pixels and NaN or infinite pixels are InputErrors.
-SingleChannelImage readSingleChannel(const std::filesystem::path& file);
+// several channels, fewer than 2 x 2 pixels and NaN or infinite pixels are InputErrors,
+// except NaN where the file declares NaN its no-data value.
+SingleChannelImage readSingleChannel(const std::filesystem::path& file, bool nanIsNoData = false);
 
 void writeFloatImage(const std::filesystem::path& file, int width, int height, int channels,
                      const std::vector<float>& values);
@@ -31,5 +32,7 @@ void writeRgb8Image(const std::filesystem::path& file, int width, int height,
                     const std::vector<std::uint8_t>& rgb);
 // An RGBA image's colour (alpha dropped), e.g. a rendered frame as PNG.
 void writeRgb8Image(const std::filesystem::path& file, const Image& image);
+// An RGBA image with its alpha.
+void writeRgba8Image(const std::filesystem::path& file, const Image& image);
 
 }  // namespace eco

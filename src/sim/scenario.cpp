@@ -40,6 +40,7 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
       terrain.fail("cell_size_m", "cell size must be a positive number of metres");
   spec.cellDx_m = cell.front();
   spec.cellDy_m = cell.back();
+  if (terrain.has("cell_size_m")) spec.cellSizeAt = terrain.where("cell_size_m");
   if (terrain.has("height_range_m")) {
     auto range = terrain.numbers("height_range_m", 2, {}, {-12000.0, 12000.0});
     if (!(range[1] > range[0]))

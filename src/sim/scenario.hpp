@@ -24,6 +24,7 @@ struct TerrainSpec {
   std::optional<GeneratedTerrain> generate;        // exactly one of the two
   double cellDx_m = 10.0;  // square 10 m cells unless the file says otherwise
   double cellDy_m = cellDx_m;
+  std::optional<SourceLocation> cellSizeAt;        // where cell_size_m was given, if it was
   std::optional<double> heightMin_m, heightMax_m;  // height_range_m
   double baseAltitude_m = 0.0;                     // generated terrain: height of its lowest cell
 };

@@ -1,10 +1,16 @@
 #include "sim/terrain.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "sim/geotiff.hpp"
 #include "sim/image_io.hpp"
 #include "sim/terrain_mesh.hpp"
 
@@ -14,18 +20,91 @@ float Terrain::altitudeAt(double east_m, double north_m) const {
   return altitudeOnTriangles(*this, east_m, north_m);
 }
 
+Field maskOutside(const Terrain& terrain, Field field) {
+  for (std::size_t i = 0; i < terrain.outside.size(); ++i)
+    if (terrain.outside[i]) field[i] = std::numeric_limits<float>::quiet_NaN();
+  return field;
+}
+
+namespace {
+
+bool isTiff(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return extension == ".tif" || extension == ".tiff";
+}
+
+// The outside cells take heights that continue the terrain: layer by layer from the
+// landscape's edge, each the mean of its neighbours already known.
+void fillOutside(Terrain& terrain, const std::filesystem::path& file) {
+  const Grid& g = terrain.grid;
+  std::vector<std::uint8_t> known(g.cellCount());
+  std::vector<std::size_t> front;
+  for (std::size_t i = 0; i < known.size(); ++i) known[i] = !terrain.isOutside(i);
+  if (std::find(known.begin(), known.end(), 1) == known.end())
+    throw InputError({file.string(), 0, ""}, "every pixel of the heightmap is no-data");
+  const std::array<std::pair<int, int>, 4> steps{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}};
+  for (bool grew = true; grew;) {
+    grew = false;
+    front.clear();
+    for (int y = 0; y < g.height; ++y)
+      for (int x = 0; x < g.width; ++x) {
+        if (known[g.index(x, y)]) continue;
+        double sum = 0.0;
+        int count = 0;
+        for (auto [ox, oy] : steps)
+          if (g.contains(x + ox, y + oy) && known[g.index(x + ox, y + oy)])
+            sum += terrain.heightAt(x + ox, y + oy), ++count;
+        if (count == 0) continue;
+        terrain.height_m[g.index(x, y)] = static_cast<float>(sum / count);
+        front.push_back(g.index(x, y));
+      }
+    // A layer becomes known only once it is complete, so the fill does not depend on the
+    // order cells are visited in.
+    for (std::size_t i : front) known[i] = 1;
+    grew = !front.empty();
+  }
+}
+
+}  // namespace
+
 Terrain readHeightmap(const std::filesystem::path& file, double dx_m, double dy_m,
-                      std::optional<double> heightMin_m, std::optional<double> heightMax_m) {
-  SingleChannelImage image = readSingleChannel(file);
+                      std::optional<double> heightMin_m, std::optional<double> heightMax_m,
+                      const std::optional<SourceLocation>& cellSizeAt) {
+  const GeoTiffTags tags = isTiff(file) ? readGeoTiffTags(file) : GeoTiffTags{};
+  const bool nanNoData = tags.noData && std::isnan(*tags.noData);
+  SingleChannelImage image = readSingleChannel(file, nanNoData);
   Terrain terrain;
   terrain.grid = Grid{image.width, image.height, dx_m, dy_m};
+  if (tags.georeferenced) {
+    for (auto [given, fromFile] : {std::pair{dx_m, tags.pixelWidth_m}, {dy_m, tags.pixelHeight_m}})
+      if (cellSizeAt && std::abs(given - fromFile) > 0.01 * fromFile)
+        throw InputError(
+            *cellSizeAt,
+            fmt::format("the scenario's cell size {:g} m disagrees with the "
+                        "pixel size {:g} x {:g} m of {}: drop cell_size_m to use "
+                        "the file's",
+                        given, tags.pixelWidth_m, tags.pixelHeight_m, file.filename().string()));
+    placeGrid(tags, terrain.grid);
+  }
   terrain.height_m = std::move(image.values);
+  if (tags.noData) {
+    const float noData = static_cast<float>(*tags.noData);
+    terrain.outside.assign(terrain.height_m.size(), 0);
+    for (std::size_t i = 0; i < terrain.height_m.size(); ++i)
+      terrain.outside[i] =
+          nanNoData ? std::isnan(terrain.height_m[i]) : terrain.height_m[i] == noData;
+    if (std::find(terrain.outside.begin(), terrain.outside.end(), 1) == terrain.outside.end())
+      terrain.outside.clear();
+  }
   if (heightMin_m && heightMax_m) {
     // Integer images: 0 .. maximum of the file's type; float images: 0 .. 1.
     const double top = image.typeMax;
     const double lo = *heightMin_m, span = *heightMax_m - *heightMin_m;
     for (float& h : terrain.height_m) h = static_cast<float>(lo + span * (h / top));
   }
+  if (!terrain.outside.empty()) fillOutside(terrain, file);
   return terrain;
 }
 
@@ -77,7 +156,7 @@ Terrain loadTerrain(const Scenario& scenario) {
     return generateMidpoint(*spec.generate, spec.cellDx_m, spec.cellDy_m, spec.baseAltitude_m,
                             scenario.seed);
   return readHeightmap(*spec.heightmap, spec.cellDx_m, spec.cellDy_m, spec.heightMin_m,
-                       spec.heightMax_m);
+                       spec.heightMax_m, spec.cellSizeAt);
 }
 
 void writeHeightmap16(const Terrain& terrain, const std::filesystem::path& file, double lo_m,

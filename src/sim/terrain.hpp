@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <vector>
 
 #include "sim/grid.hpp"
 #include "sim/scenario.hpp"
@@ -13,6 +15,12 @@ namespace eco {
 struct Terrain {
   Grid grid;
   Field height_m;  // altitude above sea level of each cell centre
+  // Cells outside the landscape (a GeoTIFF's no-data pixels; empty when there are none):
+  // nothing grows there and conditions there are NaN. Their heights continue the terrain
+  // around them, so that rays and slopes next to them see no cliff.
+  std::vector<std::uint8_t> outside;
+
+  bool isOutside(std::size_t cell) const { return !outside.empty() && outside[cell] != 0; }
 
   float heightAt(int x, int y) const { return height_m[grid.index(x, y)]; }
   // Altitude at a map position (Grid::cellAt) on the terrain's triangles (terrain_mesh.hpp),
@@ -20,14 +28,20 @@ struct Terrain {
   float altitudeAt(double east_m, double north_m) const;
 };
 
+// A field with NaN at the outside cells, as maps show it.
+Field maskOutside(const Terrain& terrain, Field field);
+
 // The scenario's terrain: its heightmap or its generated relief. Errors name the scenario.
 Terrain loadTerrain(const Scenario& scenario);
 
 // Integer images map 0 .. the type's maximum onto [heightMin, heightMax] when a range is
 // given, else their stored values are metres; float images are metres, or map [0, 1] onto
-// the range when one is given.
+// the range when one is given. A GeoTIFF (geotiff.hpp) places the grid: its pixel size is
+// the cell size unless `cellSizeAt` (where the scenario gave one) disagrees by more than
+// 1 %, an InputError there; its no-data pixels are the terrain's outside cells.
 Terrain readHeightmap(const std::filesystem::path& file, double dx_m, double dy_m,
-                      std::optional<double> heightMin_m, std::optional<double> heightMax_m);
+                      std::optional<double> heightMin_m, std::optional<double> heightMax_m,
+                      const std::optional<SourceLocation>& cellSizeAt = {});
 
 // Diamond-square midpoint displacement on size x size cells (size = 2^n + 1); every point's
 // random offset is keyed by (seed, x, y), so the result does not depend on evaluation

@@ -2,6 +2,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "gdal_tools.hpp"
+#include "sim/grid.hpp"
+#include "sim/image_io.hpp"
+#include "sim/run/run_format.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -70,6 +74,79 @@ TEST(RunCommand, BadInputIsExitTwo) {
             std::string::npos)
       << missing.output;
   EXPECT_EQ(run("run --years 0").exitCode, 2);
+}
+
+// A GeoTIFF as a GIS writes it, 8 m pixels in ETRS89 / UTM 32N with -9999 as no-data in
+// its north-west corner: the run uses 8 m cells, plants nothing on no-data, and every map
+// and the exported trees are where the heightmap was, as GDAL reads them.
+TEST(RunCommand, AGeoTiffHeightmapIsGeoreferencedFromInputToOutputs) {
+  if (!eco::test::gdalInstalled())
+    GTEST_SKIP() << "gdal-bin is not installed (scripts/test installs it)";
+  const auto dir = eco::test::freshDirectory("app_run_geotiff");
+  constexpr int kWidth = 48, kHeight = 40;
+  constexpr double kWest = 612000.0, kNorth = 5230000.0;
+  std::vector<float> heights(kWidth * kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      heights[y * kWidth + x] = x < 12 && y < 10 ? -9999.0f : 500.0f + 1.5f * x + 0.5f * y;
+  eco::writeFloatImage(dir / "raw.tif", kWidth, kHeight, 1, heights);
+  eco::test::gdalGeoreference(dir / "raw.tif", dir / "dem.tif", 25832, kWest, kNorth, 8.0, kWidth,
+                              kHeight, -9999.0);
+  const std::string species = std::string(ECOFOREST_DATA_DIR) + "/species/beech.toml";
+  eco::test::writeFile(dir / "geo.toml",
+                       "name = \"geo\"\n[terrain]\nheightmap = \"dem.tif\"\n"
+                       "[[species]]\nfile = \"" +
+                           species + "\"\nseed_rain_per_ha_per_year = 3000\n");
+  const auto out = dir / "run";
+  CommandResult r = run("run " + (dir / "geo.toml").string() + " --years 4 --out " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+
+  const nlohmann::json conditions =
+      nlohmann::json::parse(eco::test::readFile(out / "conditions.json"));
+  EXPECT_EQ(conditions["grid"]["cell_dx_m"], 8.0);
+  EXPECT_EQ(conditions["grid"]["epsg"], 25832);
+  const eco::TreeSnapshot trees = eco::readTreesCsv(out / "trees" / "year_0004.csv");
+  ASSERT_GT(trees.trees.size(), 100u);
+  const eco::Grid grid{kWidth, kHeight, 8.0, 8.0};
+  for (const eco::TreeRow& tree : trees.trees) {
+    const long cell = grid.cellAt(tree.east_m, tree.north_m);
+    ASSERT_GE(cell, 0);
+    EXPECT_FALSE(cell % kWidth < 12 && cell / kWidth < 10) << "a tree on no-data: " << tree.id;
+  }
+  std::size_t maps = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(out / "maps")) {
+    const std::string name = entry.path().filename().string();
+    if (name.ends_with("_legend.png") ||
+        (entry.path().extension() != ".tif" && entry.path().extension() != ".png"))
+      continue;
+    SCOPED_TRACE(name);
+    const nlohmann::json info = eco::test::gdalInfo(entry.path());
+    EXPECT_EQ(info["geoTransform"], nlohmann::json::array({kWest, 8.0, 0.0, kNorth, 0.0, -8.0}));
+    EXPECT_EQ(eco::test::gdalEpsg(info), 25832);
+    ++maps;
+  }
+  EXPECT_EQ(maps, 2u * 8u);  // six conditions, a suitability and the canopy height
+
+  CommandResult exported =
+      run("export " + out.string() + " --out " + (dir / "trees.geojson").string());
+  ASSERT_EQ(exported.exitCode, 0) << exported.output;
+  EXPECT_NE(exported.output.find("EPSG:25832"), std::string::npos) << exported.output;
+  CommandResult ogr = eco::test::runCommand("ogrinfo -ro -so " + (dir / "trees.geojson").string() +
+                                            " trees_year_0004");
+  EXPECT_NE(ogr.output.find(fmt::format("Feature Count: {}", trees.trees.size())),
+            std::string::npos)
+      << ogr.output;
+  EXPECT_NE(ogr.output.find("ID[\"EPSG\",25832]"), std::string::npos) << ogr.output;
+
+  // A cell size that disagrees with the file's pixels is refused where it is written.
+  eco::test::writeFile(dir / "bad.toml",
+                       "name = \"bad\"\n[terrain]\nheightmap = \"dem.tif\"\n"
+                       "cell_size_m = 10\n[[species]]\nfile = \"" +
+                           species + "\"\n");
+  CommandResult bad =
+      run("run " + (dir / "bad.toml").string() + " --years 1 --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("bad.toml:4: terrain.cell_size_m"), std::string::npos) << bad.output;
 }
 
 }  // namespace

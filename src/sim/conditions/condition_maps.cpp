@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "sim/geotiff.hpp"
 #include "sim/image_io.hpp"
 #include "sim/run/run_format.hpp"
 
@@ -59,30 +60,43 @@ const std::vector<Stop>& rampFor(const std::string& field) {
   return sunniness;
 }
 
-void writeLegendedPng(const std::filesystem::path& file, const Field& values, const Grid& grid,
-                      const std::string& name, const std::string& unit, FieldStats stats) {
-  // Fixed ranges for bounded fields, the data's range otherwise.
-  double lo = stats.min, hi = stats.max;
-  if (unit == "0-1") lo = 0.0, hi = 1.0;
-  if (name == "aspect") lo = 0.0, hi = 360.0;
+// The range a map's colours span: fixed for bounded fields, the data's otherwise.
+std::pair<double, double> rampRange(const std::string& name, const std::string& unit,
+                                    FieldStats stats) {
+  if (unit == "0-1") return {0.0, 1.0};
+  if (name == "aspect") return {0.0, 360.0};
+  return {stats.min, stats.max};
+}
+
+// The map alone, one pixel per cell, so that its world file places it; cells outside the
+// landscape (NaN) are transparent.
+void writeMapPng(const std::filesystem::path& file, const Field& values, const Grid& grid,
+                 const std::string& name, std::pair<double, double> range) {
+  const auto [lo, hi] = range;
   const double span = hi > lo ? hi - lo : 1.0;
-  const int width = std::max(grid.width, 160);
-  OIIO::ImageBuf image(
-      OIIO::ImageSpec(width, grid.height + kLegendHeight, 3, OIIO::TypeDesc::UINT8));
-  OIIO::ImageBufAlgo::fill(image, {0.12f, 0.12f, 0.12f});
+  Image image(grid.width, grid.height);
   for (int y = 0; y < grid.height; ++y)
     for (int x = 0; x < grid.width; ++x) {
-      float v = values[grid.index(x, y)];
-      glm::vec3 c =
+      const float v = values[grid.index(x, y)];
+      if (std::isnan(v)) continue;  // Image starts transparent
+      const glm::vec3 c =
           (name == "aspect" && v < 0.0f) ? glm::vec3(0.5f) : rampColor(name, (v - lo) / span);
-      float rgb[3] = {c.r, c.g, c.b};
-      image.setpixel(x, y, rgb);
+      image.set(x, y, glm::vec4(c, 1.0f));
     }
-  // Legend: the ramp from lo to hi, then its end values and unit.
-  const int barTop = grid.height + 4, barBottom = grid.height + 14;
-  for (int y = barTop; y < barBottom; ++y)
-    for (int x = 4; x < width - 4; ++x) {
-      glm::vec3 c = rampColor(name, static_cast<double>(x - 4) / (width - 9));
+  writeRgba8Image(file, image);
+}
+
+// The legend beside the map: the ramp from its low to its high end, with their values and
+// the unit.
+void writeLegendPng(const std::filesystem::path& file, const std::string& name,
+                    const std::string& unit, std::pair<double, double> range) {
+  constexpr int kWidth = 256;
+  const auto [lo, hi] = range;
+  OIIO::ImageBuf image(OIIO::ImageSpec(kWidth, kLegendHeight, 3, OIIO::TypeDesc::UINT8));
+  OIIO::ImageBufAlgo::fill(image, {0.12f, 0.12f, 0.12f});
+  for (int y = 4; y < 14; ++y)
+    for (int x = 4; x < kWidth - 4; ++x) {
+      glm::vec3 c = rampColor(name, static_cast<double>(x - 4) / (kWidth - 9));
       float rgb[3] = {c.r, c.g, c.b};
       image.setpixel(x, y, rgb);
     }
@@ -90,17 +104,15 @@ void writeLegendedPng(const std::filesystem::path& file, const Field& values, co
   // DejaVu Sans comes with Debian's fonts-dejavu-core (scripts/setup installs it); without
   // a font the legend keeps its bar and conditions.json holds the numbers.
   const char* font = "DejaVuSans";
-  OIIO::ImageBufAlgo::render_text(image, 4, grid.height + 29, fmt::format("{:.4g}", lo), 13, font,
-                                  white);
+  OIIO::ImageBufAlgo::render_text(image, 4, 29, fmt::format("{:.4g}", lo), 13, font, white);
   OIIO::ImageBufAlgo::render_text(
-      image, width - 4, grid.height + 29,
+      image, kWidth - 4, 29,
       unit == "0-1" ? fmt::format("{:.4g}", hi) : fmt::format("{:.4g} {}", hi, unit), 13, font,
       white, OIIO::ImageBufAlgo::TextAlignX::Right);
   image.geterror();  // a missing font is not an error worth failing the run for
-  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * (grid.height + kLegendHeight) *
-                                3);
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(kWidth) * kLegendHeight * 3);
   image.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, rgb.data());
-  writeRgb8Image(file, width, grid.height + kLegendHeight, rgb);
+  writeRgb8Image(file, kWidth, kLegendHeight, rgb);
 }
 
 }  // namespace
@@ -119,7 +131,12 @@ FieldStats writeFieldMap(const std::filesystem::path& folder, const std::string&
                          const std::string& unit, const Field& values, const Grid& grid) {
   FieldStats stats = statsOf(values);
   writeFloatImage(folder / (name + ".exr"), grid.width, grid.height, 1, values);
-  writeLegendedPng(folder / (name + ".png"), values, grid, name, unit, stats);
+  writeGeoTiff(folder / (name + ".tif"), grid, values);
+  const std::pair<double, double> range = rampRange(name, unit, stats);
+  const std::filesystem::path png = folder / (name + ".png");
+  writeMapPng(png, values, grid, name, range);
+  writeImageGeoreference(png, grid);
+  writeLegendPng(folder / (name + "_legend.png"), name, unit, range);
   return stats;
 }
 
@@ -137,6 +154,10 @@ void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport
                   {"height", fields.grid.height},
                   {"cell_dx_m", fields.grid.dx_m},
                   {"cell_dy_m", fields.grid.dy_m},
+                  // Map coordinates (0, 0) in the projected system; EPSG 0: local metres.
+                  {"origin_east_m", fields.grid.originEast_m},
+                  {"origin_north_m", fields.grid.originNorth_m},
+                  {"epsg", fields.grid.epsg},
                   {"area_km2", fields.grid.area_m2() / 1e6}};
   for (const FieldInfo& info : conditionFieldInfo()) {
     const Field& values = fields.*info.field;

@@ -1,5 +1,8 @@
-// What `ecoforest conditions` writes: maps/<field>.exr (raw floats), maps/<field>.png
-// (colour-mapped, with a legend strip giving the range and unit) and conditions.json.
+// What `ecoforest conditions` writes: maps/<field>.exr (raw floats), maps/<field>.tif (the
+// same floats as a georeferenced GeoTIFF), maps/<field>.png (colour-mapped, one pixel per
+// cell, placed by its world file <field>.pgw and, with a known coordinate system,
+// <field>.png.aux.xml), maps/<field>_legend.png (the colour ramp with
+// its range and unit) and conditions.json.
 #pragma once
 
 #include <filesystem>
@@ -12,7 +15,7 @@ namespace eco {
 // RGB of a field value on the field's colour ramp; t in [0, 1].
 glm::vec3 rampColor(const std::string& field, double t);
 
-// One map: <folder>/<name>.exr and <name>.png with its legend. Names pick the colour ramp
+// One map: <folder>/<name>.exr, .tif, .png with .pgw, and _legend.png. Names pick the colour ramp
 // (a condition's, "suitability_*" or "canopy_height"); unit "0-1" fixes the range to [0, 1].
 FieldStats writeFieldMap(const std::filesystem::path& folder, const std::string& name,
                          const std::string& unit, const Field& values, const Grid& grid);

@@ -50,6 +50,9 @@ ConditionFields computeConditions(const Terrain& terrain, const Climate& climate
                      });
   });
   fields.openFlatSunniness = 1.0 / parts.best;
+  // Outside the landscape (a GeoTIFF's no-data) there are no conditions.
+  for (const FieldInfo& info : conditionFieldInfo())
+    fields.*info.field = maskOutside(terrain, std::move(fields.*info.field));
   if (report) {
     report->sunRays = parts.rays;
     report->sunRaysPerSecond = sunMs > 0.0 ? parts.rays / (sunMs / 1000.0) : 0.0;

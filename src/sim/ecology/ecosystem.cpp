@@ -28,8 +28,10 @@ constexpr double kLitterLight = 0.5;
 
 Field terrainLightOf(const ConditionFields& fields) {
   Field light(fields.sunniness.size());
+  // Outside the landscape (no-data cells, whose conditions are NaN) the sky is open.
   for (std::size_t c = 0; c < light.size(); ++c)
-    light[c] = static_cast<float>(fields.terrainLight(c));
+    light[c] =
+        std::isfinite(fields.sunniness[c]) ? static_cast<float>(fields.terrainLight(c)) : 1.0f;
   return light;
 }
 
@@ -297,7 +299,7 @@ void Ecosystem::establish() {
       const double east = originEast + (x + 0.5) * kRegenerationCell_m;
       const double north = originNorth + (y + 0.5) * kRegenerationCell_m;
       const long cell = g.cellAt(east, north);
-      if (cell < 0) continue;
+      if (cell < 0 || terrain_.isOutside(static_cast<std::size_t>(cell))) continue;
       const double ground = light_.groundLightAt(east, north);
       const bool litter = ground < kLitterLight * light_.skyLightAt(east, north);
       double total = 0.0;

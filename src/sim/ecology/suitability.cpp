@@ -1,6 +1,7 @@
 #include "sim/ecology/suitability.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <tbb/parallel_for.h>
 
@@ -29,8 +30,10 @@ Field siteSuitability(const ToleranceCurves& tolerance, const ConditionFields& f
                       SuitabilityRule rule) {
   Field result(fields.grid.cellCount());
   tbb::parallel_for(std::size_t{0}, result.size(), [&](std::size_t cell) {
-    result[cell] = static_cast<float>(
-        combineSuitabilities(conditionSuitabilities(tolerance, fields, cell), rule));
+    const double suitability =
+        combineSuitabilities(conditionSuitabilities(tolerance, fields, cell), rule);
+    // NaN conditions: a cell outside the landscape, where nothing grows.
+    result[cell] = std::isfinite(suitability) ? static_cast<float>(suitability) : 0.0f;
   });
   return result;
 }

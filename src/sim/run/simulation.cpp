@@ -112,9 +112,11 @@ void plantStands(Ecosystem& ecosystem, const Scenario& scenario, const std::vect
     const Planting& planting = scenario.planting[k];
     const double width = g.width * g.dx_m, height = g.height * g.dy_m;
     for (double north = 0.5 * planting.spacing_m; north < height; north += planting.spacing_m)
-      for (double east = 0.5 * planting.spacing_m; east < width; east += planting.spacing_m)
-        ecosystem.plantSapling(species[k], east - 0.5 * g.dx_m, north - 0.5 * g.dy_m,
-                               planting.height_m);
+      for (double east = 0.5 * planting.spacing_m; east < width; east += planting.spacing_m) {
+        const double e = east - 0.5 * g.dx_m, n = north - 0.5 * g.dy_m;
+        if (ecosystem.terrain().isOutside(static_cast<std::size_t>(g.cellAt(e, n)))) continue;
+        ecosystem.plantSapling(species[k], e, n, planting.height_m);
+      }
   }
 }
 
@@ -206,8 +208,8 @@ RunSummary runSimulation(const RunOptions& options) {
     writeConditionOutputs(fields, report, scenario, summary.folder);
     plantStands(ecosystem, scenario, planted);
     for (const EcosystemSpecies& s : ecosystem.species())
-      writeFieldMap(run.mapsFolder(), "suitability_" + s.species.name, "0-1", s.suitability,
-                    terrain.grid);
+      writeFieldMap(run.mapsFolder(), "suitability_" + s.species.name, "0-1",
+                    maskOutside(terrain, s.suitability), terrain.grid);
   }
   summary.lastYear = ecosystem.year();
   summary.meanSite = meanSiteOf(fields);
@@ -242,7 +244,8 @@ RunSummary runSimulation(const RunOptions& options) {
   summary.simulationSeconds = secondsSince(start);
   summary.counts = countsOf(ecosystem, fields);
   if (!summary.interrupted)
-    writeFieldMap(run.mapsFolder(), "canopy_height", "m", canopyHeight(ecosystem), terrain.grid);
+    writeFieldMap(run.mapsFolder(), "canopy_height", "m",
+                  maskOutside(terrain, canopyHeight(ecosystem)), terrain.grid);
   writeRunJson(run, runRecord(scenario, options, fingerprint, summary,
                               summary.interrupted ? "interrupted" : "complete"));
   return summary;

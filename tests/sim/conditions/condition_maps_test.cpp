@@ -7,6 +7,20 @@
 #include "test_files.hpp"
 
 namespace eco {
+namespace {
+
+// Width and height from a PNG's header chunk.
+std::pair<int, int> pngSize(const std::filesystem::path& file) {
+  const std::string bytes = test::readFile(file);
+  auto big = [&](std::size_t at) {
+    int v = 0;
+    for (std::size_t i = at; i < at + 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[i]);
+    return v;
+  };
+  return bytes.size() > 24 ? std::make_pair(big(16), big(20)) : std::make_pair(0, 0);
+}
+
+}  // namespace
 
 TEST(ConditionMaps, WritesRawFloatsColourMapsAndSummary) {
   auto dir = test::freshDirectory("maps");
@@ -19,7 +33,13 @@ TEST(ConditionMaps, WritesRawFloatsColourMapsAndSummary) {
   for (const FieldInfo& info : conditionFieldInfo()) {
     SingleChannelImage raw = readSingleChannel(dir / "maps" / (std::string(info.name) + ".exr"));
     EXPECT_EQ(raw.values, f.*info.field) << info.name;
-    EXPECT_TRUE(std::filesystem::exists(dir / "maps" / (std::string(info.name) + ".png")));
+    // The same floats georeferenced, and a preview of one pixel per cell with its world file
+    // and its legend beside it.
+    const std::string stem = (dir / "maps" / info.name).string();
+    EXPECT_EQ(readSingleChannel(stem + ".tif").values, f.*info.field) << info.name;
+    EXPECT_EQ(pngSize(stem + ".png"), std::make_pair(f.grid.width, f.grid.height));
+    EXPECT_TRUE(std::filesystem::exists(stem + ".pgw"));
+    EXPECT_TRUE(std::filesystem::exists(stem + "_legend.png"));
   }
   nlohmann::json summary = nlohmann::json::parse(test::readFile(dir / "conditions.json"));
   EXPECT_EQ(summary["grid"]["width"], 33);

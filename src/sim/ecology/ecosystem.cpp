@@ -108,7 +108,8 @@ std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   Rng rng(streamKey(settings_.seed, p.id[i], purpose("growth factor")));
   p.growthFactor[i] =
       static_cast<float>(1.0 - kGrowthFactorSpread * std::min(std::abs(rng.normal()), 3.0));
-  p.variantSeed[i] = streamKey(settings_.seed, p.id[i], purpose("variant"));
+  p.variantSeed[i] =
+      static_cast<std::uint32_t>(streamKey(settings_.seed, p.id[i], purpose("variant")) >> 32);
   p.stressYears[i] = 0;
   p.alive[i] = 1;
   return i;

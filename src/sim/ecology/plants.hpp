@@ -22,7 +22,9 @@ struct Plants {
   std::vector<float> vigor;                // 0..1, this year's
   std::vector<float> light;                // fraction of open-sky light at the crown top
   std::vector<float> growthFactor;         // the individual's lasting growth rate, about 1
-  std::vector<std::uint64_t> variantSeed;  // the tree model's individual seed
+  // The tree model's individual seed: 32 bits, which spreadsheets, R and JavaScript hold
+  // exactly (their numbers are doubles).
+  std::vector<std::uint32_t> variantSeed;
   std::vector<std::uint16_t> stressYears;  // a sapling's poor years in a row
   std::vector<std::uint8_t> alive;
 

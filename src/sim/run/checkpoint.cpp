@@ -15,7 +15,8 @@ namespace eco {
 namespace {
 
 constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
-constexpr std::uint32_t kFormatVersion = 3;  // 2: block checksum; 3: growth factor, stand measures
+// 2: block checksum; 3: growth factor, stand measures; 4: 32-bit variant seeds
+constexpr std::uint32_t kFormatVersion = 4;
 constexpr std::size_t kChecksumBlock = std::size_t{1} << 20;
 
 // FNV-1a of each 1 MiB block (in parallel: a checkpoint is written every year and can be

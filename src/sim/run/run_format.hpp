@@ -63,7 +63,7 @@ struct TreeRow {
   double east_m = 0.0, north_m = 0.0, ground_m = 0.0;
   int age_years = 0;
   float height_m = 0.0f, crownRadius_m = 0.0f, crownBase_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
-  std::uint64_t variantSeed = 0;
+  std::uint32_t variantSeed = 0;
 };
 
 struct TreeSnapshot {

@@ -1,7 +1,6 @@
 #include "sim/run/simulation.hpp"
 
 #include <chrono>
-#include <numeric>
 
 #include <fmt/format.h>
 #include <tbb/info.h>
@@ -59,11 +58,7 @@ std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem, const ConditionFi
 
 std::vector<double> meanSiteOf(const ConditionFields& fields) {
   std::vector<double> means;
-  for (const FieldInfo& f : conditionFieldInfo()) {
-    const Field& field = fields.*f.field;
-    means.push_back(std::accumulate(field.begin(), field.end(), 0.0) /
-                    static_cast<double>(field.size()));
-  }
+  for (const FieldInfo& f : conditionFieldInfo()) means.push_back(statsOf(fields.*f.field).mean);
   return means;
 }
 

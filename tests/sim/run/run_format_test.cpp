@@ -22,7 +22,7 @@ TEST(RunFormat, ReadsATreesFileAndNumbersSpeciesInOrderOfAppearance) {
                             "7,pine,10.500,20.250,412.000,12,6.500,1.200,2.500,0.0800,0.900,123\n"
                             "9,beech,1.000,2.000,400.000,3,0.400,0.100,0.000,0.0000,1.000,5\n"
                             "11,pine,3.000,4.000,401.000,40,20.000,3.000,12.000,0.3000,0.500,"
-                            "18446744073709551615\n");
+                            "4294967295\n");
   const TreeSnapshot s = readTreesCsv(file);
   ASSERT_EQ(s.trees.size(), 3u);
   EXPECT_EQ(s.speciesNames, (std::vector<std::string>{"pine", "beech"}));
@@ -33,7 +33,12 @@ TEST(RunFormat, ReadsATreesFileAndNumbersSpeciesInOrderOfAppearance) {
   EXPECT_FLOAT_EQ(s.trees[0].crownBase_m, 2.5f);
   EXPECT_EQ(s.trees[1].species, 1);
   EXPECT_EQ(s.trees[2].species, 0);
-  EXPECT_EQ(s.trees[2].variantSeed, 18446744073709551615ull);
+  EXPECT_EQ(s.trees[2].variantSeed, 4294967295u);  // 32 bits, exact in a spreadsheet
+  // A seed beyond 32 bits is not one ecoforest wrote.
+  test::writeFile(file, std::string(kHeader) +
+                            "7,pine,10.500,20.250,412.000,12,6.500,1.200,2.500,0.0800,0.900,"
+                            "4294967296\n");
+  EXPECT_THROW(readTreesCsv(file), InputError);
 }
 
 TEST(RunFormat, AMalformedTreesFileNamesTheLine) {

@@ -10,7 +10,9 @@ namespace eco {
 std::filesystem::path dataDirectory();
 
 // "beech" -> <data>/species/beech.toml; a path (with a '/' or ending in .toml) is used as
-// given. Unknown names are an InputError listing the species that exist.
+// given. Names match ignoring case ("Beech"), and a species also by the common names its
+// file lists ("hazel" -> shrub.toml). Unknown names are an InputError with a "did you
+// mean" for a near miss, listing the species that exist.
 std::filesystem::path resolveSpecies(const std::string& nameOrPath);
 // "valley" -> <data>/valley.toml, likewise.
 std::filesystem::path resolveScenario(const std::string& nameOrPath);

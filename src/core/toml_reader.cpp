@@ -134,6 +134,22 @@ std::vector<double> TomlTable::numberList(std::string_view key,
   return values;
 }
 
+std::vector<std::string> TomlTable::stringList(std::string_view key,
+                                               std::vector<std::string> fallback) {
+  if (!has(key)) {
+    used_.emplace(key);
+    return fallback;
+  }
+  const toml::array* array = require(key).as_array();
+  if (array == nullptr) fail(key, "expected an array of strings");
+  std::vector<std::string> values;
+  for (const toml::node& element : *array) {
+    if (!element.is_string()) fail(key, "expected an array of strings");
+    values.push_back(*element.value<std::string>());
+  }
+  return values;
+}
+
 Polyline TomlTable::polyline(std::string_view key, Range range) {
   const toml::node& node = require(key);
   const toml::array* array = node.as_array();

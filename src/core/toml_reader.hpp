@@ -53,6 +53,8 @@ class TomlTable {
   std::vector<double> numberList(std::string_view key,
                                  std::optional<std::vector<double>> fallback = {},
                                  Range range = {});
+  // An array of strings (possibly empty), or `fallback` when the key is absent.
+  std::vector<std::string> stringList(std::string_view key, std::vector<std::string> fallback);
   // [[x0, y0], [x1, y1], ...] with non-decreasing x and y inside `range`.
   Polyline polyline(std::string_view key, Range range = {});
   std::optional<TomlTable> table(std::string_view key);

@@ -125,6 +125,7 @@ Species loadSpecies(const std::filesystem::path& file) {
   species.file = file;
   species.name = root.string("name");
   species.latinName = root.string("latin_name", "");
+  species.commonNames = root.stringList("common_names", {});
 
   const std::string generator = root.string("generator", "strand");
   if (generator == "lsystem") {

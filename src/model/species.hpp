@@ -86,6 +86,7 @@ struct LSystemTree {
 struct Species {
   std::string name;
   std::string latinName;
+  std::vector<std::string> commonNames;  // other names it is called by ("hazel")
   std::filesystem::path file;
   TreeGenerator generator = TreeGenerator::Strand;
   StrandParams strand;  // the strand model's parameters; defaults for L-system species

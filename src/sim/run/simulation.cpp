@@ -8,6 +8,7 @@
 
 #include "core/binary_io.hpp"
 #include "core/error.hpp"
+#include "core/names.hpp"
 #include "sim/conditions/condition_maps.hpp"
 #include "sim/ecology/suitability.hpp"
 #include "sim/run/checkpoint.hpp"
@@ -90,11 +91,18 @@ std::vector<int> plantedSpecies(const Scenario& scenario,
                                 const std::vector<EcosystemSpecies>& all) {
   std::vector<int> indices;
   for (const Planting& planting : scenario.planting) {
+    // A species by its name or a common name, ignoring case.
+    std::vector<std::string> names;
     const auto found = std::find_if(all.begin(), all.end(), [&](const EcosystemSpecies& s) {
-      return s.species.name == planting.species;
+      names.push_back(s.species.name);
+      if (sameNameIgnoringCase(s.species.name, planting.species)) return true;
+      return std::any_of(
+          s.species.commonNames.begin(), s.species.commonNames.end(),
+          [&](const std::string& n) { return sameNameIgnoringCase(n, planting.species); });
     });
     if (found == all.end())
-      throw InputError(planting.where, "no species '" + planting.species + "' in the scenario");
+      throw InputError(planting.where, "no species '" + planting.species + "' in the scenario" +
+                                           didYouMean(planting.species, names));
     indices.push_back(static_cast<int>(found - all.begin()));
   }
   return indices;

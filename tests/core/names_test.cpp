@@ -1,0 +1,29 @@
+#include "core/names.hpp"
+
+#include <gtest/gtest.h>
+
+namespace eco {
+
+TEST(Names, CaseIsIgnored) {
+  EXPECT_TRUE(sameNameIgnoringCase("Beech", "beech"));
+  EXPECT_FALSE(sameNameIgnoringCase("beech", "beeches"));
+}
+
+TEST(Names, EditDistanceCountsInsertionsDeletionsAndSubstitutions) {
+  EXPECT_EQ(editDistance("kitten", "sitting"), 3u);  // the textbook example
+  EXPECT_EQ(editDistance("", "pine"), 4u);
+  EXPECT_EQ(editDistance("Pine", "pine"), 0u);
+  EXPECT_EQ(editDistance("valey", "valley"), 1u);
+  EXPECT_EQ(editDistance("mapel", "maple"), 1u);  // a swap is one slip of the fingers
+}
+
+TEST(Names, OnlyANearMissIsSuggested) {
+  const std::vector<std::string> names{"beech", "birch", "maple", "pine"};
+  EXPECT_EQ(closestName("beeh", names), "beech");
+  EXPECT_EQ(closestName("mapel", names), "maple");
+  EXPECT_EQ(closestName("oak", names), std::nullopt);
+  EXPECT_EQ(didYouMean("pne", names), ": did you mean 'pine'?");
+  EXPECT_EQ(didYouMean("baobab", names), "");
+}
+
+}  // namespace eco

@@ -20,11 +20,20 @@ struct ExportArgs {
   std::string out;
   std::string lod = "1";
   std::string instancing = "nodes";
+  double minHeight_m = 0.0;
 };
+
+// The snapshot's plants at least --min-height tall.
+TreeSnapshot snapshotToExport(const ExportArgs& args, const SceneSource& source, int year) {
+  TreeSnapshot snapshot = readSnapshot(*source.run, year);
+  std::erase_if(snapshot.trees,
+                [&](const TreeRow& tree) { return tree.height_m < args.minHeight_m; });
+  return snapshot;
+}
 
 // The trees as GeoJSON points in the terrain's coordinates, for GIS tools.
 void exportTreesGeoJson(const ExportArgs& args, const SceneSource& source, int year) {
-  const TreeSnapshot snapshot = readSnapshot(*source.run, year);
+  const TreeSnapshot snapshot = snapshotToExport(args, source, year);
   const Grid& grid = source.terrain.grid;
   writeTreesGeoJson(args.out, snapshot, grid);
   std::cout << fmt::format(
@@ -49,7 +58,7 @@ void runExport(const ExportArgs& args) {
   const int year = args.year.value_or(source.defaultYear());
   source.requireSnapshot(year);
   if (geojson) return exportTreesGeoJson(args, source, year);
-  const TreeSnapshot snapshot = readSnapshot(*source.run, year);
+  const TreeSnapshot snapshot = snapshotToExport(args, source, year);
   source.buildLibrary();
   const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
   const ForestGltfSummary summary =
@@ -86,6 +95,11 @@ void addExportCommand(CLI::App& app) {
                    "importer); gpu: EXT_mesh_gpu_instancing (three.js, Babylon.js, engines)")
       ->check(CLI::IsMember({"nodes", "gpu"}))
       ->capture_default_str();
+  command
+      ->add_option("--min-height", args->minHeight_m,
+                   "Leave out plants lower than this, metres (seedlings and saplings; default 0: "
+                   "every living plant)")
+      ->check(CLI::Range(0.0, 1000.0));
   command->callback([args] { runExport(*args); });
 }
 

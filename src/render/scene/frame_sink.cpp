@@ -56,11 +56,15 @@ class Mp4Sink : public FrameSink {
       throw EnvironmentError(
           "MP4 output needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg); or "
           "write PNG frames into a folder");
-    // Raw RGB frames in; H.264 in yuv420p, which needs even sizes: pad by a pixel if odd.
+    // Raw sRGB frames in; H.264 in yuv420p, which needs even sizes: pad by a pixel if odd.
+    // Converted with BT.709's matrix to limited range and tagged so (primaries, transfer,
+    // matrix, range): untagged, players guess, and many guess BT.601, shifting the greens.
     const std::string command = fmt::format(
         "ffmpeg -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s {}x{} -r {} -i - "
-        "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset fast -crf 20 -pix_fmt yuv420p "
-        "-movflags +faststart -f mp4 '{}'",
+        "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv' "
+        "-c:v libx264 -preset fast -crf 20 -pix_fmt yuv420p -colorspace bt709 "
+        "-color_primaries bt709 -color_trc bt709 -color_range tv -movflags +faststart "
+        "-f mp4 '{}'",
         width, height, fps, partial_.string());
     std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give an error, not kill us
     pipe_ = popen(command.c_str(), "w");

@@ -48,6 +48,12 @@ TEST(FrameSink, Mp4HasEveryFrameAtAnEvenSize) {
       (dir / "clip.mp4").string());
   EXPECT_EQ(probe.output, "34,18,yuv420p,7\n");
   EXPECT_EQ(test::entriesIn(dir), 1u);  // no temporary file left
+  // Tagged BT.709, limited range, so players do not guess.
+  const test::CommandResult colour = test::runCommand(
+      "ffprobe -v error -select_streams v:0 -show_entries "
+      "stream=color_range,color_space,color_transfer,color_primaries -of csv=p=0 " +
+      (dir / "clip.mp4").string());
+  EXPECT_EQ(colour.output, "tv,bt709,bt709,bt709\n");
 }
 
 TEST(FrameSink, FindsProgramsOnThePath) {

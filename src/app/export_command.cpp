@@ -21,6 +21,7 @@ struct ExportArgs {
   std::string lod = "1";
   std::string instancing = "nodes";
   double minHeight_m = 0.0;
+  bool wind = false;
 };
 
 // The snapshot's plants at least --min-height tall.
@@ -51,6 +52,7 @@ void runExport(const ExportArgs& args) {
   ForestGltfOptions options;
   options.instancing = args.instancing == "gpu" ? Instancing::Gpu : Instancing::Nodes;
   options.lod = args.lod == "all" ? kAllLods : std::stoi(args.lod);
+  options.wind = args.wind;
   if (options.lod == kAllLods && options.instancing != Instancing::Gpu)
     throw InputError({"export", 0, "--lod"},
                      "--lod all writes the levels through MSFT_lod, which needs --instancing gpu");
@@ -100,6 +102,9 @@ void addExportCommand(CLI::App& app) {
                    "Leave out plants lower than this, metres (seedlings and saplings; default 0: "
                    "every living plant)")
       ->check(CLI::Range(0.0, 1000.0));
+  command->add_flag("--wind", args->wind,
+                    "Add the wind bases as vertex attributes (_SWAY_SIN, _SWAY_COS, _BEND_EAST, "
+                    "_BEND_SOUTH) for an engine's vertex shader");
   command->callback([args] { runExport(*args); });
 }
 

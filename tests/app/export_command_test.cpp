@@ -122,13 +122,32 @@ TEST(ExportCommand, EveryTreeCarriesItsCsvRowInBothInstancingModes) {
   }
 }
 
+TEST(ExportCommand, MinHeightLeavesOutTheSmallerPlants) {
+  const auto file = eco::test::freshDirectory("app_export_min_height") / "tall.glb";
+  CommandResult r =
+      ecoforest("export " + shortDefaultRun().string() + " --min-height 2 --out " + file.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::set<std::uint64_t> tall;
+  for (const eco::TreeRow& row : snapshot().trees)
+    if (row.height_m >= 2.0f) tall.insert(row.id);
+  ASSERT_GT(tall.size(), 0u);
+  ASSERT_LT(tall.size(), snapshot().trees.size());
+  std::set<std::uint64_t> exportedIds;
+  for (const auto& [id, tree] : exportedTrees(eco::test::loadGltf(file))) exportedIds.insert(id);
+  EXPECT_EQ(exportedIds, tall);
+}
+
 TEST(ExportCommand, BothModesAndTextGltfPassTheKhronosValidator) {
   if (!std::filesystem::exists(kNode / "node_modules" / "gltf-validator"))
     GTEST_SKIP() << "the glTF validator is not installed (scripts/setup installs it)";
   const auto text = eco::test::freshDirectory("app_export_text") / "forest.gltf";
   CommandResult r = ecoforest("export " + shortDefaultRun().string() + " --out " + text.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const std::filesystem::path& file : {exported("nodes"), exported("gpu"), text}) {
+  const auto wind = text.parent_path() / "wind.glb";
+  r = ecoforest("export " + shortDefaultRun().string() + " --wind --min-height 2 --out " +
+                wind.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const std::filesystem::path& file : {exported("nodes"), exported("gpu"), text, wind}) {
     CommandResult validated =
         eco::test::runCommand("node " + (kNode / "validate.mjs").string() + " " + file.string());
     EXPECT_EQ(validated.exitCode, 0) << file << validated.output;

@@ -105,6 +105,19 @@ tinygltf::Node treeNode(const ForestGltfTree& tree, const std::string& species, 
   return node;
 }
 
+void addWindAttributes(GltfBuilder& builder, tinygltf::Primitive& primitive,
+                       const WindBases& wind) {
+  auto add = [&](const char* name, const std::vector<glm::vec3>& values) {
+    primitive.attributes[name] =
+        builder.addAccessor(values, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
+                            TINYGLTF_TARGET_ARRAY_BUFFER, false);
+  };
+  add("_SWAY_SIN", wind.swaySin);
+  add("_SWAY_COS", wind.swayCos);
+  add("_BEND_EAST", wind.bendEast);
+  add("_BEND_SOUTH", wind.bendSouth);
+}
+
 // MSFT_screencoverage: the switching heights as fractions of the screen.
 tinygltf::Value screenCoverage(const ForestGltfScene& scene) {
   tinygltf::Value::Array coverage;
@@ -148,10 +161,15 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
     auto meshOfLevel = [&](int level) {
       tinygltf::Mesh mesh;
       mesh.name = type.name + "_lod" + std::to_string(level);
-      for (const MeshPart& part : type.lods[level].parts) {
+      const std::vector<MeshPart>& parts = type.lods[level].parts;
+      if (options.wind && type.wind[level].size() != parts.size())
+        throw InternalError("tree type " + type.name + " has no wind bases to export");
+      for (std::size_t p = 0; p < parts.size(); ++p) {
+        const MeshPart& part = parts[p];
         int& material = materials[type.species][static_cast<int>(part.material)];
         if (material < 0) material = builder.addMaterial(makeMaterial(part.material, species));
         builder.addPrimitive(mesh, part, material);
+        if (options.wind) addWindAttributes(builder, mesh.primitives.back(), type.wind[level][p]);
       }
       return builder.addMesh(std::move(mesh));
     };

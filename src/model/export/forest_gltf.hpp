@@ -33,11 +33,23 @@ struct ForestGltfTree {
   float age_years = 0.0f, height_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
 };
 
+// The wind bases of a mesh part's vertices (the renderer's, docs/rendering.md), in the
+// tree's frame: at wind time t a vertex at rest p is drawn at
+//   p + w_s (sin t swaySin + cos t swayCos) + w_g (d_east bendEast + d_south bendSouth)
+// for a sway strength w_s (degrees per metre) and a horizontal wind of strength w_g toward
+// the unit direction (d_east, d_south); exported as _SWAY_SIN, _SWAY_COS, _BEND_EAST and
+// _BEND_SOUTH vertex attributes for an engine's vertex shader.
+struct WindBases {
+  std::vector<glm::vec3> swaySin, swayCos, bendEast, bendSouth;
+};
+
 // One tree type: its meshes and every tree drawn with it.
 struct ForestGltfType {
   std::string name;
   int species = 0;                       // index into ForestGltfScene::species
   std::array<TreeMesh, kLodCount> lods;  // the levels exported (others may stay empty)
+  // Per level, one entry per part of the mesh; empty: no wind data.
+  std::array<std::vector<WindBases>, kLodCount> wind;
   std::vector<ForestGltfTree> trees;
 };
 
@@ -66,6 +78,7 @@ struct ForestGltfOptions {
   // instances), with the screen coverages at which to switch (MSFT_screencoverage).
   // Viewers without MSFT_lod show LOD0.
   int lod = 1;
+  bool wind = false;  // the wind bases as vertex attributes (the types must carry them)
 };
 
 struct ForestGltfSummary {

@@ -24,6 +24,17 @@ MeshPart terrainPart(const Terrain& terrain) {
   return part;
 }
 
+WindBases windBases(const WindPart& part) {
+  WindBases bases;
+  for (const TreeVertex& v : part.vertices) {
+    bases.swaySin.push_back(v.swaySin);
+    bases.swayCos.push_back(v.swayCos);
+    bases.bendEast.push_back(v.bendEast);
+    bases.bendSouth.push_back(v.bendSouth);
+  }
+  return bases;
+}
+
 TreeMesh treeMesh(const WindMesh& wind) {
   TreeMesh mesh;
   for (const WindPart& windPart : wind.parts) {
@@ -62,8 +73,12 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
                "_age" + std::to_string(type.ageClass);
     out.species = type.species;
     for (int level = 0; level < kLodCount; ++level)
-      if (options.lod == kAllLods || options.lod == level)
+      if (options.lod == kAllLods || options.lod == level) {
         out.lods[level] = treeMesh(type.meshes.lods[level]);
+        if (options.wind)
+          for (const WindPart& part : type.meshes.lods[level].parts)
+            out.wind[level].push_back(windBases(part));
+      }
     out.trees.reserve(members[t].size());
     for (std::size_t i : members[t]) {
       const TreeRow& row = rows[i];

@@ -98,6 +98,47 @@ TEST(ForestGltf, NodesAreTheTreesWithTheirRows) {
   EXPECT_EQ(trees, scene.forest.size());
 }
 
+// With wind, each primitive carries its part's four wind bases, vertex for vertex.
+TEST(ForestGltf, WindBasesAreVertexAttributesOfEveryTreePrimitive) {
+  const Scene scene = smallScene();
+  const auto file = test::freshDirectory("forest_gltf_wind") / "forest.glb";
+  exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file,
+               {.lod = 1, .wind = true});
+  const tinygltf::Model model = test::loadGltf(file);
+  const TreeType& type = test::smallLibrary().types()[scene.forest.type[0]];
+  std::size_t primitives = 0;
+  bool swaying = false;
+  for (const tinygltf::Mesh& mesh : model.meshes) {
+    if (mesh.name == "terrain") continue;
+    for (const tinygltf::Primitive& p : mesh.primitives) {
+      const std::size_t vertices = model.accessors[p.attributes.at("POSITION")].count;
+      for (const char* name : {"_SWAY_SIN", "_SWAY_COS", "_BEND_EAST", "_BEND_SOUTH"}) {
+        ASSERT_TRUE(p.attributes.count(name)) << name;
+        EXPECT_EQ(model.accessors[p.attributes.at(name)].count, vertices);
+      }
+      for (const glm::vec3& v : accessorValues<glm::vec3>(model, p.attributes.at("_SWAY_SIN")))
+        swaying |= glm::length(v) > 0.0f;
+      ++primitives;
+    }
+  }
+  EXPECT_GT(primitives, 0u);
+  EXPECT_TRUE(swaying);  // branches and leaves move
+  // The first tree's type: its bases are the wind mesh's.
+  const std::string name = test::smallLibrary().species()[type.species].name + "_variant" +
+                           std::to_string(type.variant) + "_age" + std::to_string(type.ageClass) +
+                           "_lod1";
+  for (const tinygltf::Mesh& mesh : model.meshes) {
+    if (mesh.name != name) continue;
+    const WindPart& part = type.meshes.lods[1].parts[0];
+    const auto bends =
+        accessorValues<glm::vec3>(model, mesh.primitives[0].attributes.at("_BEND_EAST"));
+    ASSERT_EQ(bends.size(), part.vertices.size());
+    for (std::size_t i = 0; i < bends.size(); ++i) EXPECT_EQ(bends[i], part.vertices[i].bendEast);
+    return;
+  }
+  FAIL() << "no mesh " << name;
+}
+
 TEST(ForestGltf, TheTerrainsBoundingBoxIsTheHeightmaps) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf_box") / "forest.gltf";

@@ -22,6 +22,7 @@ struct ExportArgs {
   std::string instancing = "nodes";
   double minHeight_m = 0.0;
   bool wind = false;
+  std::size_t maxTriangles = 0;
 };
 
 // The snapshot's plants at least --min-height tall.
@@ -53,6 +54,7 @@ void runExport(const ExportArgs& args) {
   options.instancing = args.instancing == "gpu" ? Instancing::Gpu : Instancing::Nodes;
   options.lod = args.lod == "all" ? kAllLods : std::stoi(args.lod);
   options.wind = args.wind;
+  options.maxTriangles = args.maxTriangles;
   if (options.lod == kAllLods && options.instancing != Instancing::Gpu)
     throw InputError({"export", 0, "--lod"},
                      "--lod all writes the levels through MSFT_lod, which needs --instancing gpu");
@@ -65,10 +67,16 @@ void runExport(const ExportArgs& args) {
   const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
   const ForestGltfSummary summary =
       exportForest(source.terrain, *source.library, forest, snapshot.trees, out, options);
+  const auto& at = summary.treesAtLevel;
+  const std::string levels =
+      options.maxTriangles > 0
+          ? fmt::format("{} at LOD0, {} at LOD1, {} at LOD2", at[0], at[1], at[2])
+          : "LOD " + args.lod;
   std::cout << fmt::format(
-      "{}: year {}, {} trees as {} of {} tree types (LOD {}), terrain of {} triangles\n", args.out,
+      "{}: year {}, {} trees as {} of {} tree types ({}): {} triangles, terrain {}\n", args.out,
       year, summary.instances, options.instancing == Instancing::Gpu ? "GPU instances" : "nodes",
-      summary.treeMeshes, args.lod, summary.terrainTriangles);
+      summary.treeMeshes, levels, summary.treeTriangles + summary.terrainTriangles,
+      summary.terrainTriangles);
 }
 
 }  // namespace
@@ -85,12 +93,19 @@ void addExportCommand(CLI::App& app) {
                    "forest.glb or forest.gltf (terrain and trees), or trees.geojson (the trees "
                    "as points in the terrain's coordinates)")
       ->required();
+  CLI::Option* maxTriangles =
+      command
+          ->add_option("--max-triangles", args->maxTriangles,
+                       "Keep the scene under N triangles: each tree's level by its height, the "
+                       "tallest first (instead of --lod)")
+          ->check(CLI::PositiveNumber);
   command
       ->add_option(
           "--lod", args->lod,
           "Level of detail of the tree meshes: 0 full, 1 clustered leaves, 2 crown proxies, "
           "all (LOD0 with LOD1 and LOD2 through MSFT_lod)")
-      ->check(CLI::IsMember({"0", "1", "2", "all"}));
+      ->check(CLI::IsMember({"0", "1", "2", "all"}))
+      ->excludes(maxTriangles);
   command
       ->add_option("--instancing", args->instancing,
                    "nodes: one node per tree sharing its type's mesh (Blender, assimp, every "

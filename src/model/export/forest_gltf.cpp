@@ -1,5 +1,6 @@
 #include "model/export/forest_gltf.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -41,41 +42,42 @@ std::uint32_t idOf(const ForestGltfTree& tree) {
 }
 
 template <typename T, typename Of>
-int addPerTree(GltfBuilder& builder, const ForestGltfType& type, int componentType, int gltfType,
-               Of of) {
+int addPerTree(GltfBuilder& builder, const std::vector<ForestGltfTree>& trees, int componentType,
+               int gltfType, Of of) {
   std::vector<T> values;
-  values.reserve(type.trees.size());
-  for (const ForestGltfTree& tree : type.trees) values.push_back(of(tree));
+  values.reserve(trees.size());
+  for (const ForestGltfTree& tree : trees) values.push_back(of(tree));
   return builder.addAccessor(values, componentType, gltfType, 0, false);
 }
 
 // EXT_mesh_gpu_instancing's attributes of a type's trees: the transforms and the trees'
 // CSV columns.
-tinygltf::Value::Object addInstancing(GltfBuilder& builder, const ForestGltfType& type) {
+tinygltf::Value::Object addInstancing(GltfBuilder& builder,
+                                      const std::vector<ForestGltfTree>& trees, int species) {
   using Tree = ForestGltfTree;
   constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
   constexpr int kScalar = TINYGLTF_TYPE_SCALAR;
   tinygltf::Value::Object attributes;
   auto add = [&](const char* name, int accessor) { attributes[name] = tinygltf::Value(accessor); };
-  add("TRANSLATION", addPerTree<glm::vec3>(builder, type, kFloat, TINYGLTF_TYPE_VEC3,
+  add("TRANSLATION", addPerTree<glm::vec3>(builder, trees, kFloat, TINYGLTF_TYPE_VEC3,
                                            [](const Tree& t) { return t.translation; }));
-  add("ROTATION", addPerTree<glm::vec4>(builder, type, kFloat, TINYGLTF_TYPE_VEC4,
+  add("ROTATION", addPerTree<glm::vec4>(builder, trees, kFloat, TINYGLTF_TYPE_VEC4,
                                         [](const Tree& t) { return yawRotation(t.yaw_rad); }));
-  add("SCALE", addPerTree<glm::vec3>(builder, type, kFloat, TINYGLTF_TYPE_VEC3,
+  add("SCALE", addPerTree<glm::vec3>(builder, trees, kFloat, TINYGLTF_TYPE_VEC3,
                                      [](const Tree& t) { return t.scale; }));
-  add("_ID", addPerTree<std::uint32_t>(builder, type, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, kScalar,
-                                       idOf));
+  add("_ID", addPerTree<std::uint32_t>(builder, trees, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                                       kScalar, idOf));
   add("_SPECIES",
-      addPerTree<std::uint16_t>(builder, type, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, kScalar,
-                                [&](const Tree&) { return std::uint16_t(type.species); }));
-  add("_AGE",
-      addPerTree<float>(builder, type, kFloat, kScalar, [](const Tree& t) { return t.age_years; }));
+      addPerTree<std::uint16_t>(builder, trees, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, kScalar,
+                                [&](const Tree&) { return std::uint16_t(species); }));
+  add("_AGE", addPerTree<float>(builder, trees, kFloat, kScalar,
+                                [](const Tree& t) { return t.age_years; }));
   add("_HEIGHT",
-      addPerTree<float>(builder, type, kFloat, kScalar, [](const Tree& t) { return t.height_m; }));
+      addPerTree<float>(builder, trees, kFloat, kScalar, [](const Tree& t) { return t.height_m; }));
   add("_DBH",
-      addPerTree<float>(builder, type, kFloat, kScalar, [](const Tree& t) { return t.dbh_m; }));
+      addPerTree<float>(builder, trees, kFloat, kScalar, [](const Tree& t) { return t.dbh_m; }));
   add("_VIGOR",
-      addPerTree<float>(builder, type, kFloat, kScalar, [](const Tree& t) { return t.vigor; }));
+      addPerTree<float>(builder, trees, kFloat, kScalar, [](const Tree& t) { return t.vigor; }));
   tinygltf::Value::Object instancing;
   instancing["attributes"] = tinygltf::Value(attributes);
   return instancing;
@@ -174,32 +176,57 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
       return builder.addMesh(std::move(mesh));
     };
 
+    // Each level's mesh, written when a tree first uses it.
+    std::array<int, kLodCount> meshes;
+    meshes.fill(-1);
+    auto meshAt = [&](int level) {
+      if (meshes[level] < 0) meshes[level] = meshOfLevel(level);
+      return meshes[level];
+    };
+    auto levelOf = [&](const ForestGltfTree& tree) {
+      return tree.level >= 0 ? tree.level : options.lod;
+    };
+
     if (!gpu) {
-      const int mesh = meshOfLevel(options.lod);
       for (const ForestGltfTree& tree : type.trees)
-        roots.push_back(builder.addNode(treeNode(tree, species.name, mesh)));
-    } else {
-      const tinygltf::Value::Object instancing = addInstancing(builder, type);
+        roots.push_back(builder.addNode(treeNode(tree, species.name, meshAt(levelOf(tree)))));
+    } else if (options.lod == kAllLods) {
+      const tinygltf::Value::Object instancing = addInstancing(builder, type.trees, type.species);
       auto instancedNode = [&](int level) {
         tinygltf::Node node;
         node.name = type.name + "_lod" + std::to_string(level);
-        node.mesh = meshOfLevel(level);
+        node.mesh = meshAt(level);
         node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(instancing);
         return node;
       };
-      if (options.lod == kAllLods) {
-        tinygltf::Node base = instancedNode(0);
-        tinygltf::Value::Array ids;
-        for (int level = 1; level < kLodCount; ++level)
-          ids.emplace_back(builder.addNode(instancedNode(level)));
-        tinygltf::Value::Object msftLod;
-        msftLod["ids"] = tinygltf::Value(ids);
-        base.extensions["MSFT_lod"] = tinygltf::Value(msftLod);
-        base.extras = screenCoverage(scene);
-        roots.push_back(builder.addNode(std::move(base)));
-      } else {
-        roots.push_back(builder.addNode(instancedNode(options.lod)));
+      tinygltf::Node base = instancedNode(0);
+      tinygltf::Value::Array ids;
+      for (int level = 1; level < kLodCount; ++level)
+        ids.emplace_back(builder.addNode(instancedNode(level)));
+      tinygltf::Value::Object msftLod;
+      msftLod["ids"] = tinygltf::Value(ids);
+      base.extensions["MSFT_lod"] = tinygltf::Value(msftLod);
+      base.extras = screenCoverage(scene);
+      roots.push_back(builder.addNode(std::move(base)));
+    } else {
+      // One instanced node per level the type's trees are drawn at.
+      for (int level = 0; level < kLodCount; ++level) {
+        std::vector<ForestGltfTree> trees;
+        for (const ForestGltfTree& tree : type.trees)
+          if (levelOf(tree) == level) trees.push_back(tree);
+        if (trees.empty()) continue;
+        tinygltf::Node node;
+        node.name = type.name + "_lod" + std::to_string(level);
+        node.mesh = meshAt(level);
+        node.extensions["EXT_mesh_gpu_instancing"] =
+            tinygltf::Value(addInstancing(builder, trees, type.species));
+        roots.push_back(builder.addNode(std::move(node)));
       }
+    }
+    for (const ForestGltfTree& tree : type.trees) {
+      const int level = options.lod == kAllLods ? 0 : levelOf(tree);
+      ++summary.treesAtLevel[level];
+      summary.treeTriangles += type.lods[level].triangleCount();
     }
     summary.instances += type.trees.size();
     ++summary.treeMeshes;

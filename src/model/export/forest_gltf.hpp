@@ -31,6 +31,7 @@ struct ForestGltfTree {
   glm::vec3 scale{1.0f};
   std::uint64_t id = 0;
   float age_years = 0.0f, height_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
+  int level = -1;  // the level of detail it is drawn at; -1: ForestGltfOptions::lod
 };
 
 // The wind bases of a mesh part's vertices (the renderer's, docs/rendering.md), in the
@@ -79,12 +80,17 @@ struct ForestGltfOptions {
   // Viewers without MSFT_lod show LOD0.
   int lod = 1;
   bool wind = false;  // the wind bases as vertex attributes (the types must carry them)
+  // A budget for the scene's triangles (terrain and every tree as drawn): each tree's level
+  // is chosen by its height (render/scene/forest_export.hpp); 0: no budget, `lod` for all.
+  std::size_t maxTriangles = 0;
 };
 
 struct ForestGltfSummary {
   std::size_t instances = 0;
   std::size_t treeMeshes = 0;  // types with at least one tree
   std::size_t terrainTriangles = 0;
+  std::size_t treeTriangles = 0;  // of every tree as drawn (at LOD0 with MSFT_lod)
+  std::array<std::size_t, kLodCount> treesAtLevel{};
 };
 
 // Types without trees are left out. The per-instance attribute names, as EXT_mesh_gpu_

@@ -1,5 +1,9 @@
 #include "render/scene/forest_export.hpp"
 
+#include <algorithm>
+
+#include <fmt/format.h>
+
 #include "core/error.hpp"
 #include "core/frames.hpp"
 #include "render/scene/culling.hpp"
@@ -47,6 +51,48 @@ TreeMesh treeMesh(const WindMesh& wind) {
   return mesh;
 }
 
+// Each tree's level under a triangle budget: every tree starts at LOD2, then from the tallest
+// down each takes the finest level the budget still allows, never finer than a taller tree
+// could have, so detail goes where a viewer sees it first.
+void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles) {
+  struct Choice {
+    const ForestGltfType* type;
+    ForestGltfTree* tree;
+  };
+  std::vector<Choice> trees;
+  std::size_t used = scene.terrain.triangleCount();
+  for (ForestGltfType& type : scene.types)
+    for (ForestGltfTree& tree : type.trees) {
+      trees.push_back({&type, &tree});
+      used += type.lods[kLodCount - 1].triangleCount();
+    }
+  if (used > maxTriangles)
+    throw InputError({"export", 0, "--max-triangles"},
+                     fmt::format("the terrain and every tree at LOD{} already take {} triangles, "
+                                 "more than {}",
+                                 kLodCount - 1, used, maxTriangles));
+  std::sort(trees.begin(), trees.end(), [](const Choice& a, const Choice& b) {
+    return a.tree->height_m != b.tree->height_m ? a.tree->height_m > b.tree->height_m
+                                                : a.tree->id < b.tree->id;
+  });
+  int finest = 0;
+  for (const Choice& c : trees) {
+    const std::size_t coarse = c.type->lods[kLodCount - 1].triangleCount();
+    int level = kLodCount - 1;
+    for (int l = finest; l < kLodCount - 1; ++l) {
+      const std::size_t extra =
+          c.type->lods[l].triangleCount() - std::min(coarse, c.type->lods[l].triangleCount());
+      if (used + extra <= maxTriangles) {
+        level = l;
+        used += extra;
+        break;
+      }
+    }
+    finest = level;
+    c.tree->level = level;
+  }
+}
+
 }  // namespace
 
 ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& library,
@@ -72,8 +118,9 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
     out.name = library.species()[type.species].name + "_variant" + std::to_string(type.variant) +
                "_age" + std::to_string(type.ageClass);
     out.species = type.species;
+    const bool everyLevel = options.lod == kAllLods || options.maxTriangles > 0;
     for (int level = 0; level < kLodCount; ++level)
-      if (options.lod == kAllLods || options.lod == level) {
+      if (everyLevel || options.lod == level) {
         out.lods[level] = treeMesh(type.meshes.lods[level]);
         if (options.wind)
           for (const WindPart& part : type.meshes.lods[level].parts)
@@ -92,6 +139,7 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
                            .vigor = row.vigor});
     }
   }
+  if (options.maxTriangles > 0) chooseLevels(scene, options.maxTriangles);
   return scene;
 }
 

@@ -131,6 +131,11 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
               parseField(fields[8], tree.crownBase_m) && parseField(fields[9], tree.dbh_m) &&
               parseField(fields[10], tree.vigor) && parseField(fields[11], tree.variantSeed) &&
               !fields[1].empty();
+    std::uint64_t wideSeed = 0;
+    if (!ok && count == kTreesColumns && parseField(fields[11], wideSeed))
+      throw InputError({file.string(), line, "variant_seed"},
+                       "a seed beyond 32 bits, as earlier builds of ecoforest wrote them: run "
+                       "the scenario again");
     if (!ok)
       throw InputError(
           {file.string(), line, ""},

@@ -139,6 +139,44 @@ TEST(ForestGltf, WindBasesAreVertexAttributesOfEveryTreePrimitive) {
   FAIL() << "no mesh " << name;
 }
 
+// Under a triangle budget the scene stays within it, taller trees get at least the detail
+// of shorter ones, and a budget too small even for LOD2 is refused.
+TEST(ForestGltf, ATriangleBudgetGoesToTheTallestTreesFirst) {
+  const Scene scene = smallScene();
+  const TreeLibrary& library = test::smallLibrary();
+  const ForestGltfScene coarse =
+      forestGltfScene(scene.terrain, library, scene.forest, scene.rows, {.lod = 2});
+  const ForestGltfScene fine =
+      forestGltfScene(scene.terrain, library, scene.forest, scene.rows, {.lod = 0});
+  // The scene's triangles; `lod` for trees without a level of their own.
+  auto total = [](const ForestGltfScene& s, int lod) {
+    std::size_t n = s.terrain.triangleCount();
+    for (const ForestGltfType& t : s.types)
+      for (const ForestGltfTree& tree : t.trees)
+        n += t.lods[tree.level >= 0 ? tree.level : lod].triangleCount();
+    return n;
+  };
+  const std::size_t budget = (total(coarse, 2) + total(fine, 0)) / 2;
+  const ForestGltfScene chosen =
+      forestGltfScene(scene.terrain, library, scene.forest, scene.rows, {.maxTriangles = budget});
+  EXPECT_LE(total(chosen, -1), budget);
+  std::vector<std::pair<float, int>> levels;  // (height, level)
+  for (const ForestGltfType& t : chosen.types)
+    for (const ForestGltfTree& tree : t.trees) levels.emplace_back(tree.height_m, tree.level);
+  std::sort(levels.begin(), levels.end(), std::greater<>());
+  EXPECT_EQ(levels.front().second, 0);  // the tallest in full detail
+  EXPECT_EQ(levels.back().second, 2);   // the shortest as proxies
+  for (std::size_t i = 1; i < levels.size(); ++i) EXPECT_GE(levels[i].second, levels[i - 1].second);
+  // The file holds what was chosen.
+  const auto file = test::freshDirectory("forest_gltf_budget") / "forest.glb";
+  const ForestGltfSummary summary = exportForest(scene.terrain, library, scene.forest, scene.rows,
+                                                 file, {.maxTriangles = budget});
+  EXPECT_EQ(summary.treeTriangles + summary.terrainTriangles, total(chosen, -1));
+  EXPECT_THROW(forestGltfScene(scene.terrain, library, scene.forest, scene.rows,
+                               {.maxTriangles = total(coarse, 2) - 1}),
+               InputError);
+}
+
 TEST(ForestGltf, TheTerrainsBoundingBoxIsTheHeightmaps) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf_box") / "forest.gltf";

@@ -52,6 +52,50 @@ std::vector<std::uint32_t> terrainTriangles(const Grid& grid) {
   return indices;
 }
 
+glm::vec3 RimVertex::position(const Terrain& terrain) const {
+  return cellPosition(terrain, x, y) + glm::vec3(east_m, north_m, 0.0f);
+}
+
+glm::vec2 RimVertex::mapUv(const Grid& g) const {
+  return {static_cast<float>((x + 0.5 + east_m / g.dx_m) / g.width),
+          static_cast<float>((y + 0.5 - north_m / g.dy_m) / g.height)};
+}
+
+TerrainRim terrainRim(const Grid& g) {
+  TerrainRim rim;
+  const auto cells = static_cast<std::uint32_t>(g.cellCount());
+  const float halfX = static_cast<float>(0.5 * g.dx_m), halfY = static_cast<float>(0.5 * g.dy_m);
+  auto add = [&](int x, int y, float east, float north) {
+    rim.vertices.push_back({x, y, east, north});
+    return cells + static_cast<std::uint32_t>(rim.vertices.size() - 1);
+  };
+  auto cell = [&](int x, int y) { return static_cast<std::uint32_t>(g.index(x, y)); };
+  // Corners in counter-clockwise order seen from above: south-west, south-east,
+  // north-east, north-west.
+  auto quad = [&](std::uint32_t sw, std::uint32_t se, std::uint32_t ne, std::uint32_t nw) {
+    rim.triangles.insert(rim.triangles.end(), {sw, se, ne, sw, ne, nw});
+  };
+  const int w = g.width, h = g.height;
+  std::vector<std::uint32_t> north(w), south(w), west(h), east(h);
+  for (int x = 0; x < w; ++x)
+    north[x] = add(x, 0, 0.0f, halfY), south[x] = add(x, h - 1, 0.0f, -halfY);
+  for (int y = 0; y < h; ++y)
+    west[y] = add(0, y, -halfX, 0.0f), east[y] = add(w - 1, y, halfX, 0.0f);
+  for (int x = 0; x + 1 < w; ++x) {
+    quad(cell(x, 0), cell(x + 1, 0), north[x + 1], north[x]);
+    quad(south[x], south[x + 1], cell(x + 1, h - 1), cell(x, h - 1));
+  }
+  for (int y = 0; y + 1 < h; ++y) {  // y + 1 is the row south of y
+    quad(west[y + 1], cell(0, y + 1), cell(0, y), west[y]);
+    quad(cell(w - 1, y + 1), east[y + 1], east[y], cell(w - 1, y));
+  }
+  quad(west[0], cell(0, 0), north[0], add(0, 0, -halfX, halfY));
+  quad(cell(w - 1, 0), east[0], add(w - 1, 0, halfX, halfY), north[w - 1]);
+  quad(add(0, h - 1, -halfX, -halfY), south[0], cell(0, h - 1), west[h - 1]);
+  quad(south[w - 1], add(w - 1, h - 1, halfX, -halfY), east[h - 1], cell(w - 1, h - 1));
+  return rim;
+}
+
 glm::vec3 cellPosition(const Terrain& terrain, int x, int y) {
   const Grid& g = terrain.grid;
   return {static_cast<float>(g.eastOf(x)), static_cast<float>(g.northOf(y)),

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "sim/terrain.hpp"
@@ -23,6 +24,25 @@ std::vector<std::uint32_t> terrainTriangles(const Grid& grid);
 
 // The vertex of cell (x, y) in the map frame (east, north, altitude).
 glm::vec3 cellPosition(const Terrain& terrain, int x, int y);
+
+// What is drawn of the triangles' flat continuation past the edges: a rim of half a cell
+// out to the edge cells' outer sides, so that the drawn terrain covers every cell and the
+// plants of edge cells stand on it (the renderer and the glTF export draw it; rays need
+// it not). Rim vertex i is cell (x, y) moved by (east, north) metres, with the cell's height
+// and normal; the triangles index the grid's cells first, then cellCount() + i.
+struct RimVertex {
+  int x = 0, y = 0;
+  float east_m = 0.0f, north_m = 0.0f;
+  // Its position in the map frame, and its texture coordinate on the map ([0, 1]^2 over the
+  // cells' extent, v growing south).
+  glm::vec3 position(const Terrain& terrain) const;
+  glm::vec2 mapUv(const Grid& grid) const;
+};
+struct TerrainRim {
+  std::vector<RimVertex> vertices;
+  std::vector<std::uint32_t> triangles;  // counter-clockwise seen from above
+};
+TerrainRim terrainRim(const Grid& grid);
 
 // The height gradient of a cell: dz/dx east and dz/dy north, metres per metre, by Horn's
 // (1981) third-order finite differences on the 3 x 3 neighbourhood with separate east-west

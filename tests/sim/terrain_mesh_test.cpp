@@ -91,6 +91,40 @@ TEST(TerrainMesh, TwoTrianglesPerSquareFacingUpAndMeetingAtTheCellCentres) {
       EXPECT_FLOAT_EQ(terrain.altitudeAt(g.eastOf(x), g.northOf(y)), terrain.heightAt(x, y));
 }
 
+// The rim: a strip of half a cell on each side and a square at each corner, facing up,
+// out to the cells' outer edges exactly, where it lies on the triangles' flat continuation
+// (altitudeAt), so that the plants of edge cells stand on what is drawn.
+TEST(TerrainMesh, TheRimCoversEveryCellOnTheFlatContinuation) {
+  const Terrain terrain = hills();
+  const Grid& g = terrain.grid;
+  const TerrainRim rim = terrainRim(g);
+  EXPECT_EQ(rim.vertices.size(), 2u * g.width + 2u * g.height + 4u);
+  EXPECT_EQ(rim.triangles.size(), 6u * (2 * (g.width - 1) + 2 * (g.height - 1) + 4));
+  auto position = [&](std::uint32_t i) {
+    return i < g.cellCount()
+               ? cellPosition(terrain, static_cast<int>(i % g.width), static_cast<int>(i / g.width))
+               : rim.vertices[i - g.cellCount()].position(terrain);
+  };
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  for (std::size_t t = 0; t < rim.triangles.size(); t += 3) {
+    const glm::vec3 a = position(rim.triangles[t]), b = position(rim.triangles[t + 1]),
+                    c = position(rim.triangles[t + 2]);
+    EXPECT_GT(glm::cross(b - a, c - a).z, 0.0f) << "rim triangle " << t / 3 << " faces down";
+    for (const glm::vec3& p : {a, b, c}) {
+      lo = glm::min(lo, glm::vec2(p));
+      hi = glm::max(hi, glm::vec2(p));
+      EXPECT_FLOAT_EQ(terrain.altitudeAt(p.x, p.y), p.z);
+    }
+  }
+  EXPECT_FLOAT_EQ(lo.x, static_cast<float>(-0.5 * g.dx_m));
+  EXPECT_FLOAT_EQ(lo.y, static_cast<float>(-0.5 * g.dy_m));
+  EXPECT_FLOAT_EQ(hi.x, static_cast<float>(g.eastOf(g.width - 1) + 0.5 * g.dx_m));
+  EXPECT_FLOAT_EQ(hi.y, static_cast<float>(g.northOf(0) + 0.5 * g.dy_m));
+  // Its map coordinates reach the texture's edges.
+  EXPECT_FLOAT_EQ(rim.vertices.back().mapUv(g).x, 1.0f);  // the south-east corner
+  EXPECT_FLOAT_EQ(rim.vertices.back().mapUv(g).y, 1.0f);
+}
+
 TEST(TerrainMesh, TheSquaresSplitAlongTheNorthEastToSouthWestDiagonal) {
   const Grid g{3, 3, 1.0, 1.0};
   // Square (0, 0): NW = 0, NE = 1, SW = 3, SE = 4; both triangles share NE and SW.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -41,6 +42,10 @@ TerrainRenderer::TerrainRenderer(const Terrain& terrain)
       v.normal = worldDirectionFromMap(terrainNormal(terrain, x, y));
       v.mapUv = {(x + 0.5f) / g.width, (y + 0.5f) / g.height};
     }
+  const TerrainRim rim = terrainRim(g);
+  for (const RimVertex& r : rim.vertices)
+    vertices.push_back({worldFromMap(r.position(terrain)),
+                        worldDirectionFromMap(terrainNormal(terrain, r.x, r.y)), r.mapUv(g)});
   // Triangles in square chunks of kChunkCells, each with a bounding sphere for culling.
   std::vector<std::uint32_t> indices;
   indices.reserve(static_cast<std::size_t>(g.width - 1) * (g.height - 1) * 6);
@@ -63,6 +68,19 @@ TerrainRenderer::TerrainRenderer(const Terrain& terrain)
       chunk.radius = 0.5f * glm::length(hi - lo);
       chunks_.push_back(chunk);
     }
+  // The rim around the map as one more chunk.
+  Chunk edge;
+  edge.firstIndex = indices.size();
+  indices.insert(indices.end(), rim.triangles.begin(), rim.triangles.end());
+  edge.indexCount = static_cast<GLsizei>(rim.triangles.size());
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (std::size_t i = g.cellCount(); i < vertices.size(); ++i) {
+    lo = glm::min(lo, vertices[i].position);
+    hi = glm::max(hi, vertices[i].position);
+  }
+  edge.centre = 0.5f * (lo + hi);
+  edge.radius = 0.5f * glm::length(hi - lo);
+  chunks_.push_back(edge);
   indexCount_ = static_cast<GLsizei>(indices.size());
   vertices_ = makeBuffer(std::span<const TerrainVertex>(vertices));
   indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
@@ -86,10 +104,12 @@ void TerrainRenderer::setOverlay(const std::string& name, const Field& values) {
   Image image(grid_.width, grid_.height);
   for (int y = 0; y < grid_.height; ++y)
     for (int x = 0; x < grid_.width; ++x) {
-      const double t = range.max > range.min
-                           ? (values[grid_.index(x, y)] - range.min) / (range.max - range.min)
-                           : 0.5;
-      image.set(x, y, glm::vec4(rampColor(name, t), 1.0f));
+      const float v = values[grid_.index(x, y)];
+      const double t = range.max > range.min ? (v - range.min) / (range.max - range.min) : 0.5;
+      // Outside the landscape (NaN) the ground shows grey.
+      image.set(
+          x, y,
+          std::isnan(v) ? glm::vec4(0.5f, 0.5f, 0.5f, 1.0f) : glm::vec4(rampColor(name, t), 1.0f));
     }
   overlay_ = makeTexture(image, false);
 }

@@ -13,7 +13,8 @@
 namespace eco {
 namespace {
 
-// The terrain as one mesh part: vertices at the cell centres, the terrain's normals.
+// The terrain as one mesh part: vertices at the cell centres and its rim out to the cells'
+// edges, the terrain's normals.
 MeshPart terrainPart(const Terrain& terrain) {
   const Grid& g = terrain.grid;
   MeshPart part;
@@ -25,6 +26,11 @@ MeshPart terrainPart(const Terrain& terrain) {
                      {(x + 0.5f) / g.width, (y + 0.5f) / g.height});
   const std::vector<std::uint32_t> triangles = terrainTriangles(g);
   part.indices.assign(triangles.begin(), triangles.end());
+  const TerrainRim rim = terrainRim(g);
+  for (const RimVertex& v : rim.vertices)
+    part.addVertex(worldFromMap(v.position(terrain)),
+                   worldDirectionFromMap(terrainNormal(terrain, v.x, v.y)), v.mapUv(g));
+  part.indices.insert(part.indices.end(), rim.triangles.begin(), rim.triangles.end());
   return part;
 }
 

@@ -23,10 +23,11 @@ Image renderFromAbove(SceneRenderer& renderer, int size) {
   return readPixels(size, size);
 }
 
-TEST(TerrainRenderer, IsOneTrianglePairPerGridSquare) {
+TEST(TerrainRenderer, IsOneTrianglePairPerGridSquareAndItsRim) {
   test::useHeadlessGl();
   TerrainRenderer terrain(test::flatTerrain(33, 10.0));
-  EXPECT_EQ(terrain.triangleCount(), 32u * 32u * 2u);
+  // The rim: a pair per edge square along each of the four sides, one per corner.
+  EXPECT_EQ(terrain.triangleCount(), 32u * 32u * 2u + (4u * 32u + 4u) * 2u);
 }
 
 TEST(TerrainRenderer, DrawsOnlyTheChunksInTheFrustum) {

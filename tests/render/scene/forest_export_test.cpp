@@ -188,12 +188,13 @@ TEST(ForestGltf, TheTerrainsBoundingBoxIsTheHeightmaps) {
       model.accessors[terrain.primitives[0].attributes.at("POSITION")];
   const FieldStats heights = statsOf(scene.terrain.height_m);
   const Grid& g = scene.terrain.grid;
-  EXPECT_NEAR(positions.minValues[0], 0.0, 1e-4);
-  EXPECT_NEAR(positions.maxValues[0], g.eastOf(g.width - 1), 1e-3);
+  // Out to the edge cells' outer sides (the rim), where the plants of those cells stand.
+  EXPECT_NEAR(positions.minValues[0], -0.5 * g.dx_m, 1e-4);
+  EXPECT_NEAR(positions.maxValues[0], g.eastOf(g.width - 1) + 0.5 * g.dx_m, 1e-3);
   EXPECT_NEAR(positions.minValues[1], heights.min, 1e-3);
   EXPECT_NEAR(positions.maxValues[1], heights.max, 1e-3);
-  EXPECT_NEAR(positions.minValues[2], -g.northOf(0), 1e-3);
-  EXPECT_NEAR(positions.maxValues[2], 0.0, 1e-4);
+  EXPECT_NEAR(positions.minValues[2], -g.northOf(0) - 0.5 * g.dy_m, 1e-3);
+  EXPECT_NEAR(positions.maxValues[2], 0.5 * g.dy_m, 1e-4);
 }
 
 // With every LOD, a type's node shows LOD0 and names its LOD1 and LOD2 nodes through

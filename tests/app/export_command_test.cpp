@@ -108,6 +108,8 @@ TEST(ExportCommand, EveryTreeCarriesItsCsvRowInBothInstancingModes) {
     const tinygltf::Model model = eco::test::loadGltf(exported(instancing));
     const std::map<std::uint64_t, ExportedTree> trees = exportedTrees(model);
     ASSERT_EQ(trees.size(), snapshot().trees.size());
+    const tinygltf::Accessor& terrain =
+        model.accessors[model.meshes[model.nodes[0].mesh].primitives[0].attributes.at("POSITION")];
     for (const eco::TreeRow& row : snapshot().trees) {
       ASSERT_TRUE(trees.count(row.id)) << row.id;
       const ExportedTree& t = trees.at(row.id);
@@ -118,6 +120,11 @@ TEST(ExportCommand, EveryTreeCarriesItsCsvRowInBothInstancingModes) {
       EXPECT_EQ(t.vigor, row.vigor);
       const glm::vec3 base = eco::worldFromMap(row.east_m, row.north_m, row.ground_m);
       EXPECT_LT(glm::distance(t.position, base), 1e-3f) << row.id;
+      // On the terrain, not beyond its edge.
+      EXPECT_GE(t.position.x, terrain.minValues[0]) << row.id;
+      EXPECT_LE(t.position.x, terrain.maxValues[0]) << row.id;
+      EXPECT_GE(t.position.z, terrain.minValues[2]) << row.id;
+      EXPECT_LE(t.position.z, terrain.maxValues[2]) << row.id;
     }
   }
 }

@@ -8,6 +8,8 @@
 
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
+#include "render/gl/billboards.hpp"
+#include "render/gl/gl_context.hpp"
 #include "render/scene/forest_export.hpp"
 #include "sim/run/trees_geojson.hpp"
 
@@ -22,6 +24,7 @@ struct ExportArgs {
   std::string instancing = "nodes";
   double minHeight_m = 0.0;
   bool wind = false;
+  bool billboards = false;
   std::size_t maxTriangles = 0;
 };
 
@@ -52,7 +55,10 @@ void runExport(const ExportArgs& args) {
   requireOutputFolder(out);
   ForestGltfOptions options;
   options.instancing = args.instancing == "gpu" ? Instancing::Gpu : Instancing::Nodes;
-  options.lod = args.lod == "all" ? kAllLods : std::stoi(args.lod);
+  options.lod = args.lod == "all"         ? kAllLods
+                : args.lod == "billboard" ? kBillboardLevel
+                                          : std::stoi(args.lod);
+  options.billboards = args.billboards;
   options.wind = args.wind;
   options.maxTriangles = args.maxTriangles;
   if (options.lod == kAllLods && options.instancing != Instancing::Gpu)
@@ -65,13 +71,20 @@ void runExport(const ExportArgs& args) {
   const TreeSnapshot snapshot = snapshotToExport(args, source, year);
   source.buildLibrary();
   const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
+  // Billboards are pictures of the trees: the renderer bakes them, headless.
+  std::optional<Billboards> billboards;
+  if (options.billboards || options.lod == kBillboardLevel) {
+    HeadlessGl gl;
+    billboards = bakeBillboards(*source.library);
+  }
   const ForestGltfSummary summary =
-      exportForest(source.terrain, *source.library, forest, snapshot.trees, out, options);
+      exportForest(source.terrain, *source.library, forest, snapshot.trees, out, options,
+                   billboards ? &*billboards : nullptr);
   const auto& at = summary.treesAtLevel;
   const std::string levels =
-      options.maxTriangles > 0
-          ? fmt::format("{} at LOD0, {} at LOD1, {} at LOD2", at[0], at[1], at[2])
-          : "LOD " + args.lod;
+      options.maxTriangles > 0 ? fmt::format("{} at LOD0, {} at LOD1, {} at LOD2, {} as billboards",
+                                             at[0], at[1], at[2], at[3])
+                               : "LOD " + args.lod;
   std::cout << fmt::format(
       "{}: year {}, {} trees as {} of {} tree types ({}): {} triangles, terrain {}\n", args.out,
       year, summary.instances, options.instancing == Instancing::Gpu ? "GPU instances" : "nodes",
@@ -103,8 +116,9 @@ void addExportCommand(CLI::App& app) {
       ->add_option(
           "--lod", args->lod,
           "Level of detail of the tree meshes: 0 full, 1 clustered leaves, 2 crown proxies, "
-          "all (LOD0 with LOD1 and LOD2 through MSFT_lod)")
-      ->check(CLI::IsMember({"0", "1", "2", "all"}))
+          "billboard (crossed quads with pictures of the tree), all (LOD0 with the others "
+          "through MSFT_lod)")
+      ->check(CLI::IsMember({"0", "1", "2", "billboard", "all"}))
       ->excludes(maxTriangles);
   command
       ->add_option("--instancing", args->instancing,
@@ -117,6 +131,9 @@ void addExportCommand(CLI::App& app) {
                    "Leave out plants lower than this, metres (seedlings and saplings; default 0: "
                    "every living plant)")
       ->check(CLI::Range(0.0, 1000.0));
+  command->add_flag("--billboards", args->billboards,
+                    "Add the billboard level, baked by the renderer: the last level of --lod all, "
+                    "the coarsest of --max-triangles");
   command->add_flag("--wind", args->wind,
                     "Add the wind bases as vertex attributes (_SWAY_SIN, _SWAY_COS, _BEND_EAST, "
                     "_BEND_SOUTH) for an engine's vertex shader");

@@ -154,7 +154,12 @@ TEST(ExportCommand, BothModesAndTextGltfPassTheKhronosValidator) {
   r = ecoforest("export " + shortDefaultRun().string() + " --wind --min-height 2 --out " +
                 wind.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const std::filesystem::path& file : {exported("nodes"), exported("gpu"), text, wind}) {
+  const auto billboards = text.parent_path() / "billboards.glb";
+  r = ecoforest("export " + shortDefaultRun().string() +
+                " --instancing gpu --lod all --billboards --out " + billboards.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const std::filesystem::path& file :
+       {exported("nodes"), exported("gpu"), text, wind, billboards}) {
     CommandResult validated =
         eco::test::runCommand("node " + (kNode / "validate.mjs").string() + " " + file.string());
     EXPECT_EQ(validated.exitCode, 0) << file << validated.output;

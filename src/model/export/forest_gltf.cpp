@@ -3,10 +3,13 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string_view>
+#include <unordered_map>
 
 #include <glm/vec4.hpp>
 
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "model/export/gltf_builder.hpp"
 
 namespace eco {
@@ -120,11 +123,25 @@ void addWindAttributes(GltfBuilder& builder, tinygltf::Primitive& primitive,
   add("_BEND_SOUTH", wind.bendSouth);
 }
 
-// MSFT_screencoverage: the switching heights as fractions of the screen.
-tinygltf::Value screenCoverage(const ForestGltfScene& scene) {
+// A billboard's material: its own pictures of the tree, cut out where they are empty, seen
+// from both sides.
+Material billboardMaterial(const ForestGltfType& type, const Image& texture) {
+  Material m;
+  m.name = type.name + "_billboard";  // the first type showing these pictures
+  m.texture = texture;
+  m.alphaMask = true;
+  m.doubleSided = true;
+  m.roughness = 0.9f;
+  return m;
+}
+
+// MSFT_screencoverage: the least share of the screen's height each level is shown at, the
+// renderer's switching heights; a billboard, the last level, at any size.
+tinygltf::Value screenCoverage(const ForestGltfScene& scene, bool billboards) {
   tinygltf::Value::Array coverage;
   for (float pixels : scene.switchPixels)
     coverage.emplace_back(pixels / static_cast<double>(scene.screenHeight_px));
+  if (billboards) coverage.emplace_back(0.0);
   tinygltf::Value::Object extras;
   extras["MSFT_screencoverage"] = tinygltf::Value(coverage);
   return tinygltf::Value(extras);
@@ -155,8 +172,9 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
   summary.terrainTriangles = scene.terrain.triangleCount();
   roots.push_back(addTerrain(builder, scene.terrain));
 
-  // Materials per species and kind, added when first used.
+  // Materials per species and kind, added when first used; billboards' by their pictures.
   std::vector<std::vector<int>> materials(scene.species.size(), std::vector<int>(5, -1));
+  std::unordered_map<std::uint64_t, int> billboardMaterials;
   for (const ForestGltfType& type : scene.types) {
     if (type.trees.empty()) continue;
     const Species& species = *scene.species[type.species];
@@ -164,6 +182,19 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
       tinygltf::Mesh mesh;
       mesh.name = type.name + "_lod" + std::to_string(level);
       const std::vector<MeshPart>& parts = type.lods[level].parts;
+      if (level == kBillboardLevel) {
+        if (!type.billboardTexture || parts.size() != 1)
+          throw InternalError("tree type " + type.name + " has no billboard to export");
+        // Variants that share their pictures (the renderer's impostors) share one material.
+        const std::string_view bytes(
+            reinterpret_cast<const char*>(type.billboardTexture->rgba.data()),
+            type.billboardTexture->rgba.size());
+        auto [material, added] = billboardMaterials.try_emplace(fnv1a64(bytes), -1);
+        if (added)
+          material->second = builder.addMaterial(billboardMaterial(type, *type.billboardTexture));
+        builder.addPrimitive(mesh, parts[0], material->second);
+        return builder.addMesh(std::move(mesh));
+      }
       if (options.wind && type.wind[level].size() != parts.size())
         throw InternalError("tree type " + type.name + " has no wind bases to export");
       for (std::size_t p = 0; p < parts.size(); ++p) {
@@ -177,7 +208,7 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
     };
 
     // Each level's mesh, written when a tree first uses it.
-    std::array<int, kLodCount> meshes;
+    std::array<int, kExportLevels> meshes;
     meshes.fill(-1);
     auto meshAt = [&](int level) {
       if (meshes[level] < 0) meshes[level] = meshOfLevel(level);
@@ -201,16 +232,17 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
       };
       tinygltf::Node base = instancedNode(0);
       tinygltf::Value::Array ids;
-      for (int level = 1; level < kLodCount; ++level)
+      const int levels = options.billboards ? kExportLevels : kLodCount;
+      for (int level = 1; level < levels; ++level)
         ids.emplace_back(builder.addNode(instancedNode(level)));
       tinygltf::Value::Object msftLod;
       msftLod["ids"] = tinygltf::Value(ids);
       base.extensions["MSFT_lod"] = tinygltf::Value(msftLod);
-      base.extras = screenCoverage(scene);
+      base.extras = screenCoverage(scene, options.billboards);
       roots.push_back(builder.addNode(std::move(base)));
     } else {
       // One instanced node per level the type's trees are drawn at.
-      for (int level = 0; level < kLodCount; ++level) {
+      for (int level = 0; level < kExportLevels; ++level) {
         std::vector<ForestGltfTree> trees;
         for (const ForestGltfTree& tree : type.trees)
           if (levelOf(tree) == level) trees.push_back(tree);

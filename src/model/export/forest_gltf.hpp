@@ -12,11 +12,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "core/image.hpp"
 #include "model/mesh/lod.hpp"
 #include "model/mesh/mesh.hpp"
 #include "model/species.hpp"
@@ -44,13 +46,21 @@ struct WindBases {
   std::vector<glm::vec3> swaySin, swayCos, bendEast, bendSouth;
 };
 
+// The levels a tree can be exported at: the model's LOD0-LOD2 and, past them, a billboard
+// of crossed quads textured with pictures of the tree (the far level engines use).
+inline constexpr int kBillboardLevel = kLodCount;
+inline constexpr int kExportLevels = kLodCount + 1;
+
 // One tree type: its meshes and every tree drawn with it.
 struct ForestGltfType {
   std::string name;
-  int species = 0;                       // index into ForestGltfScene::species
-  std::array<TreeMesh, kLodCount> lods;  // the levels exported (others may stay empty)
-  // Per level, one entry per part of the mesh; empty: no wind data.
-  std::array<std::vector<WindBases>, kLodCount> wind;
+  int species = 0;  // index into ForestGltfScene::species
+  // The levels exported (others may stay empty); the billboard's one part is drawn with
+  // `billboardTexture` (sRGB with alpha, cut out at half), not a material of the species.
+  std::array<TreeMesh, kExportLevels> lods;
+  std::optional<Image> billboardTexture;
+  // Per level, one entry per part of the mesh; empty: no wind data (billboards never sway).
+  std::array<std::vector<WindBases>, kExportLevels> wind;
   std::vector<ForestGltfTree> trees;
 };
 
@@ -74,12 +84,13 @@ inline constexpr int kAllLods = -1;
 
 struct ForestGltfOptions {
   Instancing instancing = Instancing::Nodes;
-  // The level each type's mesh is exported at (0 full detail), or kAllLods (Gpu only): the
-  // type's node shows LOD0 and names two sibling nodes with LOD1 and LOD2 (the same
-  // instances), with the screen coverages at which to switch (MSFT_screencoverage).
-  // Viewers without MSFT_lod show LOD0.
+  // The level each type's mesh is exported at (0 full detail, kBillboardLevel), or kAllLods
+  // (Gpu only): the type's node shows LOD0 and names sibling nodes with LOD1, LOD2 and,
+  // with `billboards`, the billboard (the same instances), with the screen coverages at
+  // which to switch (MSFT_screencoverage). Viewers without MSFT_lod show LOD0.
   int lod = 1;
-  bool wind = false;  // the wind bases as vertex attributes (the types must carry them)
+  bool billboards = false;  // the types carry billboards: kAllLods and maxTriangles use them
+  bool wind = false;        // the wind bases as vertex attributes (the types must carry them)
   // A budget for the scene's triangles (terrain and every tree as drawn): each tree's level
   // is chosen by its height (render/scene/forest_export.hpp); 0: no budget, `lod` for all.
   std::size_t maxTriangles = 0;
@@ -90,7 +101,7 @@ struct ForestGltfSummary {
   std::size_t treeMeshes = 0;  // types with at least one tree
   std::size_t terrainTriangles = 0;
   std::size_t treeTriangles = 0;  // of every tree as drawn (at LOD0 with MSFT_lod)
-  std::array<std::size_t, kLodCount> treesAtLevel{};
+  std::array<std::size_t, kExportLevels> treesAtLevel{};
 };
 
 // Types without trees are left out. The per-instance attribute names, as EXT_mesh_gpu_

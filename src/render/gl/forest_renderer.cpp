@@ -164,6 +164,21 @@ int ForestRenderer::impostorSource(int type) const {
   return library_.typeIndex(t.species, 0, t.ageClass);
 }
 
+Image ForestRenderer::impostorFrameImage(int type, glm::ivec2 frame) const {
+  const int tile = impostorSettings_.tilePixels;
+  Image image(tile, tile);
+  std::vector<std::uint8_t> rows(image.rgba.size());
+  glGetTextureSubImage(atlases_[impostorSource(type)].albedo.id(), 0, frame.x * tile,
+                       frame.y * tile, 0, tile, tile, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                       static_cast<GLsizei>(rows.size()), rows.data());
+  // OpenGL's rows run bottom-up.
+  const std::size_t stride = static_cast<std::size_t>(tile) * 4;
+  for (int y = 0; y < tile; ++y)
+    std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>((tile - 1 - y) * stride), stride,
+                image.rgba.begin() + static_cast<std::ptrdiff_t>(y * stride));
+  return image;
+}
+
 void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;

@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/image.hpp"
 #include "render/gl/frame_uniforms.hpp"
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader.hpp"
@@ -67,6 +69,9 @@ class ForestRenderer {
   // the first one's. Below the impostor switch (100 px) the variants differ by a few pixels
   // while each tree's own yaw already picks a different frame; sharing bakes a third.
   int impostorSource(int type) const;
+  // The baked albedo of one impostor frame of a type (its source's), sRGB with alpha, row 0
+  // at the top (up in the frame's axes, impostor.hpp), tilePixels square.
+  Image impostorFrameImage(int type, glm::ivec2 frame) const;
 
  private:
   struct DrawRange {

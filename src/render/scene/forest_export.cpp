@@ -57,10 +57,11 @@ TreeMesh treeMesh(const WindMesh& wind) {
   return mesh;
 }
 
-// Each tree's level under a triangle budget: every tree starts at LOD2, then from the tallest
-// down each takes the finest level the budget still allows, never finer than a taller tree
-// could have, so detail goes where a viewer sees it first.
-void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles) {
+// Each tree's level under a triangle budget: every tree starts at the coarsest level (the
+// billboard, or LOD2 without billboards), then from the tallest down each takes the finest
+// level the budget still allows, never finer than a taller tree could have, so detail goes
+// where a viewer sees it first.
+void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles, int coarsest) {
   struct Choice {
     const ForestGltfType* type;
     ForestGltfTree* tree;
@@ -70,22 +71,23 @@ void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles) {
   for (ForestGltfType& type : scene.types)
     for (ForestGltfTree& tree : type.trees) {
       trees.push_back({&type, &tree});
-      used += type.lods[kLodCount - 1].triangleCount();
+      used += type.lods[coarsest].triangleCount();
     }
   if (used > maxTriangles)
     throw InputError({"export", 0, "--max-triangles"},
-                     fmt::format("the terrain and every tree at LOD{} already take {} triangles, "
+                     fmt::format("the terrain and every tree {} already take {} triangles, "
                                  "more than {}",
-                                 kLodCount - 1, used, maxTriangles));
+                                 coarsest == kBillboardLevel ? "as a billboard" : "at LOD2", used,
+                                 maxTriangles));
   std::sort(trees.begin(), trees.end(), [](const Choice& a, const Choice& b) {
     return a.tree->height_m != b.tree->height_m ? a.tree->height_m > b.tree->height_m
                                                 : a.tree->id < b.tree->id;
   });
   int finest = 0;
   for (const Choice& c : trees) {
-    const std::size_t coarse = c.type->lods[kLodCount - 1].triangleCount();
-    int level = kLodCount - 1;
-    for (int l = finest; l < kLodCount - 1; ++l) {
+    const std::size_t coarse = c.type->lods[coarsest].triangleCount();
+    int level = coarsest;
+    for (int l = finest; l < coarsest; ++l) {
       const std::size_t extra =
           c.type->lods[l].triangleCount() - std::min(coarse, c.type->lods[l].triangleCount());
       if (used + extra <= maxTriangles) {
@@ -101,11 +103,42 @@ void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles) {
 
 }  // namespace
 
+std::array<glm::ivec2, 2> billboardFrames(int frames) {
+  return {impostorFrame({1.0f, 0.0f, 0.0f}, frames), impostorFrame({0.0f, 0.0f, 1.0f}, frames)};
+}
+
+TreeMesh billboardMesh(const TreeType& type, int frames) {
+  TreeMesh mesh;
+  MeshPart& part = mesh.parts.emplace_back();
+  part.material = MaterialKind::LeafCluster;  // unused: the billboard has its own material
+  const glm::vec3 centre(type.bounds);
+  const float r = type.bounds.w;
+  const std::array<glm::ivec2, 2> views = billboardFrames(frames);
+  for (std::size_t view = 0; view < views.size(); ++view) {
+    const glm::vec3 f = frameDirection(views[view], frames);
+    glm::vec3 right, up;
+    frameAxes(f, right, up);
+    // The frame's picture: its top row is up, its left column -right; tile `view` of two.
+    const float u0 = 0.5f * static_cast<float>(view), u1 = u0 + 0.5f;
+    const auto first = static_cast<std::uint32_t>(part.positions.size());
+    part.addVertex(centre - r * right - r * up, f, {u0, 1.0f});
+    part.addVertex(centre + r * right - r * up, f, {u1, 1.0f});
+    part.addVertex(centre + r * right + r * up, f, {u1, 0.0f});
+    part.addVertex(centre - r * right + r * up, f, {u0, 0.0f});
+    part.addTriangle(first, first + 1, first + 2);
+    part.addTriangle(first, first + 2, first + 3);
+  }
+  return mesh;
+}
+
 ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& library,
                                 const Forest& forest, const std::vector<TreeRow>& rows,
-                                const ForestGltfOptions& options) {
+                                const ForestGltfOptions& options, const Billboards* billboards) {
   if (rows.size() != forest.size())
     throw InternalError("the forest and its trees' rows differ in length");
+  const bool withBillboards = options.billboards || options.lod == kBillboardLevel;
+  if (withBillboards && (!billboards || billboards->textures.size() != library.types().size()))
+    throw InternalError("billboards were asked for without their pictures");
   ForestGltfScene scene;
   scene.terrain = terrainPart(terrain);
   for (const Species& s : library.species()) scene.species.push_back(&s);
@@ -132,6 +165,10 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
           for (const WindPart& part : type.meshes.lods[level].parts)
             out.wind[level].push_back(windBases(part));
       }
+    if (withBillboards) {
+      out.lods[kBillboardLevel] = billboardMesh(type, billboards->settings.frames);
+      out.billboardTexture = billboards->textures[t];
+    }
     out.trees.reserve(members[t].size());
     for (std::size_t i : members[t]) {
       const TreeRow& row = rows[i];
@@ -145,15 +182,17 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
                            .vigor = row.vigor});
     }
   }
-  if (options.maxTriangles > 0) chooseLevels(scene, options.maxTriangles);
+  if (options.maxTriangles > 0)
+    chooseLevels(scene, options.maxTriangles, withBillboards ? kBillboardLevel : kLodCount - 1);
   return scene;
 }
 
 ForestGltfSummary exportForest(const Terrain& terrain, const TreeLibrary& library,
                                const Forest& forest, const std::vector<TreeRow>& rows,
-                               const std::filesystem::path& file,
-                               const ForestGltfOptions& options) {
-  return writeForestGltf(forestGltfScene(terrain, library, forest, rows, options), file, options);
+                               const std::filesystem::path& file, const ForestGltfOptions& options,
+                               const Billboards* billboards) {
+  return writeForestGltf(forestGltfScene(terrain, library, forest, rows, options, billboards), file,
+                         options);
 }
 
 }  // namespace eco

@@ -26,8 +26,8 @@ ForestGltfScene smallScene(const Species& species) {
   for (const char* name : {"one", "empty"}) {
     ForestGltfType& type = scene.types.emplace_back();
     type.name = name;
-    for (TreeMesh& mesh : type.lods) {
-      MeshPart& bark = mesh.parts.emplace_back();
+    for (int level = 0; level < kLodCount; ++level) {  // the model's levels
+      MeshPart& bark = type.lods[level].parts.emplace_back();
       bark.addVertex({0, 0, 0}, {1, 0, 0}, {0, 0});
       bark.addVertex({0, 1, 0}, {1, 0, 0}, {0, 1});
       bark.addVertex({0, 0, 1}, {1, 0, 0}, {1, 0});
@@ -123,6 +123,40 @@ TEST(ForestGltf, NodesGiveEachTreeItsOwnNodeSharingTheTypesMesh) {
   EXPECT_EQ(second.extras.Get("height_m").GetNumberAsDouble(), 31.25);
   EXPECT_EQ(second.extras.Get("dbh_m").GetNumberAsDouble(), 0.5);
   EXPECT_EQ(second.extras.Get("vigor").GetNumberAsDouble(), 0.75);
+}
+
+// The billboard level: its own material with the pictures, cut out and double-sided; in
+// MSFT_lod the last level, shown at any size.
+TEST(ForestGltf, BillboardsHaveTheirOwnPicturesAndAreTheLastLevel) {
+  const Species beech = test::loadNamed("beech");
+  ForestGltfScene scene = smallScene(beech);
+  for (ForestGltfType& type : scene.types) {
+    MeshPart& quad = type.lods[kBillboardLevel].parts.emplace_back();
+    quad.addVertex({0, 0, 0}, {0, 0, 1}, {0, 1});
+    quad.addVertex({1, 0, 0}, {0, 0, 1}, {1, 1});
+    quad.addVertex({1, 1, 0}, {0, 0, 1}, {1, 0});
+    quad.addTriangle(0, 1, 2);
+    type.billboardTexture = Image(4, 2);
+  }
+  const auto dir = test::freshDirectory("forest_gltf_billboards");
+  writeForestGltf(scene, dir / "b.glb", {.lod = kBillboardLevel});
+  const tinygltf::Model model = test::loadGltf(dir / "b.glb");
+  const tinygltf::Material& material = model.materials.back();
+  EXPECT_EQ(material.name, "one_billboard");
+  EXPECT_EQ(material.alphaMode, "MASK");
+  EXPECT_TRUE(material.doubleSided);
+  EXPECT_GE(material.pbrMetallicRoughness.baseColorTexture.index, 0);
+  EXPECT_EQ(model.nodes[1].mesh, model.nodes[2].mesh);  // both trees on the billboard mesh
+  EXPECT_EQ(model.meshes[model.nodes[1].mesh].name, "one_lod3");
+
+  writeForestGltf(scene, dir / "all.glb",
+                  {.instancing = Instancing::Gpu, .lod = kAllLods, .billboards = true});
+  const tinygltf::Model all = test::loadGltf(dir / "all.glb");
+  const tinygltf::Node& base = all.nodes.back();
+  EXPECT_EQ(base.extensions.at("MSFT_lod").Get("ids").ArrayLen(), 3u);
+  const tinygltf::Value& coverage = base.extras.Get("MSFT_screencoverage");
+  ASSERT_EQ(coverage.ArrayLen(), 4u);
+  EXPECT_EQ(coverage.Get(3).GetNumberAsDouble(), 0.0);
 }
 
 // A .gltf keeps its bytes in STEM.bin beside it rather than as base64 inside the JSON.

@@ -177,6 +177,39 @@ TEST(ForestGltf, ATriangleBudgetGoesToTheTallestTreesFirst) {
                InputError);
 }
 
+// Two crossed quads, each the square of the type's bounding sphere across its frame's axes,
+// facing its direction: east's frame on the left half of the picture, south's on the right.
+TEST(ForestGltf, ABillboardIsTwoQuadsFacingTheirFrames) {
+  EXPECT_EQ(billboardFrames(8), (std::array<glm::ivec2, 2>{glm::ivec2(7, 7), glm::ivec2(7, 0)}));
+  const TreeType& type = test::smallLibrary().types()[0];
+  const TreeMesh mesh = billboardMesh(type, 8);
+  ASSERT_EQ(mesh.parts.size(), 1u);
+  const MeshPart& quads = mesh.parts[0];
+  ASSERT_EQ(quads.positions.size(), 8u);
+  EXPECT_EQ(quads.triangleCount(), 4u);
+  for (int view = 0; view < 2; ++view) {
+    const glm::vec3 f = frameDirection(billboardFrames(8)[view], 8);
+    EXPECT_GT(view == 0 ? f.x : f.z, 0.95f);  // nearly horizontal, toward east or south
+    for (int corner = 0; corner < 4; ++corner) {
+      const std::size_t v = 4 * view + corner;
+      EXPECT_EQ(quads.normals[v], f);
+      // On the plane through the sphere's centre, at its radius from it along both axes.
+      const glm::vec3 offset = quads.positions[v] - glm::vec3(type.bounds);
+      EXPECT_NEAR(glm::dot(offset, f), 0.0f, 1e-4f);
+      EXPECT_NEAR(glm::length(offset), std::sqrt(2.0f) * type.bounds.w, 1e-3f);
+      EXPECT_GE(quads.uvs[v].x, 0.5f * view);  // its half of the picture
+      EXPECT_LE(quads.uvs[v].x, 0.5f * (view + 1));
+    }
+  }
+  // Triangles face the view they show.
+  for (std::size_t t = 0; t < quads.indices.size(); t += 3) {
+    const glm::vec3 a = quads.positions[quads.indices[t]],
+                    b = quads.positions[quads.indices[t + 1]],
+                    c = quads.positions[quads.indices[t + 2]];
+    EXPECT_GT(glm::dot(glm::cross(b - a, c - a), quads.normals[quads.indices[t]]), 0.0f);
+  }
+}
+
 TEST(ForestGltf, TheTerrainsBoundingBoxIsTheHeightmaps) {
   const Scene scene = smallScene();
   const auto file = test::freshDirectory("forest_gltf_box") / "forest.gltf";

@@ -57,10 +57,11 @@ TreeMesh treeMesh(const WindMesh& wind) {
   return mesh;
 }
 
-// Each tree's level under a triangle budget: every tree starts at the coarsest level (the
-// billboard, or LOD2 without billboards), then from the tallest down each takes the finest
-// level the budget still allows, never finer than a taller tree could have, so detail goes
-// where a viewer sees it first.
+// Each tree's level under a triangle budget. Every tree starts at the coarsest level (the
+// billboard, or LOD2 without billboards); then level by level toward LOD0, the tallest
+// trees first, each tree of the previous pass moves one level finer while the budget
+// allows. So many trees get some detail before a few get all of it, and no tree is finer
+// than a taller one: the tallest are the ones seen from farthest.
 void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles, int coarsest) {
   struct Choice {
     const ForestGltfType* type;
@@ -71,6 +72,7 @@ void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles, int coarsest
   for (ForestGltfType& type : scene.types)
     for (ForestGltfTree& tree : type.trees) {
       trees.push_back({&type, &tree});
+      tree.level = coarsest;
       used += type.lods[coarsest].triangleCount();
     }
   if (used > maxTriangles)
@@ -83,22 +85,16 @@ void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles, int coarsest
     return a.tree->height_m != b.tree->height_m ? a.tree->height_m > b.tree->height_m
                                                 : a.tree->id < b.tree->id;
   });
-  int finest = 0;
-  for (const Choice& c : trees) {
-    const std::size_t coarse = c.type->lods[coarsest].triangleCount();
-    int level = coarsest;
-    for (int l = finest; l < coarsest; ++l) {
-      const std::size_t extra =
-          c.type->lods[l].triangleCount() - std::min(coarse, c.type->lods[l].triangleCount());
-      if (used + extra <= maxTriangles) {
-        level = l;
-        used += extra;
-        break;
-      }
+  for (int level = coarsest - 1; level >= 0; --level)
+    for (const Choice& c : trees) {
+      if (c.tree->level != level + 1) break;  // refined no further in the previous pass
+      const std::size_t finer = c.type->lods[level].triangleCount();
+      const std::size_t now = c.type->lods[level + 1].triangleCount();
+      const std::size_t extra = finer > now ? finer - now : 0;
+      if (used + extra > maxTriangles) break;
+      used += extra;
+      c.tree->level = level;
     }
-    finest = level;
-    c.tree->level = level;
-  }
 }
 
 }  // namespace

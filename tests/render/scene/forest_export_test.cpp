@@ -165,7 +165,7 @@ TEST(ForestGltf, ATriangleBudgetGoesToTheTallestTreesFirst) {
     for (const ForestGltfTree& tree : t.trees) levels.emplace_back(tree.height_m, tree.level);
   std::sort(levels.begin(), levels.end(), std::greater<>());
   EXPECT_EQ(levels.front().second, 0);  // the tallest in full detail
-  EXPECT_EQ(levels.back().second, 2);   // the shortest as proxies
+  EXPECT_GT(levels.back().second, 0);   // the shortest coarser
   for (std::size_t i = 1; i < levels.size(); ++i) EXPECT_GE(levels[i].second, levels[i - 1].second);
   // The file holds what was chosen.
   const auto file = test::freshDirectory("forest_gltf_budget") / "forest.glb";

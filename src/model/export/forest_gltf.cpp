@@ -2,11 +2,14 @@
 
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string_view>
 #include <unordered_map>
 
+#include <fmt/format.h>
 #include <glm/vec4.hpp>
+#include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
 #include "core/hash.hpp"
@@ -86,28 +89,26 @@ tinygltf::Value::Object addInstancing(GltfBuilder& builder,
   return instancing;
 }
 
-// A tree's own node (Instancing::Nodes): its transform, and its CSV row as extras, which
-// Blender shows as the object's custom properties.
-tinygltf::Node treeNode(const ForestGltfTree& tree, const std::string& species, int mesh) {
-  tinygltf::Node node;
-  node.name = species + "_" + std::to_string(tree.id);
-  node.mesh = mesh;
-  node.translation = {tree.translation.x, tree.translation.y, tree.translation.z};
+// A tree's own node (Instancing::Nodes) as JSON: its transform, and its CSV row as extras,
+// which Blender shows as the object's custom properties. Written as text because tinygltf's
+// objects would cost kilobytes a tree (gigabytes for a valley). `species` is the name as a
+// JSON string's inside (escaped, without quotes). Floats print as the shortest text that
+// reads back to the same float.
+void appendTreeNode(std::string& out, const ForestGltfTree& tree, std::string_view species,
+                    int mesh) {
   const glm::vec4 q = yawRotation(tree.yaw_rad);
-  node.rotation = {q.x, q.y, q.z, q.w};
-  node.scale = {tree.scale.x, tree.scale.y, tree.scale.z};
-  tinygltf::Value::Object extras;
-  // Whole numbers as JSON integers where they fit (tinygltf's integers are 32-bit).
-  extras["id"] = tree.id <= std::numeric_limits<int>::max()
-                     ? tinygltf::Value(static_cast<int>(tree.id))
-                     : tinygltf::Value(static_cast<double>(tree.id));
-  extras["species"] = tinygltf::Value(species);
-  extras["age"] = tinygltf::Value(static_cast<int>(tree.age_years));
-  extras["height_m"] = tinygltf::Value(static_cast<double>(tree.height_m));
-  extras["dbh_m"] = tinygltf::Value(static_cast<double>(tree.dbh_m));
-  extras["vigor"] = tinygltf::Value(static_cast<double>(tree.vigor));
-  node.extras = tinygltf::Value(extras);
-  return node;
+  const glm::vec3 t = tree.translation, s = tree.scale;
+  // Ids past a 32-bit int as a real number: readers such as tinygltf parse integers into int.
+  const std::string id = tree.id <= static_cast<std::uint64_t>(std::numeric_limits<int>::max())
+                             ? std::to_string(tree.id)
+                             : std::to_string(tree.id) + ".0";
+  if (!out.empty()) out += ',';
+  fmt::format_to(std::back_inserter(out),
+                 "{{\"name\":\"{}_{}\",\"mesh\":{},\"translation\":[{},{},{}],"
+                 "\"rotation\":[{},{},{},{}],\"scale\":[{},{},{}],\"extras\":{{\"id\":{},"
+                 "\"species\":\"{}\",\"age\":{},\"height_m\":{},\"dbh_m\":{},\"vigor\":{}}}}}",
+                 species, tree.id, mesh, t.x, t.y, t.z, q.x, q.y, q.z, q.w, s.x, s.y, s.z, id,
+                 species, static_cast<int>(tree.age_years), tree.height_m, tree.dbh_m, tree.vigor);
 }
 
 void addWindAttributes(GltfBuilder& builder, tinygltf::Primitive& primitive,
@@ -175,6 +176,8 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
   // Materials per species and kind, added when first used; billboards' by their pictures.
   std::vector<std::vector<int>> materials(scene.species.size(), std::vector<int>(5, -1));
   std::unordered_map<std::uint64_t, int> billboardMaterials;
+  std::string treeNodes;  // Instancing::Nodes: each tree's node as JSON
+  std::size_t treeNodeCount = 0;
   for (const ForestGltfType& type : scene.types) {
     if (type.trees.empty()) continue;
     const Species& species = *scene.species[type.species];
@@ -219,8 +222,11 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
     };
 
     if (!gpu) {
+      const std::string name = nlohmann::json(species.name).dump();  // quoted and escaped
+      const std::string_view inner(name.data() + 1, name.size() - 2);
       for (const ForestGltfTree& tree : type.trees)
-        roots.push_back(builder.addNode(treeNode(tree, species.name, meshAt(levelOf(tree)))));
+        appendTreeNode(treeNodes, tree, inner, meshAt(levelOf(tree)));
+      treeNodeCount += type.trees.size();
     } else if (options.lod == kAllLods) {
       const tinygltf::Value::Object instancing = addInstancing(builder, type.trees, type.species);
       auto instancedNode = [&](int level) {
@@ -263,7 +269,9 @@ ForestGltfSummary writeForestGltf(const ForestGltfScene& scene, const std::files
     summary.instances += type.trees.size();
     ++summary.treeMeshes;
   }
+  // The trees' own nodes come after every other node (GltfBuilder::addRootNodesJson).
   builder.setScene(std::move(roots), speciesNames(scene));
+  builder.addRootNodesJson(treeNodes, treeNodeCount);
   builder.write(file);
   return summary;
 }

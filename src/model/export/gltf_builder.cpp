@@ -1,6 +1,9 @@
 #include "model/export/gltf_builder.hpp"
 
 #include <cctype>
+#include <cstdint>
+#include <iterator>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -114,33 +117,91 @@ std::filesystem::path GltfBuilder::binaryFileFor(const std::filesystem::path& gl
   return std::filesystem::path(gltf).replace_extension(".bin");
 }
 
+int GltfBuilder::addRootNodesJson(std::string_view objects, std::size_t count) {
+  if (count == 0) return -1;
+  const int first = static_cast<int>(model_.nodes.size() + rawNodeCount_);
+  if (!rawNodes_.empty()) rawNodes_ += ',';
+  rawNodes_ += objects;
+  rawNodeCount_ += count;
+  return first;
+}
+
 void GltfBuilder::write(const std::filesystem::path& file) {
   const bool binary = file.extension() == ".glb" || file.extension() == ".GLB";
-  tinygltf::TinyGLTF writer;
-  std::ostringstream text;
-  if (binary) {
-    if (!writer.WriteGltfSceneToStream(&model_, text, /*prettyPrint=*/false, true))
-      throw InternalError("tinygltf could not serialise " + file.string());
-    AtomicFile out(file);
-    out.write(text.view());
-    out.commit();
-    return;
-  }
-  // tinygltf's stream writer embeds buffers as base64 (a third larger, slow to parse): the
-  // JSON is written without the bytes and its buffer then points at STEM.bin.
+  // The JSON without the buffer's bytes (tinygltf's stream writer would embed them as
+  // base64) and without the raw nodes: both are put in place below.
   std::vector<unsigned char> bytes = std::move(model_.buffers[0].data);
   model_.buffers[0].data.clear();
-  const bool serialised = writer.WriteGltfSceneToStream(&model_, text, true, false);
+  std::ostringstream text;
+  const bool serialised = tinygltf::TinyGLTF().WriteGltfSceneToStream(&model_, text, false, false);
   model_.buffers[0].data = std::move(bytes);
   if (!serialised) throw InternalError("tinygltf could not serialise " + file.string());
+  const std::vector<unsigned char>& data = model_.buffers[0].data;
   nlohmann::ordered_json json = nlohmann::ordered_json::parse(text.str());
   const std::filesystem::path bin = binaryFileFor(file);
-  json["buffers"][0] = {{"byteLength", model_.buffers[0].data.size()},
-                        {"uri", uriOf(bin.filename().string())}};
-  AtomicFileSet files;
-  files.add(bin).write(model_.buffers[0].data);
-  files.add(file).write(json.dump(2) + "\n");
-  files.commit();
+  if (binary)
+    json["buffers"][0] = {{"byteLength", data.size()}};
+  else
+    json["buffers"][0] = {{"byteLength", data.size()}, {"uri", uriOf(bin.filename().string())}};
+  // The raw nodes and their root indices go where two markers stand in the JSON text.
+  constexpr std::string_view kNodes = "\"@ecoforest:nodes@\"", kRoots = "\"@ecoforest:roots@\"";
+  std::string roots;
+  if (rawNodeCount_ > 0) {
+    json["nodes"].push_back(kNodes.substr(1, kNodes.size() - 2));
+    json["scenes"][0]["nodes"].push_back(kRoots.substr(1, kRoots.size() - 2));
+    roots.reserve(rawNodeCount_ * 8);
+    for (std::size_t i = 0; i < rawNodeCount_; ++i)
+      fmt::format_to(std::back_inserter(roots), "{}{}", i ? "," : "", model_.nodes.size() + i);
+  }
+  const std::string head = json.dump(binary ? -1 : 2);
+  std::vector<std::string_view> pieces;
+  std::size_t from = 0;
+  for (auto [marker, replacement] : {std::pair{kNodes, std::string_view(rawNodes_)},
+                                     std::pair{kRoots, std::string_view(roots)}}) {
+    if (rawNodeCount_ == 0) break;
+    const std::size_t at = head.find(marker, from);
+    if (at == std::string::npos) throw InternalError("glTF node markers out of order");
+    pieces.push_back(std::string_view(head).substr(from, at - from));
+    pieces.push_back(replacement);
+    from = at + marker.size();
+  }
+  pieces.push_back(std::string_view(head).substr(from));
+  std::size_t jsonBytes = 0;
+  for (std::string_view piece : pieces) jsonBytes += piece.size();
+
+  if (!binary) {
+    AtomicFileSet files;
+    files.add(bin).write(data);
+    AtomicFile& out = files.add(file);
+    for (std::string_view piece : pieces) out.write(piece);
+    out.write("\n");
+    files.commit();
+    return;
+  }
+  // The GLB container: a header, the JSON chunk padded with spaces, the binary chunk padded
+  // with zeros, each chunk 4-byte aligned (glTF 2.0, section 4.4).
+  auto padded = [](std::size_t n) { return (n + 3) & ~std::size_t{3}; };
+  const std::size_t jsonChunk = padded(jsonBytes), binChunk = padded(data.size());
+  const std::size_t total = 12 + 8 + jsonChunk + (data.empty() ? 0 : 8 + binChunk);
+  if (total > std::numeric_limits<std::uint32_t>::max())
+    throw InputError({file.string(), 0, ""},
+                     "the forest is larger than a .glb holds (4 GiB): export fewer trees "
+                     "(--min-height) or use --instancing gpu");
+  auto word = [](std::uint32_t v) {
+    return std::string{static_cast<char>(v & 0xff), static_cast<char>((v >> 8) & 0xff),
+                       static_cast<char>((v >> 16) & 0xff), static_cast<char>(v >> 24)};
+  };
+  AtomicFile out(file);
+  out.write(word(0x46546C67u) + word(2) + word(static_cast<std::uint32_t>(total)));
+  out.write(word(static_cast<std::uint32_t>(jsonChunk)) + word(0x4E4F534Au));
+  for (std::string_view piece : pieces) out.write(piece);
+  out.write(std::string(jsonChunk - jsonBytes, ' '));
+  if (!data.empty()) {
+    out.write(word(static_cast<std::uint32_t>(binChunk)) + word(0x004E4942u));
+    out.write(data);
+    out.write(std::string(binChunk - data.size(), '\0'));
+  }
+  out.commit();
 }
 
 int GltfBuilder::addTexture(const Image& image, bool repeat, const std::string& name) {

@@ -2,11 +2,13 @@
 // whole-forest export: one binary buffer, accessors over it, PBR materials with embedded PNG
 // textures, meshes with one primitive per material part. write() chooses the container by
 // extension: .glb binary, .gltf JSON with the buffer beside it as STEM.bin; atomically.
+// tinygltf serialises the JSON; the GLB container and the buffer's place are written here.
 #pragma once
 
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -57,6 +59,11 @@ class GltfBuilder {
   void addPrimitive(tinygltf::Mesh& mesh, const MeshPart& part, int material);
   int addMesh(tinygltf::Mesh mesh);
   int addNode(tinygltf::Node node);
+  // Nodes already written as JSON objects, comma-separated, for scenes of millions of nodes
+  // (tinygltf's objects cost kilobytes each while writing): they follow every node added
+  // with addNode, so they are added last, and they are roots of the scene. Returns the
+  // index the first of them will have.
+  int addRootNodesJson(std::string_view objects, std::size_t count);
   // The scene of the given root nodes (the default scene), with optional extras.
   void setScene(std::vector<int> roots, tinygltf::Value extras = {});
   void useExtension(const std::string& name, bool required);
@@ -70,6 +77,8 @@ class GltfBuilder {
   int addTexture(const Image& image, bool repeat, const std::string& name);
 
   tinygltf::Model model_;
+  std::string rawNodes_;  // addRootNodesJson's, comma-separated
+  std::size_t rawNodeCount_ = 0;
 };
 
 }  // namespace eco

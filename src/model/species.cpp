@@ -1,5 +1,8 @@
 #include "model/species.hpp"
 
+#include <algorithm>
+
+#include "core/names.hpp"
 #include "core/toml_reader.hpp"
 #include "model/lsystem/deriver.hpp"
 #include "model/lsystem/parser.hpp"
@@ -116,6 +119,13 @@ const char* toString(LeafDistribution distribution) {
       return "coniferous";
   }
   return "?";
+}
+
+bool Species::isCalled(std::string_view called) const {
+  return sameNameIgnoringCase(name, called) ||
+         std::any_of(commonNames.begin(), commonNames.end(), [&](const std::string& common) {
+           return sameNameIgnoringCase(common, called);
+         });
 }
 
 Species loadSpecies(const std::filesystem::path& file) {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <glm/vec3.hpp>
 
@@ -87,6 +88,8 @@ struct Species {
   std::string name;
   std::string latinName;
   std::vector<std::string> commonNames;  // other names it is called by ("hazel")
+  // Whether `name` is its name or one of its common names, ignoring case.
+  bool isCalled(std::string_view name) const;
   std::filesystem::path file;
   TreeGenerator generator = TreeGenerator::Strand;
   StrandParams strand;  // the strand model's parameters; defaults for L-system species

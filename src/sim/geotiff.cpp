@@ -38,8 +38,10 @@ void registerTags() {
   std::call_once(once, [] {
     XTIFFInitialize();
     previousExtender = TIFFSetTagExtender(addGdalTags);
-    // libtiff's warnings (unknown tags of other writers) are not the user's concern here.
+    // libtiff's warnings (unknown tags of other writers) and messages are not the user's
+    // concern here: a file it cannot read is reported as an InputError.
     TIFFSetWarningHandler(nullptr);
+    TIFFSetErrorHandler(nullptr);
   });
 }
 
@@ -59,7 +61,6 @@ unsigned short shortKey(GTIF* gtif, geokey_t key) {
 
 GeoTiffTags readGeoTiffTags(const std::filesystem::path& file) {
   registerTags();
-  TIFFSetErrorHandler(nullptr);
   std::unique_ptr<TIFF, TiffCloser> tiff(XTIFFOpen(file.c_str(), "r"));
   if (!tiff) throw InputError({file.string(), 0, ""}, "not a TIFF file libtiff can read");
   const std::string where = file.string();

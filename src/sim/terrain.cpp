@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <limits>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/names.hpp"
 #include "core/random.hpp"
 #include "sim/geotiff.hpp"
 #include "sim/image_io.hpp"
@@ -29,10 +29,8 @@ Field maskOutside(const Terrain& terrain, Field field) {
 namespace {
 
 bool isTiff(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return extension == ".tif" || extension == ".tiff";
+  const std::string extension = file.extension().string();
+  return sameNameIgnoringCase(extension, ".tif") || sameNameIgnoringCase(extension, ".tiff");
 }
 
 // The outside cells take heights that continue the terrain: layer by layer from the

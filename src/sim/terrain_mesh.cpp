@@ -96,6 +96,19 @@ TerrainRim terrainRim(const Grid& g) {
   return rim;
 }
 
+std::vector<DrawnVertex> drawnTerrainVertices(const Terrain& terrain, const TerrainRim& rim) {
+  const Grid& g = terrain.grid;
+  std::vector<DrawnVertex> vertices;
+  vertices.reserve(g.cellCount() + rim.vertices.size());
+  auto add = [&](const RimVertex& v) {
+    vertices.push_back({v.position(terrain), terrainNormal(terrain, v.x, v.y), v.mapUv(g)});
+  };
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) add({.x = x, .y = y});  // a cell is a rim vertex unmoved
+  for (const RimVertex& v : rim.vertices) add(v);
+  return vertices;
+}
+
 glm::vec3 cellPosition(const Terrain& terrain, int x, int y) {
   const Grid& g = terrain.grid;
   return {static_cast<float>(g.eastOf(x)), static_cast<float>(g.northOf(y)),

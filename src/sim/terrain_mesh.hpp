@@ -44,6 +44,16 @@ struct TerrainRim {
 };
 TerrainRim terrainRim(const Grid& grid);
 
+// Every vertex the renderer and the glTF export draw, in the order terrainTriangles and the
+// rim's triangles index them: the cells' row by row, then the rim's; in the map frame, with
+// the terrain's normal and the map coordinate (RimVertex::mapUv).
+struct DrawnVertex {
+  glm::vec3 position;
+  glm::dvec3 normal;
+  glm::vec2 mapUv;
+};
+std::vector<DrawnVertex> drawnTerrainVertices(const Terrain& terrain, const TerrainRim& rim);
+
 // The height gradient of a cell: dz/dx east and dz/dy north, metres per metre, by Horn's
 // (1981) third-order finite differences on the 3 x 3 neighbourhood with separate east-west
 // and north-south cell sizes. Past the edges the surface is continued linearly, so edge

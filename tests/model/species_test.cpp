@@ -53,6 +53,16 @@ TEST(Species, PineHoldsThePapersNumbers) {
   EXPECT_DOUBLE_EQ(p.graphs.alphaG.points()[0].y, 128.8);
 }
 
+TEST(Species, IsCalledByItsNameOrACommonNameIgnoringCase) {
+  const Species shrub = test::loadNamed("shrub");
+  EXPECT_EQ(shrub.commonNames, (std::vector<std::string>{"hazel", "common hazel"}));
+  EXPECT_TRUE(shrub.isCalled("shrub"));
+  EXPECT_TRUE(shrub.isCalled("Hazel"));
+  EXPECT_TRUE(shrub.isCalled("COMMON HAZEL"));
+  EXPECT_FALSE(shrub.isCalled("hazelnut"));
+  EXPECT_FALSE(test::loadNamed("beech").isCalled("hazel"));
+}
+
 TEST(Species, DesignedSpeciesLoad) {
   for (const char* name : {"maple", "shrub"}) {
     Species s = test::loadNamed(name);

@@ -34,18 +34,10 @@ TerrainRenderer::TerrainRenderer(const Terrain& terrain)
   const FieldStats range = statsOf(terrain.height_m);
   lowest_m_ = static_cast<float>(range.min);
   highest_m_ = static_cast<float>(range.max);
-  std::vector<TerrainVertex> vertices(g.cellCount());
-  for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x) {
-      TerrainVertex& v = vertices[g.index(x, y)];
-      v.position = worldFromMap(cellPosition(terrain, x, y));
-      v.normal = worldDirectionFromMap(terrainNormal(terrain, x, y));
-      v.mapUv = {(x + 0.5f) / g.width, (y + 0.5f) / g.height};
-    }
   const TerrainRim rim = terrainRim(g);
-  for (const RimVertex& r : rim.vertices)
-    vertices.push_back({worldFromMap(r.position(terrain)),
-                        worldDirectionFromMap(terrainNormal(terrain, r.x, r.y)), r.mapUv(g)});
+  std::vector<TerrainVertex> vertices;
+  for (const DrawnVertex& v : drawnTerrainVertices(terrain, rim))
+    vertices.push_back({worldFromMap(v.position), worldDirectionFromMap(v.normal), v.mapUv});
   // Triangles in square chunks of kChunkCells, each with a bounding sphere for culling.
   std::vector<std::uint32_t> indices;
   indices.reserve(static_cast<std::size_t>(g.width - 1) * (g.height - 1) * 6);

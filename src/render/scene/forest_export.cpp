@@ -19,17 +19,11 @@ MeshPart terrainPart(const Terrain& terrain) {
   const Grid& g = terrain.grid;
   MeshPart part;
   part.material = MaterialKind::Bark;  // unused: the terrain has its own material
-  for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x)
-      part.addVertex(worldFromMap(cellPosition(terrain, x, y)),
-                     worldDirectionFromMap(terrainNormal(terrain, x, y)),
-                     {(x + 0.5f) / g.width, (y + 0.5f) / g.height});
+  const TerrainRim rim = terrainRim(g);
+  for (const DrawnVertex& v : drawnTerrainVertices(terrain, rim))
+    part.addVertex(worldFromMap(v.position), worldDirectionFromMap(v.normal), v.mapUv);
   const std::vector<std::uint32_t> triangles = terrainTriangles(g);
   part.indices.assign(triangles.begin(), triangles.end());
-  const TerrainRim rim = terrainRim(g);
-  for (const RimVertex& v : rim.vertices)
-    part.addVertex(worldFromMap(v.position(terrain)),
-                   worldDirectionFromMap(terrainNormal(terrain, v.x, v.y)), v.mapUv(g));
   part.indices.insert(part.indices.end(), rim.triangles.begin(), rim.triangles.end());
   return part;
 }

@@ -91,18 +91,15 @@ std::vector<int> plantedSpecies(const Scenario& scenario,
                                 const std::vector<EcosystemSpecies>& all) {
   std::vector<int> indices;
   for (const Planting& planting : scenario.planting) {
-    // A species by its name or a common name, ignoring case.
-    std::vector<std::string> names;
     const auto found = std::find_if(all.begin(), all.end(), [&](const EcosystemSpecies& s) {
-      names.push_back(s.species.name);
-      if (sameNameIgnoringCase(s.species.name, planting.species)) return true;
-      return std::any_of(
-          s.species.commonNames.begin(), s.species.commonNames.end(),
-          [&](const std::string& n) { return sameNameIgnoringCase(n, planting.species); });
+      return s.species.isCalled(planting.species);
     });
-    if (found == all.end())
+    if (found == all.end()) {
+      std::vector<std::string> names;
+      for (const EcosystemSpecies& s : all) names.push_back(s.species.name);
       throw InputError(planting.where, "no species '" + planting.species + "' in the scenario" +
                                            didYouMean(planting.species, names));
+    }
     indices.push_back(static_cast<int>(found - all.begin()));
   }
   return indices;

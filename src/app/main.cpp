@@ -1,6 +1,7 @@
 // The ecoforest command line. Errors are caught here, in one place (README, "Exit codes"):
 // bad input exits with 2 and "ecoforest: error: FILE:LINE: message", a machine that lacks
 // what the work needs with 3 and "ecoforest: cannot run here: ...", a bug with 1.
+#include <csignal>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -15,8 +16,14 @@
 #include "app/validate_command.hpp"
 #include "app/view_command.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 
 int main(int argc, char** argv) {
+  // Ctrl-C removes the temporaries of whatever is being written (core/interrupt.hpp).
+  eco::installInterruptCleanup();
+  // A file-size limit (ulimit -f) then fails a write with EFBIG, reported like a full disk,
+  // instead of killing the process with the temporary left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"ecoforest grows forests: procedural EcoMod trees, ecosystems, renders and exports"};
   app.set_version_flag("--version", std::string("ecoforest ") + ECOFOREST_VERSION);
   app.require_subcommand(1);

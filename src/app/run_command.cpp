@@ -1,6 +1,5 @@
 #include "app/run_command.hpp"
 
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -12,6 +11,7 @@
 #include "app/data_paths.hpp"
 #include "app/run_progress.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "sim/run/simulation.hpp"
 
 namespace eco {
@@ -27,10 +27,6 @@ struct RunArguments {
 
 std::atomic<bool> stopRequested{false};
 
-extern "C" void requestStop(int) {
-  stopRequested = true;
-}
-
 int runScenario(const RunArguments& args) {
   std::optional<tbb::global_control> threads;
   if (args.threads) threads.emplace(tbb::global_control::max_allowed_parallelism, *args.threads);
@@ -42,12 +38,12 @@ int runScenario(const RunArguments& args) {
   options.programVersion = ECOFOREST_VERSION;
   options.stop = &stopRequested;
   reportToTheUser(options);
-  // Ctrl-C or a polite kill finishes the current year, whose files are then complete.
-  std::signal(SIGINT, requestStop);
-  std::signal(SIGTERM, requestStop);
-  RunSummary summary = runSimulation(options);
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  // Ctrl-C or a polite kill finishes the current year, whose files are then complete; a
+  // second one stops at once, removing the files being written.
+  RunSummary summary = [&] {
+    GracefulStop graceful(stopRequested);
+    return runSimulation(options);
+  }();
 
   if (summary.interrupted) {
     std::cerr << fmt::format(

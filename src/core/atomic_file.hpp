@@ -1,13 +1,18 @@
 // Output files that appear whole or not at all: data goes to a temporary name beside the
-// target and is renamed into place by commit(). An AtomicFile destroyed without commit()
-// removes its temporary, so a failed or interrupted export leaves nothing half-written.
+// target and is renamed into place by commit(). Every write is checked to the last byte: a
+// full disk or a failing device is an EnvironmentError naming the file and the cause, the
+// temporary is removed, and nothing is renamed. commit() makes the data durable (fsync of
+// the file, then of its folder after the rename), so a crash of the machine after a commit
+// cannot leave an empty file under the target's name. An AtomicFile destroyed without
+// commit(), or a process interrupted by Ctrl-C (core/interrupt.hpp), removes its temporary.
 #pragma once
 
 #include <deque>
 #include <filesystem>
-#include <fstream>
 #include <span>
 #include <string_view>
+
+#include "core/interrupt.hpp"
 
 namespace eco {
 
@@ -20,18 +25,25 @@ class AtomicFile {
   AtomicFile& operator=(AtomicFile&&) = delete;
   ~AtomicFile();
 
-  std::ofstream& stream() { return stream_; }
   const std::filesystem::path& target() const { return target_; }
+  // EnvironmentError (the temporary removed) when the bytes cannot all be written.
   void write(std::span<const unsigned char> bytes);
   void write(std::string_view text);
-  // Flushes, checks for write errors (EnvironmentError: a full disk) and renames onto the
-  // target.
+  // Writes what is buffered, fsyncs, closes and renames onto the target.
   void commit();
+  // Writes what is buffered and fsyncs, without renaming (AtomicFileSet: every file of a
+  // set is complete before the first is renamed).
+  void flush();
 
  private:
+  [[noreturn]] void fail(const char* what, int error);
+  void writeOut(std::string_view bytes);
+
   std::filesystem::path target_;
   std::filesystem::path temporary_;
-  std::ofstream stream_;
+  int descriptor_ = -1;
+  std::string buffer_;  // small writes are gathered into 1 MiB system calls
+  InterruptCleanup cleanup_;
   bool done_ = false;
 };
 
@@ -45,5 +57,9 @@ class AtomicFileSet {
  private:
   std::deque<AtomicFile> files_;  // a deque: references from add() stay valid
 };
+
+// fsyncs a folder, so that a rename into it survives a crash of the machine; errors are
+// ignored (some file systems cannot sync folders).
+void syncFolder(const std::filesystem::path& folder);
 
 }  // namespace eco

@@ -74,7 +74,9 @@ class BinaryReader {
       return;
     }
     values.resize(count);
-    std::memcpy(values.data(), bytes_.data() + offset_ - count * sizeof(T), count * sizeof(T));
+    // memcpy with the null data() of an empty vector is undefined, even for zero bytes.
+    if (count > 0)
+      std::memcpy(values.data(), bytes_.data() + offset_ - count * sizeof(T), count * sizeof(T));
   }
   bool failed() const { return failed_; }
   bool atEnd() const { return offset_ == bytes_.size(); }

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 namespace eco {
 
@@ -35,11 +37,14 @@ inline std::size_t splitFields(std::string_view line, std::span<std::string_view
   }
 }
 
-// Parses the whole field as a number; false if it is not one, or has anything after it.
+// Parses the whole field as a number; false if it is not one, has anything after it, or is
+// not finite (from_chars takes "nan" and "inf", which no file of ours holds).
 template <class T>
 bool parseField(std::string_view field, T& value) {
   const char* end = field.data() + field.size();
   auto [ptr, ec] = std::from_chars(field.data(), end, value);
+  if constexpr (std::is_floating_point_v<T>)
+    if (!std::isfinite(value)) return false;
   return ec == std::errc() && ptr == end;
 }
 

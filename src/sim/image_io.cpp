@@ -1,10 +1,12 @@
 #include "sim/image_io.hpp"
 
-#include <unistd.h>
 #include <cmath>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace eco {
@@ -14,27 +16,24 @@ InputError imageError(const std::filesystem::path& file, const std::string& mess
   return InputError({file.string(), 0, ""}, message);
 }
 
+// Encodes in memory and writes through AtomicFile, which checks every byte reaching the
+// disk: OpenImageIO's own file writer does not report a short write of a full disk.
 void writeAtomically(const std::filesystem::path& file, OIIO::ImageSpec spec, OIIO::TypeDesc type,
                      const void* pixels) {
   // No time stamp: the same scenario must give byte-identical files.
   spec.attribute("DateTime", "");
-  std::filesystem::path temporary = file;
-  temporary.replace_filename(file.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                             file.extension().string());
-  auto out = OIIO::ImageOutput::create(temporary.string());
+  auto out = OIIO::ImageOutput::create(file.string());
   if (!out) throw imageError(file, "cannot write this image format: " + OIIO::geterror());
-  bool ok = out->open(temporary.string(), spec) && out->write_image(type, pixels) && out->close();
-  std::error_code ignored;
-  if (!ok) {
-    std::string reason = out->geterror();
-    std::filesystem::remove(temporary, ignored);
-    throw imageError(file, "cannot write image: " + reason);
-  }
-  std::filesystem::rename(temporary, file, ignored);
-  if (ignored) {
-    std::filesystem::remove(temporary, ignored);
-    throw imageError(file, "cannot rename the finished image into place");
-  }
+  if (!out->supports("ioproxy"))
+    throw InternalError("OpenImageIO cannot encode " + file.extension().string() + " in memory");
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  out->set_ioproxy(&memory);
+  if (!(out->open(file.string(), spec) && out->write_image(type, pixels) && out->close()))
+    throw imageError(file, "cannot write image: " + out->geterror());
+  AtomicFile target(file);
+  target.write(encoded);
+  target.commit();
 }
 
 }  // namespace
@@ -50,6 +49,12 @@ SingleChannelImage readSingleChannel(const std::filesystem::path& file, bool nan
   if (spec.width < 2 || spec.height < 2)
     throw imageError(file, "a heightmap needs at least 2 x 2 pixels, found " +
                                std::to_string(spec.width) + " x " + std::to_string(spec.height));
+  // The header alone says how large the image claims to be: check before allocating.
+  if (static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height) >
+      kMaxHeightmapPixels)
+    throw imageError(file, fmt::format("the image is {} x {} pixels; ecoforest reads heightmaps "
+                                       "of at most {} pixels (16384 x 16384)",
+                                       spec.width, spec.height, kMaxHeightmapPixels));
   SingleChannelImage image;
   image.width = spec.width;
   image.height = spec.height;

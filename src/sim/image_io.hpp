@@ -1,6 +1,5 @@
-// Raster files through OpenImageIO: heightmaps in, condition maps out. Every write goes to
-// a temporary name beside the target (same extension, so OpenImageIO picks the same
-// format) and is renamed only when complete.
+// Raster files through OpenImageIO: heightmaps in, condition maps out. Every image is
+// encoded in memory and written through AtomicFile (whole or not at all, every byte checked).
 #pragma once
 
 #include <cstdint>
@@ -18,9 +17,14 @@ struct SingleChannelImage {
   double typeMax = 1.0;       // largest value of the stored type (255, 65535, ...); 1 for floats
 };
 
+// The largest heightmap read: 16384 x 16384 cells, whose living conditions alone take
+// about 17 GB (Terrain's memory estimate, terrain.hpp, says so before they are computed).
+inline constexpr std::uint64_t kMaxHeightmapPixels = std::uint64_t{16384} * 16384;
+
 // Reads a one-channel image. Integer pixel types come back as their stored values
 // (a 16-bit 40000 is 40000.0f): OpenImageIO's normalisation is undone. Unreadable files,
-// several channels, fewer than 2 x 2 pixels and NaN or infinite pixels are InputErrors,
+// several channels, fewer than 2 x 2 or more than kMaxHeightmapPixels pixels (checked
+// before the pixels are allocated) and NaN or infinite pixels are InputErrors,
 // except NaN where the file declares NaN its no-data value.
 SingleChannelImage readSingleChannel(const std::filesystem::path& file, bool nanIsNoData = false);
 

@@ -1,5 +1,7 @@
 #include "core/atomic_file.hpp"
 
+#include <sys/resource.h>
+#include <csignal>
 #include <fstream>
 #include <sstream>
 
@@ -38,6 +40,54 @@ TEST(AtomicFile, AbandonedFileLeavesNothing) {
 
 TEST(AtomicFile, UnwritableFolderIsAnInputError) {
   EXPECT_THROW(AtomicFile("/nonexistent/folder/x.txt"), InputError);
+}
+
+// A file-size limit makes writes fail as a full disk does (EFBIG instead of ENOSPC).
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    getrlimit(RLIMIT_FSIZE, &saved_);
+    previous_ = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit limit = saved_;
+    limit.rlim_cur = bytes;
+    setrlimit(RLIMIT_FSIZE, &limit);
+  }
+  ~FileSizeLimit() {
+    setrlimit(RLIMIT_FSIZE, &saved_);
+    std::signal(SIGXFSZ, previous_);
+  }
+
+ private:
+  rlimit saved_{};
+  void (*previous_)(int) = nullptr;
+};
+
+TEST(AtomicFile, AFullDiskIsAnEnvironmentErrorAndLeavesNothing) {
+  auto dir = freshDirectory("full");
+  const std::string megabyte(std::size_t{1} << 20, 'x');
+  try {
+    FileSizeLimit limit(100000);
+    AtomicFile file(dir / "big.bin");
+    file.write(megabyte);  // buffered: the failure comes when it reaches the disk
+    file.write(megabyte);
+    file.commit();
+    FAIL() << "a write beyond the limit succeeded";
+  } catch (const EnvironmentError& error) {
+    EXPECT_NE(std::string(error.what()).find("big.bin: writing failed: File too large"),
+              std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(entriesIn(dir), 0u);
+}
+
+TEST(AtomicFile, CommitChecksTheLastBytes) {
+  // Less than the buffer: nothing reaches the disk before commit, which must report it.
+  auto dir = freshDirectory("full-last");
+  FileSizeLimit limit(1000);
+  AtomicFile file(dir / "small.bin");
+  file.write(std::string(5000, 'y'));
+  EXPECT_THROW(file.commit(), EnvironmentError);
+  EXPECT_EQ(entriesIn(dir), 0u);
 }
 
 TEST(AtomicFileSet, AllOrNothing) {

@@ -40,5 +40,18 @@ TEST(BinaryIo, ReadingPastTheEndFailsWithoutCrashing) {
   EXPECT_TRUE(r2.failed());
 }
 
+TEST(BinaryIo, EmptyVectorsRoundTrip) {
+  BinaryWriter w;
+  w.putVector(std::vector<float>{});
+  w.put<std::int32_t>(7);
+  BinaryReader r(w.bytes());
+  std::vector<float> v{1.0f};
+  r.getVector(v);
+  EXPECT_TRUE(v.empty());
+  EXPECT_EQ(r.get<std::int32_t>(), 7);
+  EXPECT_FALSE(r.failed());
+  EXPECT_TRUE(r.atEnd());
+}
+
 }  // namespace
 }  // namespace eco

@@ -42,5 +42,15 @@ TEST(CsvText, NumbersAreParsedWhole) {
   EXPECT_EQ(i, -4);
 }
 
+TEST(CsvText, NonFiniteNumbersAreRefused) {
+  double d = 0.0;
+  float f = 0.0f;
+  for (const char* field : {"nan", "NaN", "inf", "-inf", "infinity", "1e999"}) {
+    EXPECT_FALSE(parseField(field, d)) << field;
+    EXPECT_FALSE(parseField(field, f)) << field;
+  }
+  EXPECT_FALSE(parseField("1e39", f));  // beyond a float
+}
+
 }  // namespace
 }  // namespace eco

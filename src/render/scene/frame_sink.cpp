@@ -1,5 +1,6 @@
 #include "render/scene/frame_sink.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 #include <cerrno>
 #include <csignal>
@@ -10,7 +11,9 @@
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "sim/image_io.hpp"
 
 namespace eco {
@@ -21,29 +24,44 @@ std::filesystem::path withoutTrailingSeparator(const std::filesystem::path& fold
   return folder.has_filename() ? folder : folder.parent_path();
 }
 
+[[noreturn]] void failWith(const std::filesystem::path& file, const std::string& what,
+                           const std::error_code& error) {
+  throw EnvironmentError(file.string() + ": " + what + ": " + error.message());
+}
+
 class PngFolderSink : public FrameSink {
  public:
   explicit PngFolderSink(const std::filesystem::path& folder)
-      : folder_(withoutTrailingSeparator(folder)), partial_(folder_.string() + ".partial") {
-    if (std::filesystem::exists(folder_) && !std::filesystem::is_empty(folder_))
+      : folder_(withoutTrailingSeparator(folder)),
+        partial_(folder_.string() + ".partial"),
+        cleanup_(partial_, InterruptCleanup::Kind::folder) {
+    std::error_code error;
+    if (std::filesystem::exists(folder_, error) && !std::filesystem::is_empty(folder_, error))
       throw InputError({folder_.string(), 0, "--out"}, "the frame folder exists and is not empty");
-    std::filesystem::remove_all(partial_);
-    std::filesystem::create_directories(partial_);
+    std::filesystem::remove_all(partial_, error);
+    std::filesystem::create_directories(partial_, error);
+    if (error) failWith(partial_, "cannot create the folder for the frames", error);
   }
   ~PngFolderSink() override {
-    if (!finished_) std::filesystem::remove_all(partial_);
+    std::error_code ignored;  // a destructor runs during unwinding: it must not throw
+    if (!finished_) std::filesystem::remove_all(partial_, ignored);
   }
   void add(const Image& frame) override {
     writeRgb8Image(partial_ / fmt::format("frame_{:05d}.png", count_++), frame);
   }
   void finish() override {
-    std::filesystem::remove(folder_);  // an empty folder the user made
-    std::filesystem::rename(partial_, folder_);
+    std::error_code error;
+    std::filesystem::remove(folder_, error);  // an empty folder the user made
+    std::filesystem::rename(partial_, folder_, error);
+    if (error) failWith(folder_, "cannot rename the frames into place", error);
     finished_ = true;
+    cleanup_.release();
+    syncFolder(folder_.parent_path().empty() ? "." : folder_.parent_path());
   }
 
  private:
   std::filesystem::path folder_, partial_;
+  InterruptCleanup cleanup_;
   int count_ = 0;
   bool finished_ = false;
 };
@@ -51,11 +69,16 @@ class PngFolderSink : public FrameSink {
 class Mp4Sink : public FrameSink {
  public:
   Mp4Sink(const std::filesystem::path& file, int width, int height, int fps)
-      : file_(file), partial_(file.parent_path() / (".partial_" + file.filename().string())) {
+      : file_(file),
+        partial_(file.parent_path() / (".partial_" + file.filename().string())),
+        cleanup_(partial_) {
     if (!programOnPath("ffmpeg"))
       throw EnvironmentError(
           "MP4 output needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg); or "
           "write PNG frames into a folder");
+    // Whether the folder takes a file, before ffmpeg is started: its own message would be
+    // less clear, and come only after the first frames were rendered.
+    { AtomicFile probe(partial_); }
     // Raw sRGB frames in; H.264 in yuv420p, which needs even sizes: pad by a pixel if odd.
     // Converted with BT.709's matrix to limited range and tagged so (primaries, transfer,
     // matrix, range): untagged, players guess, and many guess BT.601, shifting the greens.
@@ -73,7 +96,8 @@ class Mp4Sink : public FrameSink {
   }
   ~Mp4Sink() override {
     if (pipe_) pclose(pipe_);
-    if (!finished_) std::filesystem::remove(partial_);
+    std::error_code ignored;  // a destructor runs during unwinding: it must not throw
+    if (!finished_) std::filesystem::remove(partial_, ignored);
   }
   void add(const Image& frame) override {
     const std::vector<std::uint8_t> rgb = frame.rgb();
@@ -82,9 +106,19 @@ class Mp4Sink : public FrameSink {
   void finish() override {
     const int status = pclose(pipe_);
     pipe_ = nullptr;
-    if (status != 0) fail();
-    std::filesystem::rename(partial_, file_);
+    // ffmpeg exits non-zero when it cannot write (a full disk); an empty file is a failure
+    // that slipped past it.
+    std::error_code error;
+    if (status != 0 || std::filesystem::file_size(partial_, error) == 0 || error) fail();
+    const int descriptor = ::open(partial_.c_str(), O_RDONLY | O_CLOEXEC);
+    const bool synced = descriptor >= 0 && ::fsync(descriptor) == 0;
+    if (descriptor >= 0) ::close(descriptor);
+    if (!synced) fail();
+    std::filesystem::rename(partial_, file_, error);
+    if (error) failWith(file_, "cannot rename the video into place", error);
     finished_ = true;
+    cleanup_.release();
+    syncFolder(file_.parent_path().empty() ? "." : file_.parent_path());
   }
 
  private:
@@ -96,6 +130,7 @@ class Mp4Sink : public FrameSink {
   }
 
   std::filesystem::path file_, partial_;
+  InterruptCleanup cleanup_;
   FILE* pipe_ = nullptr;
   bool finished_ = false;
 };

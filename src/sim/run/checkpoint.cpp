@@ -1,10 +1,14 @@
 #include "sim/run/checkpoint.hpp"
 
+#include <atomic>
+#include <cmath>
 #include <cstring>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "core/atomic_file.hpp"
@@ -31,7 +35,104 @@ std::uint64_t checksumOf(std::string_view bytes) {
                                   hashes.size() * sizeof(std::uint64_t)));
 }
 
+bool finiteAtLeast(float value, float least) {
+  return std::isfinite(value) && value >= least;
+}
+bool within(float value, float least, float most) {
+  return std::isfinite(value) && value >= least && value <= most;
+}
+
+// What is wrong with plant i, or nothing.
+std::optional<std::string> plantFault(const Plants& p, std::size_t i, int year,
+                                      const CheckpointLimits& limits) {
+  const Grid& g = limits.grid;
+  if (p.species[i] >= limits.speciesCount)
+    return fmt::format("species index {}, but the scenario has {} species", p.species[i],
+                       limits.speciesCount);
+  if (!std::isfinite(p.east_m[i]) || !std::isfinite(p.north_m[i]) ||
+      g.cellAt(p.east_m[i], p.north_m[i]) < 0)
+    return fmt::format("position ({}, {}) m is not on the terrain", p.east_m[i], p.north_m[i]);
+  if (p.cell[i] != g.cellAt(p.east_m[i], p.north_m[i]))
+    return fmt::format("cell {} is not the cell of its position ({})", p.cell[i],
+                       g.cellAt(p.east_m[i], p.north_m[i]));
+  if (!std::isfinite(p.ground_m[i])) return std::string("its ground altitude is not a number");
+  if (p.age_years[i] < 0 || p.age_years[i] > year)
+    return fmt::format("age {} is not between 0 and the checkpoint's year {}", p.age_years[i],
+                       year);
+  if (!finiteAtLeast(p.height_m[i], 0.0f) || !finiteAtLeast(p.crownRadius_m[i], 0.0f) ||
+      !finiteAtLeast(p.crownBase_m[i], 0.0f) || !finiteAtLeast(p.dbh_m[i], 0.0f))
+    return fmt::format(
+        "height {} m, crown radius {} m, crown base {} m or dbh {} m is not a "
+        "number of at least 0",
+        p.height_m[i], p.crownRadius_m[i], p.crownBase_m[i], p.dbh_m[i]);
+  if (!within(p.vigor[i], 0.0f, 1.0f))
+    return fmt::format("vigor {} is not between 0 and 1", p.vigor[i]);
+  // Light is relative to the open sky on flat ground: a sunny slope gets more than 1.
+  if (!finiteAtLeast(p.light[i], 0.0f))
+    return fmt::format("light {} is not a number of at least 0", p.light[i]);
+  if (!(std::isfinite(p.growthFactor[i]) && p.growthFactor[i] > 0.0f))
+    return fmt::format("growth factor {} is not a positive number", p.growthFactor[i]);
+  if (p.alive[i] > 1) return fmt::format("alive flag {} is neither 0 nor 1", p.alive[i]);
+  return std::nullopt;
+}
+
+std::optional<std::string> statsFault(const StatsRow& row, int year, std::size_t speciesCount) {
+  if (row.year < 1 || row.year > year)
+    return fmt::format("year {} is not between 1 and the checkpoint's year {}", row.year, year);
+  if (row.species < kAllSpecies || row.species >= static_cast<std::int64_t>(speciesCount))
+    return fmt::format("species index {}, but the scenario has {} species", row.species,
+                       speciesCount);
+  if (row.alive < 0 || row.born < 0 || row.died < 0)
+    return std::string("a negative count of plants");
+  for (double value :
+       {row.meanHeight_m, row.stemsPerHa, row.basalArea_m2PerHa, row.qmd_cm, row.dominantHeight_m,
+        row.sdi, row.volume_m3PerHa, row.coverFraction, row.densestHectareBasalArea_m2PerHa})
+    if (!(std::isfinite(value) && value >= 0.0))
+      return fmt::format("a measure of {} is not a number of at least 0", value);
+  return std::nullopt;
+}
+
 }  // namespace
+
+void checkCheckpoint(const Checkpoint& checkpoint, const CheckpointLimits& limits,
+                     const std::filesystem::path& file) {
+  auto refuse = [&](const std::string& why) {
+    return InputError({file.string(), 0, ""},
+                      "checkpoint does not fit this scenario or is corrupt: " + why +
+                          "; start the run afresh (without --resume)");
+  };
+  const EcosystemState& state = checkpoint.state;
+  if (state.year < 0 || state.year > limits.targetYears)
+    throw refuse(fmt::format("its year {} is not between 0 and the run's {} years", state.year,
+                             limits.targetYears));
+  const Plants& p = state.plants;
+  // Parallel: a checkpoint can hold millions of plants. The first fault in plant order is
+  // reported, whatever the thread count.
+  std::atomic<std::size_t> firstBad{p.size()};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), 65536), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i < range.end() && i < firstBad.load(); ++i)
+      if (plantFault(p, i, state.year, limits)) {
+        std::size_t current = firstBad.load();
+        while (i < current && !firstBad.compare_exchange_weak(current, i)) {
+        }
+        return;
+      }
+  });
+  if (firstBad.load() < p.size()) {
+    const std::size_t i = firstBad.load();
+    throw refuse(
+        fmt::format("plant {} (id {}): {}", i + 1, p.id[i], *plantFault(p, i, state.year, limits)));
+  }
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.id[i] == 0 || p.id[i] >= state.nextId || (i > 0 && p.id[i] <= p.id[i - 1]))
+      throw refuse(
+          fmt::format("plant {} has id {}: ids must rise in order of birth, from 1 to "
+                      "below the next id {}",
+                      i + 1, p.id[i], state.nextId));
+  for (std::size_t r = 0; r < checkpoint.stats.size(); ++r)
+    if (auto fault = statsFault(checkpoint.stats[r], state.year, limits.speciesCount))
+      throw refuse(fmt::format("statistics row {}: {}", r + 1, *fault));
+}
 
 void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkpoint) {
   BinaryWriter w;

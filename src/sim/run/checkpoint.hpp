@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sim/ecology/ecosystem.hpp"
+#include "sim/grid.hpp"
 #include "sim/run/run_outputs.hpp"
 
 namespace eco {
@@ -25,5 +26,18 @@ void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkp
 // Throws InputError for a missing, truncated, corrupt or foreign file; `expectedHash` is the
 // fingerprint of the scenario being resumed.
 Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expectedHash);
+
+// What a checkpoint's values must fit: the scenario being resumed.
+struct CheckpointLimits {
+  const Grid& grid;
+  std::size_t speciesCount = 0;
+  int targetYears = 0;
+};
+
+// A checkpoint is untrusted input, however good its checksum: every value is checked
+// before the run uses it (the year, each plant's id, species, position, cell, age and
+// sizes, each statistics row). InputError naming the file, the plant and the value at fault.
+void checkCheckpoint(const Checkpoint& checkpoint, const CheckpointLimits& limits,
+                     const std::filesystem::path& file);
 
 }  // namespace eco

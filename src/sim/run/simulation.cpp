@@ -120,17 +120,6 @@ void plantStands(Ecosystem& ecosystem, const Scenario& scenario, const std::vect
   }
 }
 
-// Plants from a checkpoint must fit this scenario's grid and species list.
-void checkState(const EcosystemState& state, const Ecosystem& ecosystem,
-                const std::filesystem::path& file) {
-  const Plants& p = state.plants;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.species[i] >= ecosystem.species().size() || p.cell[i] < 0 ||
-        static_cast<std::size_t>(p.cell[i]) >= ecosystem.grid().cellCount())
-      throw InputError({file.string(), 0, ""},
-                       "checkpoint does not fit this scenario's terrain or species");
-}
-
 }  // namespace
 
 std::uint64_t scenarioFingerprint(const Scenario& scenario) {
@@ -189,6 +178,9 @@ RunSummary runSimulation(const RunOptions& options) {
       computeConditions(terrain, scenario.climate, SunlightSettings{}, &report);
   std::vector<EcosystemSpecies> species = loadEcosystemSpecies(scenario, fields);
   const std::vector<int> planted = plantedSpecies(scenario, species);  // before any output
+  if (checkpoint)
+    checkCheckpoint(*checkpoint, {terrain.grid, species.size(), summary.targetYears},
+                    run.checkpoint());
   summary.conditionsSeconds = secondsSince(conditionsStart);
 
   EcosystemSettings settings{scenario.seed, scenario.climate.prevailingWindFrom_deg};
@@ -197,7 +189,6 @@ RunSummary runSimulation(const RunOptions& options) {
   createFolder(run.mapsFolder());
   createFolder(run.treesFolder());
   if (checkpoint) {
-    checkState(checkpoint->state, ecosystem, run.checkpoint());
     ecosystem.restore(std::move(checkpoint->state));
     stats = std::move(checkpoint->stats);
   } else {

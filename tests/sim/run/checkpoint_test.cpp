@@ -1,5 +1,8 @@
 #include "sim/run/checkpoint.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
@@ -76,6 +79,114 @@ TEST(Checkpoint, RefusesCorruptTruncatedForeignAndMissingFiles) {
   test::writeFile(file, "PK\x03\x04 a zip file, not ours");
   EXPECT_NE(errorOf(file, 0x1234).find("not an ecoforest checkpoint"), std::string::npos);
   EXPECT_NE(errorOf(folder / "none.bin", 0x1234).find("cannot open"), std::string::npos);
+}
+
+const Grid kGrid{10, 10, 2.0, 2.0};
+const CheckpointLimits kLimits{kGrid, 1, 40};
+
+// A checkpoint whose plants stand on a 10 x 10 grid of 2 m cells, with one species.
+Checkpoint fitting() {
+  Checkpoint c = sample();
+  Plants& p = c.state.plants;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.east_m[i] = 3.0f + 4.0f * i;
+    p.north_m[i] = 5.0f;
+    p.cell[i] = static_cast<std::int32_t>(kGrid.cellAt(p.east_m[i], p.north_m[i]));
+    p.age_years[i] = static_cast<std::int32_t>(i);
+    p.vigor[i] = 0.5f;
+    p.alive[i] = 1;
+  }
+  return c;
+}
+std::string faultOf(const Checkpoint& c) {
+  try {
+    checkCheckpoint(c, kLimits, "checkpoint.bin");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Checkpoint, AFittingCheckpointIsAccepted) {
+  EXPECT_EQ(faultOf(fitting()), "no error");
+}
+
+// The values an attacker or a broken disk can put behind a good checksum: each is refused
+// with a message naming it, never used.
+TEST(Checkpoint, CraftedValuesAreRefused) {
+  auto crafted = [](auto change) {
+    Checkpoint c = fitting();
+    change(c);
+    return faultOf(c);
+  };
+  EXPECT_NE(crafted([](Checkpoint& c) {
+              c.state.plants.east_m[1] = 1e30f;
+            }).find("plant 2 (id 6): position (1e+30, 5) m is not on the terrain"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.year = -100000; }).find("year -100000"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.year = 41; }).find("run's 40 years"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) {
+              c.state.plants.age_years[0] = 2147483647;
+            }).find("age 2147483647"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) {
+              c.state.plants.height_m[2] = std::nanf("");
+            }).find("height nan m"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) {
+              c.state.plants.species[0] = 7;
+            }).find("species index 7, but the scenario has 1 species"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.cell[0] += 1; }).find("is not the cell"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.id[2] = 5; }).find("ids must rise"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.nextId = 6; }).find("ids must rise"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.vigor[0] = 2.0f; }).find("vigor 2"),
+            std::string::npos);
+  EXPECT_NE(
+      crafted([](Checkpoint& c) { c.state.plants.growthFactor[0] = 0.0f; }).find("growth factor 0"),
+      std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.alive[0] = 9; }).find("alive flag 9"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) {
+              c.stats[0].species = 3;
+            }).find("statistics row 1: species index 3"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.stats[0].year = 18; }).find("statistics row 1: year 18"),
+            std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) {
+              c.stats[0].sdi = -std::numeric_limits<double>::infinity();
+            }).find("statistics row 1"),
+            std::string::npos);
+  EXPECT_NE(
+      crafted([](Checkpoint& c) { c.state.plants.east_m[0] = 1e30f; }).find("start the run afresh"),
+      std::string::npos);
+}
+
+// The first fault in plant order is the one reported, whatever the thread count: plants
+// beyond one parallel block.
+TEST(Checkpoint, TheFirstFaultyPlantIsReported) {
+  Checkpoint c = fitting();
+  Plants& p = c.state.plants;
+  const std::size_t n = 200000;
+  p.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.id[i] = i + 1;
+    p.east_m[i] = 1.0f;
+    p.north_m[i] = 1.0f;
+    p.cell[i] = static_cast<std::int32_t>(kGrid.cellAt(1.0, 1.0));
+    p.vigor[i] = 0.5f;
+    p.growthFactor[i] = 1.0f;
+    p.age_years[i] = 0;
+  }
+  c.state.nextId = n + 1;
+  p.height_m[150000] = -1.0f;
+  p.height_m[190000] = -1.0f;
+  EXPECT_NE(faultOf(c).find("plant 150001 (id 150001)"), std::string::npos) << faultOf(c);
 }
 
 }  // namespace

@@ -53,4 +53,17 @@ std::string didYouMean(std::string_view name, const std::vector<std::string>& ca
   return close ? ": did you mean '" + *close + "'?" : "";
 }
 
+std::string whyNotAPlainName(std::string_view name) {
+  constexpr std::size_t kLongest = 64;
+  if (name.empty()) return "it is empty";
+  if (name.size() > kLongest) return "it is longer than 64 characters";
+  auto isLetter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); };
+  if (!isLetter(name.front())) return "it must begin with a letter";
+  for (char c : name)
+    if (!isLetter(c) && !(c >= '0' && c <= '9') && c != '_' && c != '-')
+      return "use only letters, digits, '_' and '-' (it becomes part of file names and CSV "
+             "fields)";
+  return {};
+}
+
 }  // namespace eco

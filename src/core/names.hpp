@@ -20,6 +20,11 @@ std::size_t editDistance(std::string_view a, std::string_view b);
 std::optional<std::string> closestName(std::string_view name,
                                        const std::vector<std::string>& candidates);
 
+// Why `name` cannot be a plain name -- one that is safe as part of a file name and as a
+// CSV field: empty, longer than 64 characters, or with characters other than ASCII letters,
+// digits, '_' and '-' (or not beginning with a letter). Empty when it can.
+std::string whyNotAPlainName(std::string_view name);
+
 // ": did you mean 'X'?" for a near miss, else "".
 std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates);
 

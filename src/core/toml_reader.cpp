@@ -1,5 +1,6 @@
 #include "core/toml_reader.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -45,6 +46,8 @@ const toml::node& TomlTable::require(std::string_view key) {
 }
 
 void TomlTable::checkRange(std::string_view key, double value, Range range) const {
+  // TOML has inf and nan; no setting of ours takes them.
+  if (!std::isfinite(value)) fail(key, "value " + formatNumber(value) + " is not a finite number");
   if (!(value >= range.min && value <= range.max))
     fail(key, "value " + formatNumber(value) + " is outside [" + formatNumber(range.min) + ", " +
                   formatNumber(range.max) + "]");
@@ -164,6 +167,10 @@ Polyline TomlTable::polyline(std::string_view key, Range range) {
       return n.is_integer() ? static_cast<double>(*n.value<std::int64_t>()) : *n.value<double>();
     };
     ControlPoint point{toDouble((*pair)[0]), toDouble((*pair)[1])};
+    if (!std::isfinite(point.x) || !std::isfinite(point.y))
+      throw InputError({file_, lineOf(element), path(key)},
+                       "control point (" + formatNumber(point.x) + ", " + formatNumber(point.y) +
+                           ") is not a pair of finite numbers");
     if (!points.empty() && point.x < points.back().x)
       throw InputError({file_, lineOf(element), path(key)},
                        "control points must be sorted by abscissa: x = " + formatNumber(point.x) +

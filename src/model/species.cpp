@@ -52,7 +52,8 @@ WindParams parseWind(TomlTable& table) {
   p.directed_wg = table.number("wind_directed_wg", p.directed_wg, {0.0, 10.0});
   p.undirected_ws = table.number("wind_undirected_ws", p.undirected_ws, {0.0, 10.0});
   auto w = table.numbers("wind_direction", 3,
-                         std::vector<double>{p.direction.x, p.direction.y, p.direction.z});
+                         std::vector<double>{p.direction.x, p.direction.y, p.direction.z},
+                         Range{-1000.0, 1000.0});
   p.direction = glm::dvec3(w[0], w[1], w[2]);
   p.flexibility = table.number("flexibility_kf", p.flexibility, {0.0, 1.0});
   return p;
@@ -136,6 +137,10 @@ Species loadSpecies(const std::filesystem::path& file) {
   species.name = root.string("name");
   species.latinName = root.string("latin_name", "");
   species.commonNames = root.stringList("common_names", {});
+  // A species' name becomes part of file names (maps/suitability_NAME) and a field of the
+  // run's CSV files: it must be a plain word there.
+  if (const std::string why = whyNotAPlainName(species.name); !why.empty())
+    root.fail("name", "'" + species.name + "' cannot name a species: " + why);
 
   const std::string generator = root.string("generator", "strand");
   if (generator == "lsystem") {

@@ -26,4 +26,14 @@ TEST(Names, OnlyANearMissIsSuggested) {
   EXPECT_EQ(didYouMean("baobab", names), "");
 }
 
+TEST(Names, PlainNamesAreWordsSafeInFileNamesAndCsv) {
+  for (const char* good : {"beech", "Pinus_sylvestris", "oak-2", "a"})
+    EXPECT_EQ(whyNotAPlainName(good), "") << good;
+  EXPECT_EQ(whyNotAPlainName(""), "it is empty");
+  EXPECT_EQ(whyNotAPlainName("2pine"), "it must begin with a letter");
+  EXPECT_EQ(whyNotAPlainName(std::string(65, 'a')), "it is longer than 64 characters");
+  for (const char* bad : {"be,ech", "sub/beech", "two words", "..", "b\"ee", "bu\xc3\x9fe"})
+    EXPECT_NE(whyNotAPlainName(bad), "") << bad;
+}
+
 }  // namespace eco

@@ -90,6 +90,25 @@ TEST(TomlReader, PolylineErrorsPointAtTheBadPoint) {
   EXPECT_EQ(shape.where().line, 7);
 }
 
+// TOML spells inf and nan; no setting takes them, whatever its range, and a polyline's
+// abscissa is checked before the polyline is built.
+TEST(TomlReader, NonFiniteNumbersAreInputErrors) {
+  TomlDocument doc = TomlDocument::parse(
+      "a = inf\nb = -inf\nc = nan\nd = [1.0, inf, 0.0]\np = [[0, 1], [nan, 2]]\n"
+      "q = [[0, 1], [1, inf]]\n",
+      "n.toml");
+  TomlTable root = doc.root();
+  for (const char* key : {"a", "b", "c"}) {
+    InputError error = inputErrorOf([&] { root.number(key); });
+    EXPECT_NE(std::string(error.what()).find("not a finite number"), std::string::npos) << key;
+  }
+  EXPECT_EQ(inputErrorOf([&] { root.numbers("d", 3); }).where().line, 4);
+  InputError abscissa = inputErrorOf([&] { root.polyline("p"); });
+  EXPECT_EQ(abscissa.where().line, 5);
+  EXPECT_NE(std::string(abscissa.what()).find("not a pair of finite numbers"), std::string::npos);
+  EXPECT_EQ(inputErrorOf([&] { root.polyline("q"); }).where().line, 6);
+}
+
 TEST(TomlReader, SyntaxErrorsAndMissingFiles) {
   InputError syntax = inputErrorOf([] { TomlDocument::parse("a = 1\nb = = 2\n", "bad.toml"); });
   EXPECT_EQ(syntax.where().file, "bad.toml");

@@ -154,6 +154,19 @@ TEST(Species, BadInputNamesFileLineAndKey) {
   EXPECT_NE(missing.find("kl_w: missing required key"), std::string::npos) << missing;
 }
 
+// Values a later command would choke on are refused where they are read.
+TEST(Species, NamesAndWindMustBeUsable) {
+  for (const char* name : {"\"be,ech\"", "\"\"", "\"sub/beech\""}) {
+    auto [error, line] = errorWith("name = \"t\"", std::string("name = ") + name);
+    EXPECT_EQ(line, 1) << name;
+    EXPECT_NE(error.find("cannot name a species"), std::string::npos) << error;
+  }
+  auto [wind, windLine] = errorWith("kc = 0.3", "kc = 0.3\nwind_direction = [inf, 0, 0]");
+  EXPECT_EQ(windLine, 8);
+  EXPECT_NE(wind.find("strand.wind_direction: value inf is not a finite number"), std::string::npos)
+      << wind;
+}
+
 TEST(Species, MissingFileIsAnInputError) {
   EXPECT_THROW(loadSpecies("/nonexistent/oak.toml"), InputError);
 }

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "sim/run/run_lock.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace eco {
 
@@ -14,7 +16,18 @@ RunFolder openRunFolder(const std::filesystem::path& dir) {
   RunFolder run;
   run.dir = dir;
   const RunPaths paths{dir};
-  run.scenario = loadScenario(readRunJson(paths).scenarioFile);
+  const RunRecord record = readRunJson(paths);
+  run.scenario = loadScenario(record.scenarioFile);
+  // The trees of the run belong to the scenario as it was: on an edited relief, or with an
+  // edited species, they would stand on the wrong ground or be drawn as another tree.
+  if (record.fingerprint != 0 && scenarioFingerprint(run.scenario) != record.fingerprint)
+    throw InputError(
+        {paths.runJson().string(), 0, "scenario.fingerprint"},
+        fmt::format("the scenario {} (or its heightmap or a species file) has changed since this "
+                    "run; run it again, or restore the files the run was made with",
+                    record.scenarioFile.string()));
+  run.status = record.status;
+  if (run.status == "running" && !runIsActive(dir)) run.status = "killed";
   run.snapshotYears = paths.snapshotYears();
   return run;
 }

@@ -17,10 +17,13 @@ struct RunFolder {
   std::filesystem::path dir;
   Scenario scenario;               // as run.json names it
   std::vector<int> snapshotYears;  // ascending; the years of trees/year_NNNN.csv
+  // run.json's: running, complete, interrupted or failed; "killed" when it says running
+  // but no run holds the folder any more.
+  std::string status;
 };
 
 // Throws InputError (naming the folder or run.json) when the folder, run.json or its
-// scenario is missing or unreadable.
+// scenario is missing or unreadable, or the scenario's files changed since the run.
 RunFolder openRunFolder(const std::filesystem::path& dir);
 
 // An InputError listing the years there are unless the run has a snapshot of `year`.

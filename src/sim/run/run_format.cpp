@@ -13,6 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "core/csv_text.hpp"
 #include "core/error.hpp"
+#include "core/names.hpp"
 #include "sim/conditions/conditions.hpp"
 
 namespace eco {
@@ -35,6 +36,30 @@ nlohmann::ordered_json siteJson(const std::vector<double>& means) {
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
   for (std::size_t f = 0; f < means.size(); ++f) json[conditionFieldInfo()[f].name] = means[f];
   return json;
+}
+
+// What makes a parsed row of a trees file unusable (the numbers are finite already), or "".
+// No tree is taller than about 120 m or has a crown wider than about 50 m; the limits leave
+// room and keep an edited file from making meshes of astronomical size.
+std::string treeRowFault(const TreeRow& tree, std::string_view species) {
+  constexpr float kTallest_m = 200.0f, kWidestCrown_m = 100.0f;
+  if (const std::string why = whyNotAPlainName(species); !why.empty())
+    return fmt::format("species '{}' is not a species name: {}", species, why);
+  if (tree.id == 0) return "id 0: ids start at 1";
+  if (tree.age_years < 0) return fmt::format("age {} is negative", tree.age_years);
+  if (!(tree.height_m >= 0.0f && tree.height_m <= kTallest_m))
+    return fmt::format("height {} m is not between 0 and {} m", tree.height_m, kTallest_m);
+  if (!(tree.crownRadius_m >= 0.0f && tree.crownRadius_m <= kWidestCrown_m))
+    return fmt::format("crown radius {} m is not between 0 and {} m", tree.crownRadius_m,
+                       kWidestCrown_m);
+  if (!(tree.crownBase_m >= 0.0f && tree.crownBase_m <= tree.height_m))
+    return fmt::format("crown base {} m is not between 0 and the height {} m", tree.crownBase_m,
+                       tree.height_m);
+  if (!(tree.dbh_m >= 0.0f && tree.dbh_m <= 0.05f * kTallest_m))
+    return fmt::format("dbh {} m is not between 0 and {} m", tree.dbh_m, 0.05f * kTallest_m);
+  if (!(tree.vigor >= 0.0f && tree.vigor <= 1.0f))
+    return fmt::format("vigor {} is not between 0 and 1", tree.vigor);
+  return {};
 }
 
 }  // namespace
@@ -132,14 +157,17 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
               parseField(fields[10], tree.vigor) && parseField(fields[11], tree.variantSeed) &&
               !fields[1].empty();
     std::uint64_t wideSeed = 0;
-    if (!ok && count == kTreesColumns && parseField(fields[11], wideSeed))
+    if (!ok && count == kTreesColumns && !parseField(fields[11], tree.variantSeed) &&
+        parseField(fields[11], wideSeed))
       throw InputError({file.string(), line, "variant_seed"},
                        "a seed beyond 32 bits, as earlier builds of ecoforest wrote them: run "
                        "the scenario again");
     if (!ok)
       throw InputError(
           {file.string(), line, ""},
-          fmt::format("expected {} comma-separated values: {}", kTreesColumns, kTreesCsvHeader));
+          fmt::format("expected {} comma-separated numbers: {}", kTreesColumns, kTreesCsvHeader));
+    if (const std::string fault = treeRowFault(tree, fields[1]); !fault.empty())
+      throw InputError({file.string(), line, ""}, fault);
     auto [it, added] = speciesIndex.try_emplace(std::string(fields[1]),
                                                 static_cast<int>(snapshot.speciesNames.size()));
     if (added) snapshot.speciesNames.emplace_back(fields[1]);
@@ -155,6 +183,7 @@ void writeRunJson(const RunPaths& run, const RunRecord& r) {
   json["program"] = "ecoforest";
   json["version"] = r.version;
   json["status"] = r.status;
+  if (!r.error.empty()) json["error"] = r.error;
   json["scenario"] = {{"file", std::filesystem::absolute(r.scenarioFile).string()},
                       {"name", r.scenarioName},
                       {"fingerprint", fmt::format("{:016x}", r.fingerprint)},
@@ -189,23 +218,53 @@ RunRecord readRunJson(const RunPaths& run) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError({file.string(), 0, ""}, std::string("not valid JSON: ") + e.what());
   }
-  if (!json.contains("scenario") || !json["scenario"].contains("file") ||
-      !json["scenario"]["file"].is_string())
-    throw InputError({file.string(), 0, "scenario.file"}, "missing");
+  // Written by ecoforest, but read back as untrusted input: every key that is used is
+  // checked for its type and range.
+  auto fail = [&](const std::string& key, const std::string& what) {
+    return InputError({file.string(), 0, key}, what);
+  };
+  if (!json.is_object() || !json.contains("scenario") || !json["scenario"].is_object())
+    throw fail("scenario", "missing: this is not a run.json of ecoforest");
+  const nlohmann::json& scenario = json["scenario"];
+  auto text = [&](const nlohmann::json& object, const char* key, const std::string& name) {
+    if (!object.contains(key)) return std::string();
+    if (!object[key].is_string()) throw fail(name, "expected a string");
+    return object[key].get<std::string>();
+  };
+  auto count = [&](const char* key) {
+    if (!json.contains(key)) return 0;
+    const nlohmann::json& value = json[key];
+    if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
+        value.get<std::int64_t>() > 1000000)
+      throw fail(key, "expected a whole number from 0 to 1000000");
+    return value.get<int>();
+  };
   RunRecord r;
-  r.scenarioFile = json["scenario"]["file"].get<std::string>();
-  r.version = json.value("version", "");
-  r.status = json.value("status", "");
-  r.scenarioName = json["scenario"].value("name", "");
-  r.scenarioText = json["scenario"].value("text", "");
-  if (json["scenario"].contains("fingerprint") && json["scenario"]["fingerprint"].is_string()) {
-    const std::string hex = json["scenario"]["fingerprint"].get<std::string>();
-    std::from_chars(hex.data(), hex.data() + hex.size(), r.fingerprint, 16);
+  r.scenarioFile = text(scenario, "file", "scenario.file");
+  if (r.scenarioFile.empty()) throw fail("scenario.file", "missing");
+  r.version = text(json, "version", "version");
+  r.status = text(json, "status", "status");
+  if (r.status != "running" && r.status != "complete" && r.status != "interrupted" &&
+      r.status != "failed")
+    throw fail("status",
+               "'" + r.status + "' is not one of running, complete, interrupted and failed");
+  r.error = text(json, "error", "error");
+  r.scenarioName = text(scenario, "name", "scenario.name");
+  r.scenarioText = text(scenario, "text", "scenario.text");
+  const std::string hex = text(scenario, "fingerprint", "scenario.fingerprint");
+  if (!hex.empty()) {
+    const auto [end, error] =
+        std::from_chars(hex.data(), hex.data() + hex.size(), r.fingerprint, 16);
+    if (error != std::errc() || end != hex.data() + hex.size())
+      throw fail("scenario.fingerprint", "expected 16 hexadecimal digits");
   }
-  r.seed = json.value("seed", std::uint64_t{0});
-  r.years = json.value("years", 0);
-  r.lastYear = json.value("last_year", 0);
-  r.threads = json.value("threads", 0);
+  if (json.contains("seed")) {
+    if (!json["seed"].is_number_unsigned()) throw fail("seed", "expected a whole number");
+    r.seed = json["seed"].get<std::uint64_t>();
+  }
+  r.years = count("years");
+  r.lastYear = count("last_year");
+  r.threads = count("threads");
   return r;
 }
 

@@ -89,7 +89,8 @@ struct SpeciesCount {
 // run.json: what ran, how far it got, and what grew.
 struct RunRecord {
   std::string version;
-  std::string status;  // running | complete | interrupted
+  std::string status;  // running | complete | interrupted | failed
+  std::string error;   // why it failed (status "failed")
   std::filesystem::path scenarioFile;
   std::string scenarioName;
   std::uint64_t fingerprint = 0;  // scenarioFingerprint() of the scenario it ran

@@ -12,6 +12,7 @@
 #include "sim/conditions/condition_maps.hpp"
 #include "sim/ecology/suitability.hpp"
 #include "sim/run/checkpoint.hpp"
+#include "sim/run/run_lock.hpp"
 #include "sim/run/run_outputs.hpp"
 
 namespace eco {
@@ -120,6 +121,35 @@ void plantStands(Ecosystem& ecosystem, const Scenario& scenario, const std::vect
   }
 }
 
+// Temporaries of writes a kill -9 or a power cut interrupted (AtomicFile's NAME.tmp-PID-N
+// and the frame sinks' .partial_NAME): no process writes them any more once this run holds
+// the lock.
+void removeStaleTemporaries(const RunPaths& run) {
+  for (const std::filesystem::path& folder : {run.dir, run.treesFolder(), run.mapsFolder()}) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) continue;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+      const std::string name = entry.path().filename().string();
+      if (entry.is_regular_file(error) &&
+          (name.find(".tmp-") != std::string::npos || name.starts_with(".partial_")))
+        std::filesystem::remove(entry.path(), error);
+    }
+  }
+}
+
+// What an earlier run wrote that this one may not rewrite: its snapshots (this run may
+// write fewer), its checkpoint, statistics and maps (of species this run may not have).
+void removeEarlierRun(const RunPaths& run) {
+  for (const std::filesystem::path& folder : {run.treesFolder(), run.mapsFolder()})
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      if (entry.is_regular_file()) std::filesystem::remove(entry.path());
+  std::filesystem::remove(run.checkpoint());
+  std::filesystem::remove(run.stats());
+}
+
+RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& folder,
+                        const RunOptions& options, std::optional<RunRecord>& claimed);
+
 }  // namespace
 
 std::uint64_t scenarioFingerprint(const Scenario& scenario) {
@@ -149,12 +179,39 @@ std::vector<EcosystemSpecies> loadEcosystemSpecies(const Scenario& scenario,
 }
 
 RunSummary runSimulation(const RunOptions& options) {
-  Scenario scenario = loadScenario(options.scenarioFile);
+  const Scenario scenario = loadScenario(options.scenarioFile);
+  const std::filesystem::path folder = options.out.value_or(scenario.output.dir);
+  RunLock lock(folder);
+  removeStaleTemporaries(RunPaths{folder});
+  // Once this run has claimed the folder (run.json says "running"), an error leaves run.json
+  // saying "failed" and why, never "running" or an earlier run's "complete".
+  std::optional<RunRecord> claimed;
+  try {
+    return simulateInto(scenario, folder, options, claimed);
+  } catch (const std::exception& error) {
+    if (!claimed) lock.abandon();
+    if (claimed) {
+      claimed->status = "failed";
+      claimed->error = error.what();
+      try {
+        writeRunJson(RunPaths{folder}, *claimed);
+      } catch (const std::exception&) {
+        // The disk that failed the run may fail this too; the run's own error is reported.
+      }
+    }
+    throw;
+  }
+}
+
+namespace {
+
+RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& folder,
+                        const RunOptions& options, std::optional<RunRecord>& claimed) {
   RunSummary summary;
   summary.targetYears = options.years.value_or(scenario.simulation.years);
   if (summary.targetYears < 1)
     throw InputError({scenario.file.string(), 0, "years"}, "years must be at least 1");
-  summary.folder = options.out.value_or(scenario.output.dir);
+  summary.folder = folder;
   const RunPaths run{summary.folder};
   const std::uint64_t fingerprint = scenarioFingerprint(scenario);
   if (std::all_of(scenario.species.begin(), scenario.species.end(),
@@ -192,10 +249,12 @@ RunSummary runSimulation(const RunOptions& options) {
     ecosystem.restore(std::move(checkpoint->state));
     stats = std::move(checkpoint->stats);
   } else {
-    // A fresh run replaces whatever an earlier run left in the folder.
-    for (const auto& entry : std::filesystem::directory_iterator(run.treesFolder()))
-      if (entry.path().extension() == ".csv") std::filesystem::remove(entry.path());
-    std::filesystem::remove(run.checkpoint());
+    // A fresh run replaces whatever an earlier run left in the folder. run.json says so
+    // first: a run killed while the old files go would otherwise leave a run.json claiming
+    // the old run's years over a folder without them.
+    claimed = runRecord(scenario, options, fingerprint, summary, "running");
+    writeRunJson(run, *claimed);
+    removeEarlierRun(run);
     writeConditionOutputs(fields, report, scenario, summary.folder);
     plantStands(ecosystem, scenario, planted);
     for (const EcosystemSpecies& s : ecosystem.species())
@@ -205,7 +264,8 @@ RunSummary runSimulation(const RunOptions& options) {
   summary.lastYear = ecosystem.year();
   summary.meanSite = meanSiteOf(fields);
   summary.counts = countsOf(ecosystem, fields);
-  writeRunJson(run, runRecord(scenario, options, fingerprint, summary, "running"));
+  claimed = runRecord(scenario, options, fingerprint, summary, "running");
+  writeRunJson(run, *claimed);
 
   const auto start = Clock::now();
   const int firstYear = ecosystem.year() + 1;
@@ -237,9 +297,12 @@ RunSummary runSimulation(const RunOptions& options) {
   if (!summary.interrupted)
     writeFieldMap(run.mapsFolder(), "canopy_height", "m",
                   maskOutside(terrain, canopyHeight(ecosystem)), terrain.grid);
-  writeRunJson(run, runRecord(scenario, options, fingerprint, summary,
-                              summary.interrupted ? "interrupted" : "complete"));
+  claimed = runRecord(scenario, options, fingerprint, summary,
+                      summary.interrupted ? "interrupted" : "complete");
+  writeRunJson(run, *claimed);
   return summary;
 }
+
+}  // namespace
 
 }  // namespace eco

@@ -44,7 +44,7 @@ TEST(RunFormat, ReadsATreesFileAndNumbersSpeciesInOrderOfAppearance) {
 TEST(RunFormat, AMalformedTreesFileNamesTheLine) {
   const auto file = test::freshDirectory("run_folder_bad") / "trees.csv";
   test::writeFile(
-      file, std::string(kHeader) + "1,pine,1,2,3,4,5,6,7,8,9,10\n2,pine,1,2,x,4,5,6,7,8,9,10\n");
+      file, std::string(kHeader) + "1,pine,1,2,3,4,5,0.6,0.7,0.08,0.9,10\n2,pine,1,2,x,4,5,0.6,0.7,0.08,0.9,10\n");
   try {
     readTreesCsv(file);
     FAIL();
@@ -53,6 +53,70 @@ TEST(RunFormat, AMalformedTreesFileNamesTheLine) {
   }
   test::writeFile(file, "id,name\n");
   EXPECT_THROW(readTreesCsv(file), InputError);
+}
+
+// A trees file is read back as untrusted input: each value a later command would turn into
+// a NaN transform or a huge mesh is refused at its line.
+TEST(RunFormat, TreesValuesOutOfRangeAreRefusedAtTheirLine) {
+  const auto file = test::freshDirectory("run_folder_values") / "trees.csv";
+  const std::string good = "7,pine,10.5,20.25,412,12,6.5,1.2,2.5,0.08,0.9,123";
+  auto faultOf = [&](const std::string& row) {
+    test::writeFile(file, std::string(kHeader) + good + "\n" + row + "\n");
+    try {
+      readTreesCsv(file);
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().line, 3) << row;
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(faultOf("8,pine,nan,20,412,12,6.5,1.2,2.5,0.08,0.9,1").find("numbers"),
+            std::string::npos);
+  EXPECT_NE(faultOf("8,pine,1,inf,412,12,6.5,1.2,2.5,0.08,0.9,1").find("numbers"),
+            std::string::npos);
+  EXPECT_NE(faultOf("8,pine,1,2,412,12,6.5,1.2,2.5,0.08,0.9,1,extra").find("numbers"),
+            std::string::npos);
+  EXPECT_NE(faultOf("8,pi/ne,1,2,412,12,6.5,1.2,2.5,0.08,0.9,1").find("not a species name"),
+            std::string::npos);
+  EXPECT_NE(faultOf("8,pine,1,2,412,-1,6.5,1.2,2.5,0.08,0.9,1").find("age -1"), std::string::npos);
+  EXPECT_NE(faultOf("8,pine,1,2,412,12,1e30,1.2,2.5,0.08,0.9,1").find("height"), std::string::npos);
+  EXPECT_NE(faultOf("8,pine,1,2,412,12,6.5,-1,2.5,0.08,0.9,1").find("crown radius"),
+            std::string::npos);
+  EXPECT_NE(faultOf("8,pine,1,2,412,12,6.5,1.2,9,0.08,0.9,1").find("crown base"),
+            std::string::npos);
+  EXPECT_NE(faultOf("8,pine,1,2,412,12,6.5,1.2,2.5,0.08,1.5,1").find("vigor"), std::string::npos);
+  EXPECT_EQ(faultOf(good), "no error");
+}
+
+TEST(RunFormat, RunJsonIsCheckedAsUntrustedInput) {
+  const RunPaths run{test::freshDirectory("run_format_json_bad")};
+  auto faultOf = [&](const std::string& json) {
+    test::writeFile(run.runJson(), json);
+    try {
+      readRunJson(run);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string scenario = R"("scenario": {"file": "s.toml", "fingerprint": "00ff"})";
+  EXPECT_EQ(faultOf("{" + scenario + R"(, "status": "complete", "years": 3})"), "no error");
+  EXPECT_NE(faultOf("[1, 2]").find("scenario: missing"), std::string::npos);
+  EXPECT_NE(faultOf(R"({"scenario": {"file": 7}})").find("scenario.file: expected a string"),
+            std::string::npos);
+  EXPECT_NE(faultOf("{" + scenario + R"(, "status": "complete", "years": "many"})")
+                .find("years: expected a whole number"),
+            std::string::npos);
+  EXPECT_NE(
+      faultOf("{" + scenario + R"(, "status": "complete", "last_year": -4})").find("last_year"),
+      std::string::npos);
+  EXPECT_NE(faultOf("{" + scenario + R"(, "status": "finished"})").find("status"),
+            std::string::npos);
+  EXPECT_NE(faultOf(R"({"status": "complete", "scenario": {"file": "s", "fingerprint": "xyz"}})")
+                .find("hexadecimal"),
+            std::string::npos);
+  EXPECT_NE(faultOf("{" + scenario + R"(, "status": "complete", "seed": -1})").find("seed"),
+            std::string::npos);
 }
 
 TEST_F(OneHectare, CsvFilesHaveTheDocumentedColumns) {
@@ -98,7 +162,8 @@ TEST(RunFormat, RunJsonReadsBackWhatWasWritten) {
   const RunPaths run{test::freshDirectory("run_format_json")};
   RunRecord r;
   r.version = "9.9";
-  r.status = "interrupted";
+  r.status = "failed";
+  r.error = "disk full";
   r.scenarioFile = run.dir / "s.toml";
   r.scenarioName = "s";
   r.fingerprint = 0xfedcba9876543210ULL;
@@ -112,6 +177,7 @@ TEST(RunFormat, RunJsonReadsBackWhatWasWritten) {
   const RunRecord back = readRunJson(run);
   EXPECT_EQ(back.version, r.version);
   EXPECT_EQ(back.status, r.status);
+  EXPECT_EQ(back.error, r.error);
   EXPECT_EQ(back.scenarioFile, r.scenarioFile);
   EXPECT_EQ(back.scenarioName, r.scenarioName);
   EXPECT_EQ(back.fingerprint, r.fingerprint);

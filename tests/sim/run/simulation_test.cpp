@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "sim/run/checkpoint.hpp"
+#include "sim/run/run_lock.hpp"
 #include "test_files.hpp"
 
 namespace eco {
@@ -187,6 +188,49 @@ TEST(Simulation, RefusesToResumeAnotherScenariosCheckpoint) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("another scenario"), std::string::npos) << e.what();
   }
+}
+
+TEST(Simulation, ASecondRunIntoTheSameFolderIsRefused) {
+  const auto out = test::freshDirectory("simulation_locked_out");
+  const RunLock otherRun(out);
+  try {
+    runSimulation(optionsFor(smallScenario("locked"), out));
+    FAIL() << "two runs wrote one folder";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("another ecoforest run"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(out / "run.json"));
+}
+
+// A fresh run replaces an earlier run's files, and its run.json says so before the old
+// files go; what a kill -9 left half-written is cleared away.
+TEST(Simulation, AFreshRunLeavesNothingOfAnEarlierOne) {
+  const auto out = test::freshDirectory("simulation_reused");
+  runSimulation(optionsFor(smallScenario("reused_long"), out));
+  EXPECT_TRUE(std::filesystem::exists(out / "trees/year_0030.csv"));
+  test::writeFile(out / "stats.csv.tmp-999999-0", "half a file");
+  test::writeFile(out / "trees/year_0040.csv.tmp-999999-3", "half a file");
+  RunOptions shorter = optionsFor(smallScenario("reused_short"), out);
+  shorter.years = 10;
+  runSimulation(shorter);
+  EXPECT_EQ(RunPaths{out}.snapshotYears(), std::vector<int>{10});
+  EXPECT_FALSE(std::filesystem::exists(out / "stats.csv.tmp-999999-0"));
+  EXPECT_FALSE(std::filesystem::exists(out / "trees/year_0040.csv.tmp-999999-3"));
+  const RunRecord record = readRunJson(RunPaths{out});
+  EXPECT_EQ(record.status, "complete");
+  EXPECT_EQ(record.lastYear, 10);
+}
+
+// A run that fails after it claimed the folder says so in run.json.
+TEST(Simulation, AFailedRunIsRecordedAsFailed) {
+  const auto out = test::freshDirectory("simulation_failed");
+  // A folder where year 10's snapshot must go: the rename onto it fails.
+  std::filesystem::create_directories(out / "trees/year_0010.csv/blocked");
+  EXPECT_THROW(runSimulation(optionsFor(smallScenario("failing"), out)), EnvironmentError);
+  const RunRecord record = readRunJson(RunPaths{out});
+  EXPECT_EQ(record.status, "failed");
+  EXPECT_NE(record.error.find("year_0010.csv"), std::string::npos) << record.error;
+  EXPECT_EQ(test::entriesIn(out / "trees"), 1u);  // the blocking folder; no temporary
 }
 
 TEST(Simulation, BadScenariosGiveClearErrors) {

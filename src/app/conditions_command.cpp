@@ -20,6 +20,7 @@ struct ConditionsArguments {
   std::string scenario;
   std::string out;
   std::optional<int> threads;
+  bool ignoreMemoryCheck = false;
 };
 
 void runConditions(const ConditionsArguments& args) {
@@ -27,6 +28,7 @@ void runConditions(const ConditionsArguments& args) {
   std::optional<tbb::global_control> threads;
   if (args.threads) threads.emplace(tbb::global_control::max_allowed_parallelism, *args.threads);
   Terrain terrain = loadTerrain(scenario);
+  requireMemoryForConditions(terrain.grid, args.ignoreMemoryCheck);
   const std::filesystem::path folder = args.out.empty()
                                            ? std::filesystem::path("out") / scenario.name
                                            : std::filesystem::path(args.out);
@@ -66,6 +68,8 @@ void addConditionsCommand(CLI::App& app) {
                    "Scenario name (in scenarios/) or path to a scenario .toml")
       ->required();
   command->add_option("--out", args->out, "Output folder (default: out/<scenario name>)");
+  command->add_flag("--ignore-memory-check", args->ignoreMemoryCheck,
+                    "Go ahead where the terrain seems too large for the memory available");
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   command->callback([args] { runConditions(*args); });

@@ -23,6 +23,7 @@ struct RunArguments {
   std::optional<int> years;
   std::optional<int> threads;
   bool resume = false;
+  bool ignoreMemoryCheck = false;
 };
 
 std::atomic<bool> stopRequested{false};
@@ -35,6 +36,7 @@ int runScenario(const RunArguments& args) {
   if (args.out) options.out = *args.out;
   options.years = args.years;
   options.resume = args.resume;
+  options.ignoreMemoryCheck = args.ignoreMemoryCheck;
   options.programVersion = ECOFOREST_VERSION;
   options.stop = &stopRequested;
   reportToTheUser(options);
@@ -75,6 +77,8 @@ void addRunCommand(CLI::App& app) {
   command->add_option("--out", args->out, "Run folder (default: the scenario's [output] dir)");
   command->add_option("--years", args->years, "Years to simulate (default: the scenario's)")
       ->check(CLI::Range(1, 100000));
+  command->add_flag("--ignore-memory-check", args->ignoreMemoryCheck,
+                    "Go ahead where the terrain seems too large for the memory available");
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   command->add_flag("--resume", args->resume,

@@ -36,6 +36,7 @@ Field SceneSource::overlay(const std::string& name) const {
   }
   for (const FieldInfo& info : conditionFieldInfo())
     if (name == info.name) {
+      requireMemoryForConditions(terrain.grid, false);
       const ConditionFields fields = computeConditions(terrain, scenario.climate, {});
       return fields.*info.field;
     }

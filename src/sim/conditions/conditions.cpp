@@ -2,6 +2,9 @@
 
 #include <chrono>
 
+#include <fmt/format.h>
+
+#include "core/memory.hpp"
 #include "sim/conditions/moisture.hpp"
 #include "sim/conditions/slope.hpp"
 #include "sim/conditions/windiness.hpp"
@@ -58,6 +61,12 @@ ConditionFields computeConditions(const Terrain& terrain, const Climate& climate
     report->sunRaysPerSecond = sunMs > 0.0 ? parts.rays / (sunMs / 1000.0) : 0.0;
   }
   return fields;
+}
+
+void requireMemoryForConditions(const Grid& grid, bool ignore) {
+  requireMemory(grid.cellCount() * kConditionsBytesPerCell,
+                fmt::format("the living conditions of a {} x {} terrain", grid.width, grid.height),
+                "--ignore-memory-check", ignore);
 }
 
 }  // namespace eco

@@ -230,6 +230,7 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
 
   const auto conditionsStart = Clock::now();
   Terrain terrain = loadTerrain(scenario);
+  requireMemoryForConditions(terrain.grid, options.ignoreMemoryCheck);
   ConditionsReport report;
   ConditionFields fields =
       computeConditions(terrain, scenario.climate, SunlightSettings{}, &report);

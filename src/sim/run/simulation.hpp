@@ -31,6 +31,7 @@ struct RunOptions {
   std::optional<std::filesystem::path> out;  // overrides [output] dir
   std::optional<int> years;                  // overrides [simulation] years
   bool resume = false;
+  bool ignoreMemoryCheck = false;  // go ahead where the terrain seems too large for memory
   std::string programVersion = "unknown";
   // Checked after every year: once true, the run stops there, its files complete.
   const std::atomic<bool>* stop = nullptr;

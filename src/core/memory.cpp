@@ -1,0 +1,42 @@
+#include "core/memory.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace eco {
+
+std::optional<std::uint64_t> availableMemoryBytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string line; std::getline(meminfo, line);) {
+    std::istringstream fields(line);
+    std::string key;
+    std::uint64_t kilobytes = 0;
+    if (fields >> key >> kilobytes && key == "MemAvailable:") return kilobytes * 1024;
+  }
+  return std::nullopt;
+}
+
+std::string formatBytes(std::uint64_t bytes) {
+  std::ostringstream text;
+  text.precision(bytes >= 10'000'000'000ull ? 0 : 1);
+  text << std::fixed;
+  if (bytes >= 1'000'000'000ull)
+    text << static_cast<double>(bytes) / 1e9 << " GB";
+  else
+    text << static_cast<double>(bytes) / 1e6 << " MB";
+  return text.str();
+}
+
+void requireMemory(std::uint64_t bytes, const std::string& what, const std::string& option,
+                   bool ignore) {
+  if (ignore) return;
+  const std::optional<std::uint64_t> available = availableMemoryBytes();
+  if (!available || bytes <= *available) return;
+  throw EnvironmentError(
+      what + " needs about " + formatBytes(bytes) + " of memory; " + formatBytes(*available) +
+      " is available. Use a smaller or coarser terrain, or " + option + " to go ahead anyway");
+}
+
+}  // namespace eco

@@ -26,6 +26,15 @@ std::filesystem::path folderOf(const std::filesystem::path& file) {
 
 }  // namespace
 
+bool createOutputFolder(const std::filesystem::path& folder) {
+  std::error_code error;
+  const bool made = std::filesystem::create_directories(folder, error);
+  if (error)
+    throw EnvironmentError(folder.string() +
+                           ": cannot create the output folder: " + error.message());
+  return made;
+}
+
 void syncFolder(const std::filesystem::path& folder) {
   const int descriptor = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (descriptor < 0) return;

@@ -58,6 +58,11 @@ class AtomicFileSet {
   std::deque<AtomicFile> files_;  // a deque: references from add() stay valid
 };
 
+// Creates an output folder and the folders above it; returns whether it was made (false
+// when it existed). EnvironmentError naming the folder and the cause (no permission, a
+// read-only file system).
+bool createOutputFolder(const std::filesystem::path& folder);
+
 // fsyncs a folder, so that a rename into it survives a crash of the machine; errors are
 // ignored (some file systems cannot sync folders).
 void syncFolder(const std::filesystem::path& folder);

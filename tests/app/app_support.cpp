@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
+
 namespace eco::test {
 
 CommandResult ecoforest(const std::string& arguments) {
@@ -16,6 +18,54 @@ const std::filesystem::path& shortDefaultRun() {
     return d;
   }();
   return dir;
+}
+
+std::optional<ConfinedResult> inSmallFileSystem(const std::string& commandLine, int kilobytes,
+                                                const std::string& mountOptions) {
+  static const bool possible =
+      runCommand("unshare -rm sh -c 'mount -t tmpfs tmpfs /tmp' 2>&1").exitCode == 0;
+  if (!possible) return std::nullopt;
+  const std::filesystem::path space = freshDirectory("small_fs");
+  constexpr int kCannotMount = 99;
+  const std::string script =
+      "mount -t tmpfs -o size=" + std::to_string(kilobytes) + "k" +
+      (mountOptions.empty() ? "" : "," + mountOptions) + " tmpfs " + space.string() + " || exit " +
+      std::to_string(kCannotMount) + "\nexport SPACE=" + space.string() + "\n(" + commandLine +
+      ")\nrc=$?\necho '--- files'\n(cd \"$SPACE\" && find . -mindepth 1 | sort)\n" + "exit $rc\n";
+  const std::filesystem::path scriptFile =
+      space.parent_path() / (space.filename().string() + ".sh");
+  writeFile(scriptFile, script);
+  CommandResult r = runCommand("unshare -rm sh " + scriptFile.string());
+  if (r.exitCode == kCannotMount) return std::nullopt;
+  ConfinedResult confined;
+  const std::size_t marker = r.output.rfind("--- files\n");
+  if (marker != std::string::npos) {
+    confined.files = r.output.substr(marker + 10);
+    r.output.resize(marker);
+  }
+  confined.result = r;
+  return confined;
+}
+
+void expectCleanFailure(const std::string& arguments, int kilobytes,
+                        const std::string& mountOptions, const std::string& message) {
+  const auto confined =
+      inSmallFileSystem(std::string(ECOFOREST_EXE) + " " + arguments, kilobytes, mountOptions);
+  if (!confined) GTEST_SKIP() << "cannot mount a tmpfs in a user namespace here (unshare -rm)";
+  EXPECT_EQ(confined->result.exitCode, 3) << arguments << "\n" << confined->result.output;
+  EXPECT_NE(confined->result.output.find(message), std::string::npos) << arguments << "\n"
+                                                                      << confined->result.output;
+  EXPECT_EQ(confined->files, "") << arguments;
+}
+
+CommandResult interruptWhen(const std::string& arguments, const std::string& condition) {
+  return runCommand("(" + std::string(ECOFOREST_EXE) + " " + arguments + " & pid=$!\nuntil " +
+                    condition + " || ! kill -0 $pid 2>/dev/null; do sleep 0.02; done\n" +
+                    "kill -INT $pid 2>/dev/null; wait $pid)");
+}
+
+bool holdsATemporary(const std::string& files) {
+  return files.find(".tmp-") != std::string::npos || files.find(".partial") != std::string::npos;
 }
 
 }  // namespace eco::test

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app_support.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -59,6 +60,18 @@ TEST(ConditionsCommand, BadInputIsExitTwoWithFileAndLine) {
   EXPECT_NE(missing.output.find("nothere.png: no such file"), std::string::npos) << missing.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
   EXPECT_EQ(run("conditions nowhere").exitCode, 2);
+}
+
+TEST(ConditionsCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
+  const auto confined = eco::test::inSmallFileSystem(
+      std::string(ECOFOREST_EXE) + " conditions valley --out \"$SPACE/c\"", 200);
+  ECO_SKIP_WITHOUT(confined);
+  EXPECT_EQ(confined->result.exitCode, 3) << confined->result.output;
+  EXPECT_NE(confined->result.output.find("No space left on device"), std::string::npos)
+      << confined->result.output;
+  EXPECT_FALSE(eco::test::holdsATemporary(confined->files)) << confined->files;
+  eco::test::expectCleanFailure("conditions valley --out \"$SPACE\"", 1000, "ro",
+                                "Read-only file system");
 }
 
 TEST(TerrainCommand, SavesAHeightmapTheConditionsCanRead) {

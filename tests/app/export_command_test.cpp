@@ -231,6 +231,55 @@ TEST(ExportCommand, ThreeJsCountsTheGpuInstances) {
   EXPECT_EQ(report["ids"].get<std::set<std::uint64_t>>(), csvIds());
 }
 
+TEST(ExportCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
+  const std::string run = shortDefaultRun().string();
+  for (const char* file : {"forest.glb", "forest.gltf", "trees.geojson"}) {
+    const std::string out = " --out \"$SPACE/" + std::string(file) + "\"";
+    eco::test::expectCleanFailure("export " + run + out, 8, "", "No space left on device");
+    eco::test::expectCleanFailure("export " + run + out, 1000, "ro", "Read-only file system");
+  }
+}
+
+TEST(ExportCommand, CtrlCLeavesNothingPartial) {
+  const auto dir = eco::test::freshDirectory("app_export_interrupt");
+  for (const char* after : {"0.2", "0.6", "1.2"}) {
+    CommandResult r = eco::test::interruptWhen(
+        "export " + shortDefaultRun().string() + " --lod 0 --out " + (dir / "f.gltf").string(),
+        std::string("sleep ") + after);
+    EXPECT_TRUE(r.exitCode == 130 || r.exitCode == 0) << after << ": " << r.output;
+    // A .gltf comes with its .bin: both or neither.
+    EXPECT_EQ(eco::test::entriesIn(dir), r.exitCode == 0 ? 2u : 0u) << after;
+    std::filesystem::remove(dir / "f.gltf");
+    std::filesystem::remove(dir / "f.bin");
+  }
+}
+
+// The trees of a run belong to its scenario as it was: after an edit, export refuses.
+TEST(ExportCommand, AnEditedScenarioUnderARunIsRefused) {
+  const auto dir = eco::test::freshDirectory("app_export_edited");
+  const std::string scenario =
+      "name = \"edited\"\nseed = 3\n[terrain]\ncell_size_m = 10.0\n[terrain.generate]\n"
+      "size = 17\nrelief_m = 20.0\n[simulation]\nyears = 2\n[[species]]\nfile = \"" +
+      (std::filesystem::path(ECOFOREST_DATA_DIR) / "species" / "beech.toml").string() +
+      "\"\nseed_rain_per_ha_per_year = 50.0\n";
+  eco::test::writeFile(dir / "s.toml", scenario);
+  ASSERT_EQ(
+      ecoforest("run " + (dir / "s.toml").string() + " --out " + (dir / "run").string()).exitCode,
+      0);
+  ASSERT_EQ(
+      ecoforest("export " + (dir / "run").string() + " --out " + (dir / "a.glb").string()).exitCode,
+      0);
+  eco::test::writeFile(dir / "s.toml",
+                       std::string(scenario).replace(scenario.find("20.0"), 4, "80.0"));
+  CommandResult r =
+      ecoforest("export " + (dir / "run").string() + " --out " + (dir / "b.glb").string());
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("run.json: scenario.fingerprint: the scenario"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("has changed since this run"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "b.glb"));
+}
+
 TEST(ExportCommand, BadInputIsExitTwoAndWritesNothing) {
   const auto dir = eco::test::freshDirectory("app_export_bad");
   const std::string out = " --out " + (dir / "f.glb").string();

@@ -70,6 +70,30 @@ TEST(RenderCommand, BadInputIsExitTwoWithAClearMessageAndNoFile) {
 
 // The window under a virtual X server: it opens, draws a few frames, saves a screenshot
 // and exits. Skipped where Xvfb is not installed.
+TEST(RenderCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
+  const std::string render = "render " + shortDefaultRun().string() + " --size 640x360";
+  eco::test::expectCleanFailure(render + " --out \"$SPACE/a.png\"", 16, "",
+                                "a.png: writing failed: No space left on device");
+  eco::test::expectCleanFailure(render + " --out \"$SPACE/a.png\"", 1000, "ro",
+                                "Read-only file system");
+}
+
+// Ctrl-C at any moment of a render: it either finished (exit 0, the whole picture) or
+// stopped (exit 130, no picture), and never leaves a temporary.
+TEST(RenderCommand, CtrlCLeavesNothingPartial) {
+  const auto dir = eco::test::freshDirectory("app_render_interrupt");
+  for (const char* after : {"0.3", "1", "2"}) {
+    CommandResult r =
+        eco::test::interruptWhen("render " + shortDefaultRun().string() +
+                                     " --size 1920x1080 --out " + (dir / "a.png").string(),
+                                 std::string("sleep ") + after);
+    EXPECT_TRUE(r.exitCode == 130 || r.exitCode == 0) << after << ": " << r.output;
+    EXPECT_EQ(std::filesystem::exists(dir / "a.png"), r.exitCode == 0) << after;
+    EXPECT_EQ(eco::test::entriesIn(dir), r.exitCode == 0 ? 1u : 0u) << after;
+    std::filesystem::remove(dir / "a.png");
+  }
+}
+
 TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
   if (eco::test::runCommand("command -v xvfb-run").exitCode != 0)
     GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb); the view window is not tested";

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app_support.hpp"
+#include "core/error.hpp"
 #include "gdal_tools.hpp"
 #include "sim/grid.hpp"
 #include "sim/image_io.hpp"
@@ -56,6 +58,74 @@ TEST(RunCommand, CtrlCStopsAfterAYearWithCompleteFiles) {
       run("run --resume --years " + std::to_string(stopped + 1) + " --out " + dir.string());
   ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
   EXPECT_EQ(lastYearIn(eco::test::readFile(dir / "stats.csv")), stopped + 1);
+}
+
+// A disk that fills during the run: a clear error, exit 3, run.json says the run failed, and
+// no temporary is left.
+TEST(RunCommand, AFullDiskFailsClearlyAndLeavesNoPartialFile) {
+  const auto confined = eco::test::inSmallFileSystem(
+      std::string(ECOFOREST_EXE) +
+          " run --years 3 --out \"$SPACE/run\"; rc=$?; cat \"$SPACE/run/run.json\"; exit $rc",
+      600);
+  ECO_SKIP_WITHOUT(confined);
+  EXPECT_EQ(confined->result.exitCode, eco::kExitEnvironment) << confined->result.output;
+  EXPECT_NE(confined->result.output.find("No space left on device"), std::string::npos)
+      << confined->result.output;
+  EXPECT_NE(confined->result.output.find("\"status\": \"failed\""), std::string::npos)
+      << confined->result.output;
+  EXPECT_FALSE(eco::test::holdsATemporary(confined->files)) << confined->files;
+}
+
+TEST(RunCommand, AReadOnlyFolderIsAClearError) {
+  const auto confined = eco::test::inSmallFileSystem(
+      std::string(ECOFOREST_EXE) + " run --years 2 --out \"$SPACE\"", 1000, "ro");
+  ECO_SKIP_WITHOUT(confined);
+  EXPECT_EQ(confined->result.exitCode, eco::kExitEnvironment) << confined->result.output;
+  EXPECT_NE(confined->result.output.find("Read-only file system"), std::string::npos)
+      << confined->result.output;
+  EXPECT_EQ(confined->files, "");
+}
+
+TEST(RunCommand, ASecondRunIntoTheSameFolderIsRefused) {
+  const auto dir = eco::test::freshDirectory("app_run_twice");
+  const std::string exe = ECOFOREST_EXE;
+  // The first runs for long; the second starts once the first has claimed the folder.
+  CommandResult r = eco::test::runCommand(
+      "(" + exe + " run --years 400 --out " + dir.string() + " >/dev/null 2>&1 & first=$!\n" +
+      "while [ ! -f " + (dir / "run.json").string() + " ]; do sleep 0.05; done\n" + exe +
+      " run --years 2 --out " + dir.string() + "; rc=$?\nkill -INT $first; wait $first\nexit $rc)");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("another ecoforest run (process"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("is writing into this folder"), std::string::npos) << r.output;
+}
+
+// kill -9 at several points, each time resumed (or, before the first checkpoint, started
+// afresh): the same files as a run never interrupted.
+TEST(RunCommand, KilledAtSeveralPointsAndResumedGivesTheSameFiles) {
+  const auto& whole = eco::test::shortDefaultRun();  // 20 years
+  const auto dir = eco::test::freshDirectory("app_run_killed");
+  const std::string exe = ECOFOREST_EXE;
+  const std::string stats = (dir / "stats.csv").string();
+  // Starts a run, waits until stats.csv has `rows` lines (4 a year: three species and the
+  // stand) or run.json exists (rows 0), then kills it without warning.
+  auto killAt = [&](int rows, const std::string& flags) {
+    const std::string until = rows == 0 ? "[ -f " + (dir / "run.json").string() + " ]"
+                                        : "[ -f " + stats + " ] && [ $(wc -l < " + stats +
+                                              ") -ge " + std::to_string(rows) + " ]";
+    return eco::test::runCommand(exe + " run --years 20 " + flags + " --out " + dir.string() +
+                                 " >/dev/null 2>&1 & pid=$!\nuntil " + until +
+                                 "; do sleep 0.02; done\nkill -9 $pid; wait $pid; exit 0");
+  };
+  killAt(0, "");
+  ASSERT_EQ(eco::test::ecoforest("run --years 20 --out " + dir.string()).exitCode, 0);
+  killAt(1 + 4 * 6, "");
+  killAt(1 + 4 * 14, "--resume");
+  CommandResult last = eco::test::ecoforest("run --years 20 --resume --out " + dir.string());
+  ASSERT_EQ(last.exitCode, 0) << last.output;
+  for (const char* file :
+       {"stats.csv", "trees/year_0010.csv", "trees/year_0020.csv", "maps/canopy_height.exr"})
+    EXPECT_TRUE(eco::test::readFile(whole / file) == eco::test::readFile(dir / file)) << file;
+  EXPECT_EQ(nlohmann::json::parse(eco::test::readFile(dir / "run.json"))["status"], "complete");
 }
 
 TEST(RunCommand, BadInputIsExitTwo) {

@@ -41,6 +41,41 @@ TEST(TimelapseCommand, PngFramesAreCountedAndIdenticalForTheSameRunAndOptions) {
   }
 }
 
+TEST(TimelapseCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
+  const std::string frames =
+      "timelapse " + shortDefaultRun().string() + " --seconds 2 --fps 10 --size 320x180";
+  eco::test::expectCleanFailure(frames + " --out \"$SPACE/frames\"", 16, "",
+                                "No space left on device");
+  eco::test::expectCleanFailure(frames + " --out \"$SPACE/frames\"", 1000, "ro",
+                                "Read-only file system");
+  if (eco::test::runCommand("command -v ffmpeg").exitCode != 0)
+    GTEST_SKIP() << "ffmpeg is not installed (scripts/setup installs it)";
+  eco::test::expectCleanFailure(frames + " --out \"$SPACE/t.mp4\"", 16, "",
+                                "t.mp4: ffmpeg failed to encode it");
+  eco::test::expectCleanFailure(frames + " --out \"$SPACE/t.mp4\"", 1000, "ro",
+                                "Read-only file system");
+}
+
+// Ctrl-C while the frames are being written: exit 130 and neither the frame folder nor the
+// video nor a partial one is left.
+TEST(TimelapseCommand, CtrlCLeavesNothingPartial) {
+  const auto dir = eco::test::freshDirectory("app_timelapse_interrupt");
+  const std::string timelapse =
+      "timelapse " + shortDefaultRun().string() + " --seconds 60 --fps 10 --size 160x96";
+  CommandResult frames = eco::test::interruptWhen(
+      timelapse + " --out " + (dir / "frames").string(),
+      "[ -e " + (dir / "frames.partial" / "frame_00002.png").string() + " ]");
+  EXPECT_EQ(frames.exitCode, 130) << frames.output;
+  EXPECT_EQ(eco::test::entriesIn(dir), 0u);
+  if (eco::test::runCommand("command -v ffmpeg").exitCode != 0)
+    GTEST_SKIP() << "ffmpeg is not installed (scripts/setup installs it)";
+  CommandResult video =
+      eco::test::interruptWhen(timelapse + " --out " + (dir / "t.mp4").string(),
+                               "[ -s " + (dir / ".partial_t.mp4").string() + " ]");
+  EXPECT_EQ(video.exitCode, 130) << video.output;
+  EXPECT_EQ(eco::test::entriesIn(dir), 0u);
+}
+
 TEST(TimelapseCommand, BadInputIsExitTwoAndLeavesNoFile) {
   const auto dir = eco::test::freshDirectory("app_timelapse_bad");
   const std::string run = shortDefaultRun().string();

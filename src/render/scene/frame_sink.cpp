@@ -2,10 +2,12 @@
 
 #include <fcntl.h>
 #include <unistd.h>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -22,6 +24,13 @@ namespace {
 // "frames/" names the folder "frames".
 std::filesystem::path withoutTrailingSeparator(const std::filesystem::path& folder) {
   return folder.has_filename() ? folder : folder.parent_path();
+}
+
+// Where ffmpeg's messages go: a file of this process's in the temporary folder.
+std::filesystem::path ffmpegMessagesFile() {
+  static std::atomic<int> count{0};
+  return std::filesystem::temp_directory_path() /
+         fmt::format("ecoforest-ffmpeg-{}-{}.log", ::getpid(), count++);
 }
 
 [[noreturn]] void failWith(const std::filesystem::path& file, const std::string& what,
@@ -71,7 +80,9 @@ class Mp4Sink : public FrameSink {
   Mp4Sink(const std::filesystem::path& file, int width, int height, int fps)
       : file_(file),
         partial_(file.parent_path() / (".partial_" + file.filename().string())),
-        cleanup_(partial_) {
+        messages_(ffmpegMessagesFile()),
+        cleanup_(partial_),
+        messagesCleanup_(messages_) {
     if (!programOnPath("ffmpeg"))
       throw EnvironmentError(
           "MP4 output needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg); or "
@@ -87,8 +98,8 @@ class Mp4Sink : public FrameSink {
         "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv' "
         "-c:v libx264 -preset fast -crf 20 -pix_fmt yuv420p -colorspace bt709 "
         "-color_primaries bt709 -color_trc bt709 -color_range tv -movflags +faststart "
-        "-f mp4 '{}'",
-        width, height, fps, partial_.string());
+        "-f mp4 '{}' 2>'{}'",
+        width, height, fps, partial_.string(), messages_.string());
     std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give an error, not kill us
     pipe_ = popen(command.c_str(), "w");
     if (!pipe_)
@@ -98,6 +109,7 @@ class Mp4Sink : public FrameSink {
     if (pipe_) pclose(pipe_);
     std::error_code ignored;  // a destructor runs during unwinding: it must not throw
     if (!finished_) std::filesystem::remove(partial_, ignored);
+    std::filesystem::remove(messages_, ignored);
   }
   void add(const Image& frame) override {
     const std::vector<std::uint8_t> rgb = frame.rgb();
@@ -106,10 +118,13 @@ class Mp4Sink : public FrameSink {
   void finish() override {
     const int status = pclose(pipe_);
     pipe_ = nullptr;
-    // ffmpeg exits non-zero when it cannot write (a full disk); an empty file is a failure
-    // that slipped past it.
+    // ffmpeg reports only errors (-loglevel error), and some -- a full disk while it writes
+    // the MP4's index -- with exit status 0: any message, like a non-zero status or an empty
+    // file, is a failure.
     std::error_code error;
-    if (status != 0 || std::filesystem::file_size(partial_, error) == 0 || error) fail();
+    if (status != 0 || !messages().empty() || std::filesystem::file_size(partial_, error) == 0 ||
+        error)
+      fail();
     const int descriptor = ::open(partial_.c_str(), O_RDONLY | O_CLOEXEC);
     const bool synced = descriptor >= 0 && ::fsync(descriptor) == 0;
     if (descriptor >= 0) ::close(descriptor);
@@ -122,15 +137,24 @@ class Mp4Sink : public FrameSink {
   }
 
  private:
+  // What ffmpeg wrote to its standard error.
+  std::string messages() const {
+    std::ifstream in(messages_);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
   [[noreturn]] void fail() {
     if (pipe_) pclose(pipe_);
     pipe_ = nullptr;
-    throw EnvironmentError(file_.string() +
-                           ": ffmpeg failed to encode it (its messages are above)");
+    std::string said = messages();
+    while (!said.empty() && said.back() == '\n') said.pop_back();
+    throw EnvironmentError(file_.string() + ": ffmpeg failed to encode it" +
+                           (said.empty() ? std::string() : ": " + said));
   }
 
-  std::filesystem::path file_, partial_;
-  InterruptCleanup cleanup_;
+  std::filesystem::path file_, partial_, messages_;
+  InterruptCleanup cleanup_, messagesCleanup_;
   FILE* pipe_ = nullptr;
   bool finished_ = false;
 };

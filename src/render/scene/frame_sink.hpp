@@ -23,7 +23,7 @@ class FrameSink {
 // frame_00000.png, frame_00001.png, ... in `folder`, which must not exist yet or be empty.
 std::unique_ptr<FrameSink> pngFolderSink(const std::filesystem::path& folder);
 // An MP4 (H.264, yuv420p, odd sizes padded to even) at `fps`. EnvironmentError when ffmpeg
-// is not installed or fails (its messages go to stderr).
+// is not installed or fails; the error holds what ffmpeg said.
 std::unique_ptr<FrameSink> mp4Sink(const std::filesystem::path& file, FrameSize size, int fps);
 
 // Whether an executable of that name is on PATH.

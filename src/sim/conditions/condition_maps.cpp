@@ -143,11 +143,7 @@ FieldStats writeFieldMap(const std::filesystem::path& folder, const std::string&
 void writeConditionOutputs(const ConditionFields& fields, const ConditionsReport& report,
                            const Scenario& scenario, const std::filesystem::path& folder) {
   const RunPaths paths{folder};
-  std::error_code error;
-  std::filesystem::create_directories(paths.mapsFolder(), error);
-  if (error)
-    throw InputError({folder.string(), 0, ""},
-                     "cannot create the output folder: " + error.message());
+  createOutputFolder(paths.mapsFolder());
   nlohmann::ordered_json json;
   json["scenario"] = scenario.name;
   json["grid"] = {{"width", fields.grid.width},

@@ -23,9 +23,11 @@ constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
 constexpr std::uint32_t kFormatVersion = 4;
 constexpr std::size_t kChecksumBlock = std::size_t{1} << 20;
 
+}  // namespace
+
 // FNV-1a of each 1 MiB block (in parallel: a checkpoint is written every year and can be
 // tens of megabytes), then FNV-1a over the blocks' hashes.
-std::uint64_t checksumOf(std::string_view bytes) {
+std::uint64_t checkpointChecksum(std::string_view bytes) {
   const std::size_t blocks = (bytes.size() + kChecksumBlock - 1) / kChecksumBlock;
   std::vector<std::uint64_t> hashes(blocks);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
@@ -34,6 +36,8 @@ std::uint64_t checksumOf(std::string_view bytes) {
   return fnv1a64(std::string_view(reinterpret_cast<const char*>(hashes.data()),
                                   hashes.size() * sizeof(std::uint64_t)));
 }
+
+namespace {
 
 bool finiteAtLeast(float value, float least) {
   return std::isfinite(value) && value >= least;
@@ -144,7 +148,7 @@ void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkp
   w.put(checkpoint.state.nextId);
   checkpoint.state.plants.forEachColumn([&](const auto& column) { w.putVector(column); });
   w.putVector(checkpoint.stats);
-  const std::uint64_t checksum = checksumOf(w.bytes());
+  const std::uint64_t checksum = checkpointChecksum(w.bytes());
   w.put(checksum);
   AtomicFile out(file);
   out.write(w.bytes());
@@ -166,7 +170,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expec
   const std::string_view body(bytes.data(), bytes.size() - sizeof(std::uint64_t));
   std::uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + body.size(), sizeof stored);
-  if (stored != checksumOf(body)) throw refuse("checkpoint is corrupt (checksum mismatch)");
+  if (stored != checkpointChecksum(body)) throw refuse("checkpoint is corrupt (checksum mismatch)");
 
   BinaryReader r(body);
   r.getString();

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sim/ecology/ecosystem.hpp"
@@ -20,6 +21,10 @@ struct Checkpoint {
   EcosystemState state;
   std::vector<StatsRow> stats;
 };
+
+// The checksum that ends a checkpoint, of the bytes before it (the fuzz target seals mutated
+// files with it, to reach the parser behind the check).
+std::uint64_t checkpointChecksum(std::string_view body);
 
 void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkpoint);
 

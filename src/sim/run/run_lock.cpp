@@ -7,6 +7,7 @@
 #include <cstring>
 #include <string>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace eco {
@@ -19,11 +20,7 @@ std::filesystem::path lockFile(const std::filesystem::path& folder) {
 }  // namespace
 
 RunLock::RunLock(const std::filesystem::path& folder) : folder_(folder) {
-  std::error_code error;
-  madeFolder_ = std::filesystem::create_directories(folder, error);
-  if (error)
-    throw InputError({folder.string(), 0, ""},
-                     "cannot create the output folder: " + error.message());
+  madeFolder_ = createOutputFolder(folder);
   descriptor_ = ::open(lockFile(folder).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
   if (descriptor_ < 0)
     throw EnvironmentError(lockFile(folder).string() +

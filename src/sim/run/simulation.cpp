@@ -6,6 +6,7 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include "core/atomic_file.hpp"
 #include "core/binary_io.hpp"
 #include "core/error.hpp"
 #include "core/names.hpp"
@@ -27,14 +28,6 @@ double secondsSince(Clock::time_point start) {
 // A file's bytes; empty if it cannot be read (the scenario and its files were read already).
 std::string fileBytes(const std::filesystem::path& file) {
   return readFileBytes(file).value_or(std::string());
-}
-
-void createFolder(const std::filesystem::path& folder) {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error)
-    throw InputError({folder.string(), 0, ""},
-                     "cannot create the output folder: " + error.message());
 }
 
 std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem, const ConditionFields& fields) {
@@ -244,8 +237,8 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
   EcosystemSettings settings{scenario.seed, scenario.climate.prevailingWindFrom_deg};
   Ecosystem ecosystem(terrain, fields, std::move(species), settings);
   std::vector<StatsRow> stats;
-  createFolder(run.mapsFolder());
-  createFolder(run.treesFolder());
+  createOutputFolder(run.mapsFolder());
+  createOutputFolder(run.treesFolder());
   if (checkpoint) {
     ecosystem.restore(std::move(checkpoint->state));
     stats = std::move(checkpoint->stats);

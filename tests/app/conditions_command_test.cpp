@@ -62,6 +62,26 @@ TEST(ConditionsCommand, BadInputIsExitTwoWithFileAndLine) {
   EXPECT_EQ(run("conditions nowhere").exitCode, 2);
 }
 
+// A PNG whose header claims 65,535 x 65,535 pixels (the fuzz reproducer, without the byte
+// that chooses the format): refused from its header, before 17 GB are allocated.
+TEST(ConditionsCommand, AHeightmapClaimingHugeDimensionsIsRefusedAtOnce) {
+  auto dir = eco::test::freshDirectory("app_conditions_huge");
+  const std::string reproducer =
+      eco::test::readFile(std::filesystem::path(ECOFOREST_DATA_DIR) /
+                          "../tests/fuzz/crashes/heightmap/png_claims_65535_squared");
+  eco::test::writeFile(dir / "huge.png", reproducer.substr(1));
+  std::ofstream(dir / "huge.toml") << "[terrain]\nheightmap = \"huge.png\"\ncell_size_m = 1\n";
+  // Under a 4 GB address-space limit, as in the audit that found it.
+  RunResult r =
+      eco::test::runCommand("ulimit -v 4000000; " + std::string(ECOFOREST_EXE) + " conditions " +
+                            (dir / "huge.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("the image is 65535 x 65535 pixels; ecoforest reads heightmaps of at "
+                          "most 268435456 pixels"),
+            std::string::npos)
+      << r.output;
+}
+
 TEST(ConditionsCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
   const auto confined = eco::test::inSmallFileSystem(
       std::string(ECOFOREST_EXE) + " conditions valley --out \"$SPACE/c\"", 200);

@@ -47,15 +47,25 @@ std::optional<ConfinedResult> inSmallFileSystem(const std::string& commandLine, 
   return confined;
 }
 
-void expectCleanFailure(const std::string& arguments, int kilobytes,
-                        const std::string& mountOptions, const std::string& message) {
-  const auto confined =
-      inSmallFileSystem(std::string(ECOFOREST_EXE) + " " + arguments, kilobytes, mountOptions);
-  if (!confined) GTEST_SKIP() << "cannot mount a tmpfs in a user namespace here (unshare -rm)";
-  EXPECT_EQ(confined->result.exitCode, 3) << arguments << "\n" << confined->result.output;
-  EXPECT_NE(confined->result.output.find(message), std::string::npos) << arguments << "\n"
-                                                                      << confined->result.output;
-  EXPECT_EQ(confined->files, "") << arguments;
+void expectFullAndReadOnlyDisksFailCleanly(const std::string& arguments, int kilobytes,
+                                           const std::string& fullDiskMessage) {
+  struct Disk {
+    int kilobytes;
+    const char* mountOptions;
+    std::string message;
+  };
+  for (const Disk& disk :
+       {Disk{kilobytes, "", fullDiskMessage}, Disk{1000, "ro", "Read-only file system"}}) {
+    const auto confined = inSmallFileSystem(std::string(ECOFOREST_EXE) + " " + arguments,
+                                            disk.kilobytes, disk.mountOptions);
+    if (!confined) GTEST_SKIP() << "cannot mount a tmpfs in a user namespace here (unshare -rm)";
+    EXPECT_EQ(confined->result.exitCode, kExitEnvironment) << arguments << "\n"
+                                                           << confined->result.output;
+    EXPECT_NE(confined->result.output.find(disk.message), std::string::npos)
+        << arguments << "\n"
+        << confined->result.output;
+    EXPECT_EQ(confined->files, "") << arguments;
+  }
 }
 
 CommandResult interruptWhen(const std::string& arguments, const std::string& condition) {

@@ -30,12 +30,12 @@ std::optional<ConfinedResult> inSmallFileSystem(const std::string& commandLine, 
   GTEST_SKIP() << "cannot mount a tmpfs in a user namespace here (unshare -rm): the " \
                   "full-disk and read-only tests need one"
 
-// Runs ecoforest with these arguments (which name their output under $SPACE) on a tmpfs of
-// `kilobytes` mounted with `mountOptions`, and expects a failure of the environment (exit 3)
-// whose message holds `message`, and nothing at all left in $SPACE. Skips where no tmpfs can
-// be made.
-void expectCleanFailure(const std::string& arguments, int kilobytes,
-                        const std::string& mountOptions, const std::string& message);
+// Runs ecoforest with these arguments (which name their output under $SPACE) twice: on a
+// tmpfs of `kilobytes` (a full disk) and on a read-only one. Expects each time a failure of
+// the environment (exit 3) whose message holds `fullDiskMessage`, or "Read-only file
+// system", and nothing at all left in $SPACE. Skips where no tmpfs can be made.
+void expectFullAndReadOnlyDisksFailCleanly(const std::string& arguments, int kilobytes,
+                                           const std::string& fullDiskMessage);
 
 // Starts ecoforest with these arguments, waits until the shell test `condition` holds (e.g.
 // [ -e FILE ], checked every 20 ms), then sends Ctrl-C (SIGINT) and returns how it ended.

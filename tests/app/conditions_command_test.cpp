@@ -90,8 +90,13 @@ TEST(ConditionsCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing)
   EXPECT_NE(confined->result.output.find("No space left on device"), std::string::npos)
       << confined->result.output;
   EXPECT_FALSE(eco::test::holdsATemporary(confined->files)) << confined->files;
-  eco::test::expectCleanFailure("conditions valley --out \"$SPACE\"", 1000, "ro",
-                                "Read-only file system");
+  // A read-only folder: the same clear error, and nothing written.
+  const auto readOnly = eco::test::inSmallFileSystem(
+      std::string(ECOFOREST_EXE) + " conditions valley --out \"$SPACE\"", 1000, "ro");
+  ECO_SKIP_WITHOUT(readOnly);
+  EXPECT_EQ(readOnly->result.exitCode, 3) << readOnly->result.output;
+  EXPECT_NE(readOnly->result.output.find("Read-only file system"), std::string::npos);
+  EXPECT_EQ(readOnly->files, "");
 }
 
 TEST(TerrainCommand, SavesAHeightmapTheConditionsCanRead) {

@@ -235,8 +235,8 @@ TEST(ExportCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
   const std::string run = shortDefaultRun().string();
   for (const char* file : {"forest.glb", "forest.gltf", "trees.geojson"}) {
     const std::string out = " --out \"$SPACE/" + std::string(file) + "\"";
-    eco::test::expectCleanFailure("export " + run + out, 8, "", "No space left on device");
-    eco::test::expectCleanFailure("export " + run + out, 1000, "ro", "Read-only file system");
+    eco::test::expectFullAndReadOnlyDisksFailCleanly("export " + run + out, 8,
+                                                     "No space left on device");
   }
 }
 

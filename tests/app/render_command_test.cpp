@@ -68,14 +68,10 @@ TEST(RenderCommand, BadInputIsExitTwoWithAClearMessageAndNoFile) {
   EXPECT_EQ(eco::test::entriesIn(dir), 0u);
 }
 
-// The window under a virtual X server: it opens, draws a few frames, saves a screenshot
-// and exits. Skipped where Xvfb is not installed.
 TEST(RenderCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
-  const std::string render = "render " + shortDefaultRun().string() + " --size 640x360";
-  eco::test::expectCleanFailure(render + " --out \"$SPACE/a.png\"", 16, "",
-                                "a.png: writing failed: No space left on device");
-  eco::test::expectCleanFailure(render + " --out \"$SPACE/a.png\"", 1000, "ro",
-                                "Read-only file system");
+  eco::test::expectFullAndReadOnlyDisksFailCleanly(
+      "render " + shortDefaultRun().string() + " --size 640x360 --out \"$SPACE/a.png\"", 16,
+      "a.png: writing failed: No space left on device");
 }
 
 // Ctrl-C at any moment of a render: it either finished (exit 0, the whole picture) or
@@ -94,6 +90,8 @@ TEST(RenderCommand, CtrlCLeavesNothingPartial) {
   }
 }
 
+// The window under a virtual X server: it opens, draws a few frames, saves a screenshot
+// and exits. Skipped where Xvfb is not installed.
 TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
   if (eco::test::runCommand("command -v xvfb-run").exitCode != 0)
     GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb); the view window is not tested";

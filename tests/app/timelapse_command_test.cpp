@@ -44,16 +44,12 @@ TEST(TimelapseCommand, PngFramesAreCountedAndIdenticalForTheSameRunAndOptions) {
 TEST(TimelapseCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
   const std::string frames =
       "timelapse " + shortDefaultRun().string() + " --seconds 2 --fps 10 --size 320x180";
-  eco::test::expectCleanFailure(frames + " --out \"$SPACE/frames\"", 16, "",
-                                "No space left on device");
-  eco::test::expectCleanFailure(frames + " --out \"$SPACE/frames\"", 1000, "ro",
-                                "Read-only file system");
+  eco::test::expectFullAndReadOnlyDisksFailCleanly(frames + " --out \"$SPACE/frames\"", 16,
+                                                   "No space left on device");
   if (eco::test::runCommand("command -v ffmpeg").exitCode != 0)
     GTEST_SKIP() << "ffmpeg is not installed (scripts/setup installs it)";
-  eco::test::expectCleanFailure(frames + " --out \"$SPACE/t.mp4\"", 16, "",
-                                "t.mp4: ffmpeg failed to encode it");
-  eco::test::expectCleanFailure(frames + " --out \"$SPACE/t.mp4\"", 1000, "ro",
-                                "Read-only file system");
+  eco::test::expectFullAndReadOnlyDisksFailCleanly(frames + " --out \"$SPACE/t.mp4\"", 16,
+                                                   "t.mp4: ffmpeg failed to encode it");
 }
 
 // Ctrl-C while the frames are being written: exit 130 and neither the frame folder nor the

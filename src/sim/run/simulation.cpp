@@ -182,15 +182,16 @@ RunSummary runSimulation(const RunOptions& options) {
   try {
     return simulateInto(scenario, folder, options, claimed);
   } catch (const std::exception& error) {
-    if (!claimed) lock.abandon();
-    if (claimed) {
-      claimed->status = "failed";
-      claimed->error = error.what();
-      try {
-        writeRunJson(RunPaths{folder}, *claimed);
-      } catch (const std::exception&) {
-        // The disk that failed the run may fail this too; the run's own error is reported.
-      }
+    if (!claimed) {
+      lock.abandon();  // refused before anything was written: the folder is as it was
+      throw;
+    }
+    claimed->status = "failed";
+    claimed->error = error.what();
+    try {
+      writeRunJson(RunPaths{folder}, *claimed);
+    } catch (const std::exception&) {
+      // The disk that failed the run may fail this too; the run's own error is reported.
     }
     throw;
   }

@@ -50,11 +50,11 @@ SingleChannelImage readSingleChannel(const std::filesystem::path& file, bool nan
     throw imageError(file, "a heightmap needs at least 2 x 2 pixels, found " +
                                std::to_string(spec.width) + " x " + std::to_string(spec.height));
   // The header alone says how large the image claims to be: check before allocating.
-  if (static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height) >
-      kMaxHeightmapPixels)
-    throw imageError(file, fmt::format("the image is {} x {} pixels; ecoforest reads heightmaps "
-                                       "of at most {} pixels (16384 x 16384)",
-                                       spec.width, spec.height, kMaxHeightmapPixels));
+  if (spec.width > kMaxHeightmapSide || spec.height > kMaxHeightmapSide)
+    throw imageError(file,
+                     fmt::format("the image is {} x {} pixels; ecoforest reads heightmaps "
+                                 "of at most {} x {} pixels",
+                                 spec.width, spec.height, kMaxHeightmapSide, kMaxHeightmapSide));
   SingleChannelImage image;
   image.width = spec.width;
   image.height = spec.height;

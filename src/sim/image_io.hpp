@@ -18,14 +18,16 @@ struct SingleChannelImage {
 };
 
 // The largest heightmap read: 16384 x 16384 cells, whose living conditions alone take
-// about 17 GB (Terrain's memory estimate, terrain.hpp, says so before they are computed).
-inline constexpr std::uint64_t kMaxHeightmapPixels = std::uint64_t{16384} * 16384;
+// about 80 GB (requireMemoryForConditions says so before they are computed). Each side is
+// limited, not only the area: OpenImageIO's readers buffer whole rows, 256 at a time, so a
+// 52-million-pixel-wide image of 5 rows would make it allocate 13 GB.
+inline constexpr int kMaxHeightmapSide = 16384;
 
 // Reads a one-channel image. Integer pixel types come back as their stored values
 // (a 16-bit 40000 is 40000.0f): OpenImageIO's normalisation is undone. Unreadable files,
-// several channels, fewer than 2 x 2 or more than kMaxHeightmapPixels pixels (checked
-// before the pixels are allocated) and NaN or infinite pixels are InputErrors,
-// except NaN where the file declares NaN its no-data value.
+// several channels, fewer than 2 x 2 pixels or more than kMaxHeightmapSide on a side
+// (checked from the header, before the pixels are allocated) and NaN or infinite pixels are
+// InputErrors, except NaN where the file declares NaN its no-data value.
 SingleChannelImage readSingleChannel(const std::filesystem::path& file, bool nanIsNoData = false);
 
 void writeFloatImage(const std::filesystem::path& file, int width, int height, int channels,

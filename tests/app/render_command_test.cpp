@@ -97,9 +97,9 @@ TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
     GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb); the view window is not tested";
   const auto shot = eco::test::freshDirectory("app_view") / "view.png";
   CommandResult r = eco::test::runCommand(
-      "xvfb-run -a -s '-screen 0 800x600x24' " + std::string(ECOFOREST_EXE) + " view " +
-      shortDefaultRun().string() + " --size 400x300 --frames 4 --view ground --screenshot " +
-      shot.string());
+      std::string(ECOFOREST_X_WINDOW_ENV) + "xvfb-run -a -s '-screen 0 800x600x24' " +
+      std::string(ECOFOREST_EXE) + " view " + shortDefaultRun().string() +
+      " --size 400x300 --frames 4 --view ground --screenshot " + shot.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(pngSize(shot), std::make_pair(400, 300));
 }

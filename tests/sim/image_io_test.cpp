@@ -52,4 +52,21 @@ TEST(ImageIo, BadImagesAreInputErrors) {
   EXPECT_THROW(writeFloatImage("/nonexistent/x.exr", 2, 2, 1, {1, 2, 3, 4}), InputError);
 }
 
+// A 17-byte bitmap claiming 52,232,255 x 5 pixels (the fuzzer's find): refused from its
+// header, where reading it made OpenImageIO allocate 13 GB.
+TEST(ImageIo, AnImageWiderThanTheLimitIsRefusedFromItsHeader) {
+  auto dir = test::freshDirectory("imageiowide");
+  std::ofstream(dir / "wide.pgm", std::ios::binary) << "P452232255\n 5\n52";
+  try {
+    readSingleChannel(dir / "wide.pgm");
+    FAIL() << "read a 52-million-pixel-wide image";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("52232255 x 5 pixels; ecoforest reads heightmaps of "
+                        "at most 16384 x 16384"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace eco

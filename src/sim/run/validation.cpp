@@ -15,6 +15,8 @@ namespace eco {
 namespace {
 
 constexpr const char* kYieldTableHeader = "age,stems_per_ha,basal_area_m2_per_ha,qmd_cm";
+// Yield tables end at 120-200 years; a few times that leaves room for any.
+constexpr int kOldestTableAge = 1000;
 
 double parseNumber(std::string_view text, const SourceLocation& where) {
   double value = 0.0;
@@ -49,7 +51,10 @@ std::vector<YieldTableRow> readYieldTable(const std::filesystem::path& file) {
       throw InputError(where, "expected 4 comma-separated values");
     YieldTableRow row;
     const double age = parseNumber(fields[0], where);
-    if (age != std::floor(age)) throw InputError(where, "the age must be whole years");
+    // Checked before the conversion: a double beyond int's range does not convert.
+    if (age != std::floor(age) || age > kOldestTableAge)
+      throw InputError(where,
+                       fmt::format("the age must be whole years, at most {}", kOldestTableAge));
     row.age_years = static_cast<int>(age);
     row.stemsPerHa = parseNumber(fields[1], where);
     row.basalArea_m2PerHa = parseNumber(fields[2], where);

@@ -48,6 +48,9 @@ TEST(Validation, ABadYieldTableNamesItsLine) {
             std::string::npos);
   EXPECT_NE(errorOf(std::string(kTable) + "130,1,1\n").find("t.csv:5: expected 4"),
             std::string::npos);
+  // An age beyond int's range (the fuzzer's find: converting it was undefined).
+  EXPECT_NE(errorOf(std::string(kTable) + "4.4e82,1,1,1\n").find("t.csv:5: the age must be whole"),
+            std::string::npos);
   EXPECT_NE(errorOf("# nothing\nage,stems_per_ha,basal_area_m2_per_ha,qmd_cm\n").find("no rows"),
             std::string::npos);
 }

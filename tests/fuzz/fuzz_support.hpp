@@ -16,19 +16,33 @@
 
 namespace eco::fuzz {
 
-// The bytes as a file with this extension, in a folder of this process's (in memory where
-// /dev/shm exists: a target runs thousands of times a second).
+// A folder of this process's for the inputs (in memory where /dev/shm exists: a target
+// runs thousands of times a second), removed when the process ends.
+class InputFolder {
+ public:
+  InputFolder() {
+    const std::filesystem::path base = std::filesystem::is_directory("/dev/shm")
+                                           ? std::filesystem::path("/dev/shm")
+                                           : std::filesystem::temp_directory_path();
+    path_ = base / ("ecoforest-fuzz-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(path_);
+  }
+  ~InputFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// The bytes as a file of this name in the input folder.
 inline std::filesystem::path inputFile(std::string_view bytes, const std::string& name) {
-  static const std::filesystem::path folder = [] {
-    const std::filesystem::path base =
-        std::filesystem::is_directory("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
-    std::filesystem::path f = base / ("ecoforest-fuzz-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(f);
-    return f;
-  }();
-  const std::filesystem::path file = folder / name;
-  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(),
-                                                                static_cast<std::streamsize>(bytes.size()));
+  static const InputFolder folder;
+  const std::filesystem::path file = folder.path() / name;
+  std::ofstream(file, std::ios::binary | std::ios::trunc)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   return file;
 }
 

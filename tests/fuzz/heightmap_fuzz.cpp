@@ -9,8 +9,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   static const char* const kExtensions[] = {".png", ".tif", ".pgm", ".exr"};
   const std::string extension = kExtensions[data[0] % 4];
-  const auto file = eco::fuzz::inputFile(eco::fuzz::asText(data + 1, size - 1),
-                                         "heightmap" + extension);
+  const auto file =
+      eco::fuzz::inputFile(eco::fuzz::asText(data + 1, size - 1), "heightmap" + extension);
   eco::fuzz::expectingInputErrors([&] { eco::readSingleChannel(file, true); });
   if (extension == ".tif") {
     eco::fuzz::expectingInputErrors([&] {

@@ -59,6 +59,11 @@ void runConditions(const ConditionsArguments& args) {
 
 }  // namespace
 
+void addIgnoreMemoryCheckFlag(CLI::App& command, bool& ignore) {
+  command.add_flag("--ignore-memory-check", ignore,
+                   "Go ahead where the terrain seems too large for the memory available");
+}
+
 void addConditionsCommand(CLI::App& app) {
   auto args = std::make_shared<ConditionsArguments>();
   CLI::App* command = app.add_subcommand(
@@ -68,8 +73,7 @@ void addConditionsCommand(CLI::App& app) {
                    "Scenario name (in scenarios/) or path to a scenario .toml")
       ->required();
   command->add_option("--out", args->out, "Output folder (default: out/<scenario name>)");
-  command->add_flag("--ignore-memory-check", args->ignoreMemoryCheck,
-                    "Go ahead where the terrain seems too large for the memory available");
+  addIgnoreMemoryCheckFlag(*command, args->ignoreMemoryCheck);
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   command->callback([args] { runConditions(*args); });

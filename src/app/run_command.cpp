@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 
+#include "app/conditions_command.hpp"
 #include "app/data_paths.hpp"
 #include "app/run_progress.hpp"
 #include "core/error.hpp"
@@ -77,8 +78,7 @@ void addRunCommand(CLI::App& app) {
   command->add_option("--out", args->out, "Run folder (default: the scenario's [output] dir)");
   command->add_option("--years", args->years, "Years to simulate (default: the scenario's)")
       ->check(CLI::Range(1, 100000));
-  command->add_flag("--ignore-memory-check", args->ignoreMemoryCheck,
-                    "Go ahead where the terrain seems too large for the memory available");
+  addIgnoreMemoryCheckFlag(*command, args->ignoreMemoryCheck);
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   command->add_flag("--resume", args->resume,

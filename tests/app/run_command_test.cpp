@@ -39,7 +39,8 @@ TEST(RunCommand, TheDefaultScenarioWritesARunFolder) {
   EXPECT_TRUE(std::filesystem::exists(dir / "trees" / "year_0012.csv"));
 
   // --resume with more years continues the same run.
-  CommandResult more = run("run --resume --years 14 --out " + dir.string());
+  // The memory check can be overridden (it passes here anyway: the flag is accepted).
+  CommandResult more = run("run --resume --years 14 --ignore-memory-check --out " + dir.string());
   ASSERT_EQ(more.exitCode, 0) << more.output;
   EXPECT_EQ(lastYearIn(eco::test::readFile(dir / "stats.csv")), 14);
 }

@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <string>
 
+#include "bench_run.hpp"
 #include "render/scene/forest_export.hpp"
-#include "sim/run/simulation.hpp"
 
 int main(int argc, char** argv) {
   using Clock = std::chrono::steady_clock;
@@ -19,22 +19,14 @@ int main(int argc, char** argv) {
       argc > 1 ? std::filesystem::path(argv[1])
                : std::filesystem::path(ECOFOREST_DATA_DIR) / "valley.toml";
   const double minHeight = argc > 3 ? std::atof(argv[3]) : 0.0;
-  const auto work = std::filesystem::temp_directory_path() / "ecoforest_export_bench";
-  std::filesystem::remove_all(work);
-  std::filesystem::create_directories(work);
-
-  eco::RunOptions run;
-  run.scenarioFile = scenario;
-  run.out = work / "run";
-  if (argc > 2) run.years = std::atoi(argv[2]);
-  eco::runSimulation(run);
-  const eco::RunFolder folder = eco::openRunFolder(work / "run");
+  const eco::RunFolder folder = eco::bench::growRun(
+      scenario, "export_bench", argc > 2 ? std::optional<int>(std::atoi(argv[2])) : std::nullopt);
+  const std::filesystem::path work = folder.dir.parent_path();
   const int year = folder.snapshotYears.back();
   eco::TreeSnapshot snapshot = eco::readSnapshot(folder, year);
   std::erase_if(snapshot.trees, [&](const eco::TreeRow& t) { return t.height_m < minHeight; });
   const eco::Terrain terrain = eco::loadTerrain(folder.scenario);
-  std::vector<eco::LibrarySpecies> species;
-  for (const auto& s : folder.scenario.species) species.push_back(eco::loadLibrarySpecies(s.file));
+  std::vector<eco::LibrarySpecies> species = eco::loadLibrarySpecies(folder.scenario);
   const auto libraryStart = Clock::now();
   const eco::TreeLibrary library(std::move(species), {});
   const double librarySeconds = std::chrono::duration<double>(Clock::now() - libraryStart).count();

@@ -57,8 +57,7 @@ int main(int argc, char** argv) {
 
   const eco::Scenario scenario = eco::loadScenario(scenarioFile);
   const eco::Terrain terrain = eco::loadTerrain(scenario);
-  std::vector<eco::LibrarySpecies> species;
-  for (const auto& s : scenario.species) species.push_back(eco::loadLibrarySpecies(s.file));
+  std::vector<eco::LibrarySpecies> species = eco::loadLibrarySpecies(scenario);
   auto start = std::chrono::steady_clock::now();
   const eco::TreeLibrary library(std::move(species), {});
   const double libraryMs = millisecondsSince(start);

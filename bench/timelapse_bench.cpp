@@ -8,28 +8,19 @@
 #include <filesystem>
 #include <string>
 
+#include "bench_run.hpp"
 #include "render/gl/gl_context.hpp"
 #include "render/gl/scene_renderer.hpp"
 #include "render/scene/timelapse.hpp"
-#include "sim/run/simulation.hpp"
 
 int main(int argc, char** argv) {
   const std::filesystem::path scenario =
       argc > 1 ? std::filesystem::path(argv[1])
                : std::filesystem::path(ECOFOREST_DATA_DIR) / "default.toml";
-  const auto work = std::filesystem::temp_directory_path() / "ecoforest_timelapse_bench";
-  std::filesystem::remove_all(work);
-  std::filesystem::create_directories(work);
-
-  eco::RunOptions run;
-  run.scenarioFile = scenario;
-  run.out = work / "run";
-  eco::runSimulation(run);
-  const eco::RunFolder folder = eco::openRunFolder(work / "run");
+  const eco::RunFolder folder = eco::bench::growRun(scenario, "timelapse_bench");
+  const std::filesystem::path work = folder.dir.parent_path();
   const eco::Terrain terrain = eco::loadTerrain(folder.scenario);
-  std::vector<eco::LibrarySpecies> species;
-  for (const auto& s : folder.scenario.species) species.push_back(eco::loadLibrarySpecies(s.file));
-  const eco::TreeLibrary library(std::move(species), {});
+  const eco::TreeLibrary library(eco::loadLibrarySpecies(folder.scenario), {});
   eco::HeadlessGl gl;
   eco::SceneRenderer renderer(terrain, folder.scenario.climate.latitude_deg, &library);
 

@@ -78,9 +78,7 @@ void SceneSource::requireSnapshot(int year) const {
 
 void SceneSource::buildLibrary(const LibrarySettings& settings) {
   if (scenario.species.empty()) return;
-  std::vector<LibrarySpecies> species;
-  for (const ScenarioSpecies& s : scenario.species) species.push_back(loadLibrarySpecies(s.file));
-  library = std::make_unique<TreeLibrary>(std::move(species), settings);
+  library = std::make_unique<TreeLibrary>(loadLibrarySpecies(scenario), settings);
 }
 
 }  // namespace eco

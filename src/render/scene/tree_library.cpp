@@ -35,6 +35,12 @@ LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file) {
   return {loadSpecies(file), readEcology(file)};
 }
 
+std::vector<LibrarySpecies> loadLibrarySpecies(const Scenario& scenario) {
+  std::vector<LibrarySpecies> species;
+  for (const ScenarioSpecies& s : scenario.species) species.push_back(loadLibrarySpecies(s.file));
+  return species;
+}
+
 TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySettings& settings)
     : settings_(settings) {
   for (LibrarySpecies& s : species) species_.push_back(std::move(s.model));

@@ -14,6 +14,7 @@
 #include "model/species.hpp"
 #include "render/scene/wind_mesh.hpp"
 #include "sim/ecology/species_ecology.hpp"
+#include "sim/scenario.hpp"
 
 namespace eco {
 
@@ -25,6 +26,8 @@ struct LibrarySpecies {
 };
 // The species file's tree model and ecology.
 LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file);
+// Those of each [[species]] of a scenario, in its order.
+std::vector<LibrarySpecies> loadLibrarySpecies(const Scenario& scenario);
 
 struct LibrarySettings {
   int variants = 3;

@@ -12,11 +12,13 @@ namespace eco {
 namespace {
 
 constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
+constexpr std::string_view kTemporaryMark = ".tmp-";
 
 std::filesystem::path temporaryNameFor(const std::filesystem::path& target) {
   static std::atomic<unsigned> counter{0};
   std::filesystem::path temporary = target;
-  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  temporary +=
+      std::string(kTemporaryMark) + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   return temporary;
 }
 
@@ -25,6 +27,10 @@ std::filesystem::path folderOf(const std::filesystem::path& file) {
 }
 
 }  // namespace
+
+bool isAtomicTemporary(std::string_view fileName) {
+  return fileName.find(kTemporaryMark) != std::string_view::npos;
+}
 
 bool createOutputFolder(const std::filesystem::path& folder) {
   std::error_code error;

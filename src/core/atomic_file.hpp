@@ -58,6 +58,9 @@ class AtomicFileSet {
   std::deque<AtomicFile> files_;  // a deque: references from add() stay valid
 };
 
+// Whether a file name is that of an AtomicFile's temporary (NAME.tmp-PID-N).
+bool isAtomicTemporary(std::string_view fileName);
+
 // Creates an output folder and the folders above it; returns whether it was made (false
 // when it existed). EnvironmentError naming the folder and the cause (no permission, a
 // read-only file system).

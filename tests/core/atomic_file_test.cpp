@@ -20,6 +20,10 @@ TEST(AtomicFile, AppearsOnlyOnCommit) {
     AtomicFile file(dir / "a.txt");
     file.write(std::string_view("hello"));
     EXPECT_FALSE(std::filesystem::exists(dir / "a.txt"));
+    // The one entry is the temporary, which a run folder's cleanup recognises.
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      EXPECT_TRUE(isAtomicTemporary(entry.path().filename().string())) << entry.path();
+    EXPECT_FALSE(isAtomicTemporary("a.txt"));
     file.commit();
   }
   std::ifstream in(dir / "a.txt");

@@ -124,7 +124,7 @@ void removeStaleTemporaries(const RunPaths& run) {
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
       const std::string name = entry.path().filename().string();
       if (entry.is_regular_file(error) &&
-          (name.find(".tmp-") != std::string::npos || name.starts_with(".partial_")))
+          (isAtomicTemporary(name) || name.starts_with(".partial_")))
         std::filesystem::remove(entry.path(), error);
     }
   }

@@ -153,12 +153,12 @@ std::vector<std::string> TomlTable::stringList(std::string_view key,
   return values;
 }
 
-Polyline TomlTable::polyline(std::string_view key, Range range) {
+std::vector<TomlPoint> TomlTable::points(std::string_view key, std::size_t minimum) {
   const toml::node& node = require(key);
   const toml::array* array = node.as_array();
-  const std::string shape = "expected a polyline [[x0, y0], [x1, y1], ...]";
+  const std::string shape = "expected points [[x0, y0], [x1, y1], ...]";
   if (array == nullptr || array->empty()) fail(key, shape);
-  std::vector<ControlPoint> points;
+  std::vector<TomlPoint> points;
   for (const toml::node& element : *array) {
     const toml::array* pair = element.as_array();
     if (pair == nullptr || pair->size() != 2 || !(*pair)[0].is_number() || !(*pair)[1].is_number())
@@ -166,20 +166,37 @@ Polyline TomlTable::polyline(std::string_view key, Range range) {
     auto toDouble = [](const toml::node& n) {
       return n.is_integer() ? static_cast<double>(*n.value<std::int64_t>()) : *n.value<double>();
     };
-    ControlPoint point{toDouble((*pair)[0]), toDouble((*pair)[1])};
+    TomlPoint point{toDouble((*pair)[0]), toDouble((*pair)[1]), lineOf(element)};
     if (!std::isfinite(point.x) || !std::isfinite(point.y))
-      throw InputError({file_, lineOf(element), path(key)},
-                       "control point (" + formatNumber(point.x) + ", " + formatNumber(point.y) +
+      throw InputError({file_, point.line, path(key)},
+                       "point (" + formatNumber(point.x) + ", " + formatNumber(point.y) +
                            ") is not a pair of finite numbers");
+    points.push_back(point);
+  }
+  if (points.size() < minimum)
+    fail(key, "expected at least " + std::to_string(minimum) + " points, got " +
+                  std::to_string(points.size()));
+  return points;
+}
+
+std::vector<std::string> TomlTable::keys() const {
+  std::vector<std::string> names;
+  for (const auto& [name, value] : *table_) names.emplace_back(name.str());
+  return names;
+}
+
+Polyline TomlTable::polyline(std::string_view key, Range range) {
+  std::vector<ControlPoint> points;
+  for (const TomlPoint& point : this->points(key, 1)) {
     if (!points.empty() && point.x < points.back().x)
-      throw InputError({file_, lineOf(element), path(key)},
+      throw InputError({file_, point.line, path(key)},
                        "control points must be sorted by abscissa: x = " + formatNumber(point.x) +
                            " comes after x = " + formatNumber(points.back().x));
     if (!(point.y >= range.min && point.y <= range.max))
-      throw InputError({file_, lineOf(element), path(key)},
+      throw InputError({file_, point.line, path(key)},
                        "value " + formatNumber(point.y) + " is outside [" +
                            formatNumber(range.min) + ", " + formatNumber(range.max) + "]");
-    points.push_back(point);
+    points.push_back({point.x, point.y});
   }
   return Polyline(std::move(points));
 }

@@ -25,6 +25,11 @@ struct Range {
   double max = std::numeric_limits<double>::infinity();
 };
 
+struct TomlPoint {
+  double x = 0.0, y = 0.0;
+  int line = 0;
+};
+
 class TomlTable {
  public:
   TomlTable(const toml::table& table, std::string file, std::string prefix);
@@ -57,6 +62,11 @@ class TomlTable {
   std::vector<std::string> stringList(std::string_view key, std::vector<std::string> fallback);
   // [[x0, y0], [x1, y1], ...] with non-decreasing x and y inside `range`.
   Polyline polyline(std::string_view key, Range range = {});
+  // [[x0, y0], [x1, y1], ...] of at least `minimum` finite pairs in any order (a polygon's
+  // corners), each with the line it is written on.
+  std::vector<TomlPoint> points(std::string_view key, std::size_t minimum);
+  // The table's keys, in the file's order (a table of names to numbers, e.g. a mixture).
+  std::vector<std::string> keys() const;
   std::optional<TomlTable> table(std::string_view key);
   std::vector<TomlTable> tables(std::string_view key);  // an array of tables ([[key]])
 

@@ -54,13 +54,17 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
 
 ValidationSettings parseValidation(TomlTable& table, const std::filesystem::path& scenarioFolder,
                                    const std::vector<Planting>& planting) {
+  auto plants = [](const Planting& p, const std::string& species) {
+    const std::vector<std::string> names = p.speciesNames();
+    return std::find(names.begin(), names.end(), species) != names.end();
+  };
   ValidationSettings v;
   v.where = table.where("yield_table");
   v.yieldTable = scenarioFolder / table.string("yield_table");
   v.species = table.string("species");
   // The cohort measured is a planted one.
   if (std::none_of(planting.begin(), planting.end(),
-                   [&](const Planting& p) { return p.species == v.species; }))
+                   [&](const Planting& p) { return plants(p, v.species); }))
     table.fail("species", "'" + v.species +
                               "' is not planted: a [[planting]] of it is the stand "
                               "compared with the yield table");
@@ -131,17 +135,9 @@ Scenario loadScenario(const std::filesystem::path& file) {
     entry.finish();
     s.species.push_back(std::move(species));
   }
-  for (TomlTable& entry : root.tables("planting")) {
-    Planting planting;
-    planting.where = entry.where("species");
-    planting.species = entry.string("species");
-    planting.spacing_m = entry.number("spacing_m", planting.spacing_m, {0.5, 1000.0});
-    planting.height_m = entry.number("height_m", planting.height_m, {0.05, 1.29});
-    entry.finish();
-    s.planting.push_back(std::move(planting));
-  }
+  s.plan = parsePlan(root, file.parent_path());
   if (std::optional<TomlTable> validation = root.table("validation"))
-    s.validation = parseValidation(*validation, file.parent_path(), s.planting);
+    s.validation = parseValidation(*validation, file.parent_path(), s.plan.planting);
   s.output.dir = std::filesystem::path("out") / s.name;
   if (std::optional<TomlTable> output = root.table("output")) {
     if (output->has("dir")) s.output.dir = output->string("dir");

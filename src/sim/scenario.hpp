@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "sim/plan/plan_spec.hpp"
 
 namespace eco {
 
@@ -52,15 +53,6 @@ struct SimulationSettings {
   SuitabilityRule suitability = SuitabilityRule::Minimum;  // Liebig's law by default
 };
 
-// A stand planted at the start of the run: one species on a square grid over the whole map
-// (docs/scenario.md).
-struct Planting {
-  std::string species;  // the name of one of the scenario's species
-  double spacing_m = 2.0;
-  double height_m = 0.3;  // of the planted stock
-  SourceLocation where;
-};
-
 // A [validation] table: the yield table a planted pure stand of the scenario should follow
 // (`ecoforest validate`, docs/validation.md).
 struct ValidationSettings {
@@ -98,7 +90,7 @@ struct Scenario {
   Climate climate;
   SimulationSettings simulation;
   std::vector<ScenarioSpecies> species;  // empty for terrain-only scenarios
-  std::vector<Planting> planting;
+  Plan plan;  // planting, seed sources, areas kept open, thinning
   std::optional<ValidationSettings> validation;
   OutputSettings output;
 };

@@ -178,13 +178,16 @@ height_m = 0.4
 [[planting]]
 species = "pine"
 )"));
-  ASSERT_EQ(s.planting.size(), 2u);
-  EXPECT_EQ(s.planting[0].species, "beech");
-  EXPECT_DOUBLE_EQ(s.planting[0].spacing_m, 1.5);
-  EXPECT_DOUBLE_EQ(s.planting[0].height_m, 0.4);
-  EXPECT_EQ(s.planting[1].species, "pine");
-  EXPECT_DOUBLE_EQ(s.planting[1].spacing_m, 2.0);
-  EXPECT_EQ(s.planting[1].where.line, 10);
+  const std::vector<Planting>& planting = s.plan.planting;
+  ASSERT_EQ(planting.size(), 2u);
+  EXPECT_EQ(planting[0].speciesNames(), std::vector<std::string>{"beech"});
+  EXPECT_DOUBLE_EQ(planting[0].spacing_m, 1.5);
+  EXPECT_DOUBLE_EQ(planting[0].height_m, 0.4);
+  EXPECT_EQ(planting[0].region.kind, RegionSpec::Kind::WholeMap);
+  EXPECT_EQ(planting[0].year, 1);
+  EXPECT_EQ(planting[1].speciesNames(), std::vector<std::string>{"pine"});
+  EXPECT_DOUBLE_EQ(planting[1].spacing_m, 2.0);
+  EXPECT_EQ(planting[1].where.line, 10);
   EXPECT_NE(std::string(errorOf("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = "
                                 "9\n[[planting]]\nspecies = \"beech\"\nheight_m = 2\n")
                             .what())

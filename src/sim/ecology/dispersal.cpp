@@ -63,10 +63,14 @@ SeedMap::SeedMap(const Grid& terrain, const std::vector<const LifeHistory*>& spe
         const glm::dvec2 land = start + offset / layer.cell_m;
         ++counts[{static_cast<int>(std::floor(land.x)), static_cast<int>(std::floor(land.y))}];
       }
-      for (const auto& [cell, count] : counts)
+      for (const auto& [cell, count] : counts) {
         layer.stencil.push_back({cell.first, cell.second,
                                  static_cast<float>(static_cast<double>(count) / kStencilSamples)});
-      layer.sources.assign(static_cast<std::size_t>(layer.width) * layer.height, 0.0);
+        layer.margin = std::max({layer.margin, std::abs(cell.first), std::abs(cell.second)});
+      }
+      layer.sources.assign(static_cast<std::size_t>(layer.width + 2 * layer.margin) *
+                               (layer.height + 2 * layer.margin),
+                           0.0);
       layer.density.assign(layer.sources.size(), 0.0f);
       layersOf_[s].push_back(layers_.size());
       layers_.push_back(std::move(layer));
@@ -83,23 +87,54 @@ std::size_t SeedMap::cellOf(const Layer& layer, double east_m, double north_m) c
 }
 
 void SeedMap::clear() {
-  for (Layer& layer : layers_) {
-    std::fill(layer.sources.begin(), layer.sources.end(), 0.0);
-    layer.outsideSource = 0.0;
-  }
+  for (Layer& layer : layers_) std::fill(layer.sources.begin(), layer.sources.end(), 0.0);
 }
 
 void SeedMap::setSurroundingSeeds(int species, double seedsPerM2) {
   for (std::size_t l : layersOf_[species]) {
     Layer& layer = layers_[l];
-    layer.outsideSource = seedsPerM2 * layer.cell_m * layer.cell_m * layer.share;
+    const double seeds = seedsPerM2 * layer.cell_m * layer.cell_m * layer.share;
+    for (int y = -layer.margin; y < layer.height + layer.margin; ++y)
+      for (int x = -layer.margin; x < layer.width + layer.margin; ++x)
+        if (x < 0 || y < 0 || x >= layer.width || y >= layer.height)
+          layer.sources[sourceOf(layer, x, y)] += seeds;
+  }
+}
+
+int SeedMap::addSourceRegion(const std::function<bool(glm::dvec2)>& covered) {
+  // Each source cell's share under the forest, from 4 x 4 points spread over it.
+  constexpr int kSamples = 4;
+  for (Layer& layer : layers_) {
+    std::vector<Covered>& cells = layer.regions.emplace_back();
+    for (int y = -layer.margin; y < layer.height + layer.margin; ++y)
+      for (int x = -layer.margin; x < layer.width + layer.margin; ++x) {
+        int inside = 0;
+        for (int v = 0; v < kSamples; ++v)
+          for (int u = 0; u < kSamples; ++u)
+            inside += covered({originEast_m_ + (x + (u + 0.5) / kSamples) * layer.cell_m,
+                               originNorth_m_ + (y + (v + 0.5) / kSamples) * layer.cell_m});
+        if (inside > 0)
+          cells.push_back({sourceOf(layer, x, y),
+                           static_cast<float>(inside) / static_cast<float>(kSamples * kSamples)});
+      }
+  }
+  return regions_++;
+}
+
+void SeedMap::addRegionSeeds(int region, int species, double seedsPerM2) {
+  for (std::size_t l : layersOf_[species]) {
+    Layer& layer = layers_[l];
+    const double seeds = seedsPerM2 * layer.cell_m * layer.cell_m * layer.share;
+    for (const Covered& c : layer.regions[region]) layer.sources[c.source] += seeds * c.fraction;
   }
 }
 
 void SeedMap::addSeeds(int species, double east_m, double north_m, double seeds) {
   for (std::size_t l : layersOf_[species]) {
     Layer& layer = layers_[l];
-    layer.sources[cellOf(layer, east_m, north_m)] += seeds * layer.share;
+    const std::size_t cell = cellOf(layer, east_m, north_m);
+    layer.sources[sourceOf(layer, static_cast<int>(cell % layer.width),
+                           static_cast<int>(cell / layer.width))] += seeds * layer.share;
   }
 }
 
@@ -111,13 +146,8 @@ void SeedMap::disperse() {
     tbb::parallel_for(0, layer.height, [&](int y) {
       for (int x = 0; x < layer.width; ++x) {
         double seeds = 0.0;
-        for (const Tap& tap : layer.stencil) {
-          const int sx = x - tap.dx, sy = y - tap.dy;
-          const bool outside = sx < 0 || sy < 0 || sx >= layer.width || sy >= layer.height;
-          seeds += (outside ? layer.outsideSource
-                            : layer.sources[static_cast<std::size_t>(sy) * layer.width + sx]) *
-                   tap.share;
-        }
+        for (const Tap& tap : layer.stencil)
+          seeds += layer.sources[sourceOf(layer, x - tap.dx, y - tap.dy)] * tap.share;
         layer.density[static_cast<std::size_t>(y) * layer.width + x] =
             static_cast<float>(seeds / area);
       }

@@ -10,6 +10,7 @@
 // part on its own coarser grid, each out to five means.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -38,6 +39,11 @@ class SeedMap {
   // The forest around the map sends this year this many seeds of a species per m2 of its
   // ground: its seeds reach into the map by the same kernel as the map's own.
   void setSurroundingSeeds(int species, double seedsPerM2);
+  // A forest of its own ground (a [[seed_source]], on or off the map): `covered` is sampled
+  // once over every seed grid out to the kernels' reach beyond the map. Returns its number.
+  int addSourceRegion(const std::function<bool(glm::dvec2)>& covered);
+  // This year the region's forest sends this many seeds of a species per m2 of its ground.
+  void addRegionSeeds(int region, int species, double seedsPerM2);
   // Spreads the sources by each species' kernel.
   void disperse();
   // Seeds per m2 of a species at a map position this year (before any seed rain).
@@ -48,19 +54,31 @@ class SeedMap {
     int dx, dy;
     float share;  // of a source's seeds
   };
+  struct Covered {
+    std::size_t source;  // index into the layer's sources
+    float fraction;      // of the source cell's area under the forest
+  };
   struct Layer {  // one kernel part of one species on its own grid
     int species = 0;
     double share = 1.0;  // of the species' seeds that take this part
     double cell_m = 20.0;
-    int width = 0, height = 0;
+    int width = 0, height = 0;  // the cells over the map
+    // Sources lie on the map's cells and a margin of cells around it as wide as the
+    // stencil reaches: seeds from farther away cannot land on the map.
+    int margin = 0;
     std::vector<Tap> stencil;
-    std::vector<double> sources;  // seeds per cell
-    double outsideSource = 0.0;   // seeds per cell beyond the map's edges
-    std::vector<float> density;   // seeds per m2
+    std::vector<double> sources;  // seeds per cell, (width + 2 margin) x (height + 2 margin)
+    std::vector<float> density;   // seeds per m2, width x height
+    std::vector<std::vector<Covered>> regions;  // per source region, the cells it covers
   };
   std::size_t cellOf(const Layer& layer, double east_m, double north_m) const;
+  std::size_t sourceOf(const Layer& layer, int x, int y) const {
+    return static_cast<std::size_t>(y + layer.margin) * (layer.width + 2 * layer.margin) +
+           static_cast<std::size_t>(x + layer.margin);
+  }
 
   double originEast_m_, originNorth_m_, width_m_, height_m_;
+  int regions_ = 0;
   std::vector<Layer> layers_;
   std::vector<std::vector<std::size_t>> layersOf_;  // per species, its layers' indices
 };

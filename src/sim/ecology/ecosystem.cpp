@@ -70,7 +70,8 @@ Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
       regenerationY_(static_cast<int>(
           std::ceil(terrain.grid.height * terrain.grid.dy_m / kRegenerationCell_m))),
       born_(species_.size(), 0),
-      died_(species_.size(), 0) {
+      died_(species_.size(), 0),
+      plantedDied_(species_.size(), 0) {
   ECO_ASSERT(species_.size() <= 255, "at most 255 species, got " << species_.size());
   for (const EcosystemSpecies& s : species_)
     ECO_ASSERT(s.suitability.size() == terrain.grid.cellCount(),
@@ -111,6 +112,7 @@ std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   p.variantSeed[i] =
       static_cast<std::uint32_t>(streamKey(settings_.seed, p.id[i], purpose("variant")) >> 32);
   p.stressYears[i] = 0;
+  p.origin[i] = static_cast<std::uint8_t>(PlantOrigin::Seeded);
   p.alive[i] = 1;
   return i;
 }
@@ -145,12 +147,41 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
   p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, dbh, height));
 }
 
-void Ecosystem::plantSapling(int species, double east_m, double north_m, double height_m) {
+void Ecosystem::plantSapling(int species, double east_m, double north_m, double height_m,
+                             int age_years, PlantOrigin origin) {
   const std::size_t i = addPlant(species, east_m, north_m);
   const LifeHistory& life = species_[species].ecology.life;
   Plants& p = state_.plants;
   p.height_m[i] = static_cast<float>(std::min(height_m, std::nextafter(kBreastHeight_m, 0.0)));
   p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, 0.0, p.height_m[i]));
+  p.age_years[i] = age_years;
+  p.origin[i] = static_cast<std::uint8_t>(origin);
+}
+
+void Ecosystem::removePlants(const std::vector<std::uint8_t>& removed) {
+  Plants& p = state_.plants;
+  ECO_ASSERT(removed.size() == p.size(), "one flag per plant");
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (removed[i]) p.alive[i] = 0;
+  p.removeDead();
+}
+
+void Ecosystem::keepOpen(std::function<bool(glm::dvec2)> isOpen) {
+  isOpen_ = std::move(isOpen);
+  const double originEast = -0.5 * grid().dx_m, originNorth = -0.5 * grid().dy_m;
+  openCell_.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
+  tbb::parallel_for(0, regenerationY_, [&](int y) {
+    for (int x = 0; x < regenerationX_; ++x)
+      openCell_[static_cast<std::size_t>(y) * regenerationX_ + x] =
+          isOpen_({originEast + (x + 0.5) * kRegenerationCell_m,
+                   originNorth + (y + 0.5) * kRegenerationCell_m});
+  });
+}
+
+void Ecosystem::addSeedSource(const std::function<bool(glm::dvec2)>& covered, double cover,
+                              std::vector<double> shares) {
+  ECO_ASSERT(shares.size() == species_.size(), "a share per species");
+  seedSources_.push_back({seeds_.addSourceRegion(covered), cover, std::move(shares)});
 }
 
 CrownShape Ecosystem::crownOf(std::size_t i) const {
@@ -245,6 +276,11 @@ void Ecosystem::produceSeeds() {
     if (species_[s].surroundingForestShare > 0.0)
       seeds_.setSurroundingSeeds(static_cast<int>(s), species_[s].surroundingForestShare *
                                                           seedsPerCrownArea(life, mast[s]));
+    // The plan's forests ([[seed_source]]) likewise, on their own ground.
+    for (const SeedSourceForest& forest : seedSources_)
+      if (forest.shares[s] > 0.0)
+        seeds_.addRegionSeeds(forest.region, static_cast<int>(s),
+                              forest.cover * forest.shares[s] * seedsPerCrownArea(life, mast[s]));
   }
   seeds_.disperse();
 }
@@ -258,7 +294,8 @@ void Ecosystem::applyMortality() {
     const LifeHistory& life = species_[p.species[i]].ecology.life;
     Rng rng(streamKey(settings_.seed, state_.year, p.id[i], purpose("mortality")));
     double chance = 0.0;
-    if (p.age_years[i] >= life.maxAge_years)
+    if (p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::PlantedRuledOut) ||
+        p.age_years[i] >= life.maxAge_years)
       chance = 1.0;
     else if (p.dbh_m[i] > 0.0f)
       chance = treeMortality(life, p.age_years[i], carbonDeficit_[i]);
@@ -267,7 +304,11 @@ void Ecosystem::applyMortality() {
     if (rng.uniform() < chance) p.alive[i] = 0;
   });
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (!p.alive[i]) ++died_[p.species[i]];
+    if (!p.alive[i]) {
+      ++died_[p.species[i]];
+      if (p.origin[i] != static_cast<std::uint8_t>(PlantOrigin::Seeded))
+        ++plantedDied_[p.species[i]];
+    }
   p.removeDead();
 }
 
@@ -296,7 +337,7 @@ void Ecosystem::establish() {
     std::vector<double> chance(species_.size());
     for (int x = 0; x < regenerationX_; ++x) {
       const std::size_t index = static_cast<std::size_t>(y) * regenerationX_ + x;
-      if (taken[index]) continue;
+      if (taken[index] || (!openCell_.empty() && openCell_[index])) continue;
       const double east = originEast + (x + 0.5) * kRegenerationCell_m;
       const double north = originNorth + (y + 0.5) * kRegenerationCell_m;
       const long cell = g.cellAt(east, north);
@@ -331,6 +372,8 @@ void Ecosystem::establish() {
   for (const std::vector<Newcomer>& row : rows)
     for (const Newcomer& n : row) {
       if (g.cellAt(static_cast<float>(n.east), static_cast<float>(n.north)) < 0) continue;
+      // The cell's centre lies outside every open area; the seedling's own spot may not.
+      if (isKeptOpen({n.east, n.north})) continue;
       addPlant(n.species, n.east, n.north);
       ++born_[n.species];
     }
@@ -340,6 +383,7 @@ void Ecosystem::step() {
   ++state_.year;
   std::fill(born_.begin(), born_.end(), 0);
   std::fill(died_.begin(), died_.end(), 0);
+  std::fill(plantedDied_.begin(), plantedDied_.end(), 0);
   computeLight();
   grow();
   produceSeeds();

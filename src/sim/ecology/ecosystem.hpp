@@ -14,8 +14,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "model/species.hpp"
 #include "sim/conditions/conditions.hpp"
@@ -74,14 +77,31 @@ class Ecosystem {
   // Adds a plant of `age` years grown alone at full light on a fully suitable site (sources
   // for tests, grown trees).
   void plant(int species, double east_m, double north_m, int age_years);
-  // Adds planted stock: a sapling of this height.
-  void plantSapling(int species, double east_m, double north_m, double height_m);
+  // Adds planted stock: a sapling of this height and age. Stock planted where a condition
+  // rules its species out and checked for survival (PlantedRuledOut) dies in its first year.
+  void plantSapling(int species, double east_m, double north_m, double height_m,
+                    int age_years = 0, PlantOrigin origin = PlantOrigin::Planted);
+  // Removes the plants whose flag is set (thinning), keeping the others' order.
+  void removePlants(const std::vector<std::uint8_t>& removed);
+
+  // Areas kept open: nothing establishes where `isOpen` holds (a [[exclusion]]). Call once,
+  // before the first year.
+  void keepOpen(std::function<bool(glm::dvec2)> isOpen);
+  // A forest on or around the map that sends seeds like the map's own trees: `covered`
+  // says which map positions lie under it (it is sampled over the seed grids once), `cover`
+  // is the share of its ground under crowns and `shares` each species' share of them.
+  void addSeedSource(const std::function<bool(glm::dvec2)>& covered, double cover,
+                     std::vector<double> shares);
 
   int year() const { return state_.year; }
   const Plants& plants() const { return state_.plants; }
   const std::vector<EcosystemSpecies>& species() const { return species_; }
   const std::vector<int>& bornLastYear() const { return born_; }
   const std::vector<int>& diedLastYear() const { return died_; }
+  // Of those that died, the ones that had been planted.
+  const std::vector<int>& plantedDiedLastYear() const { return plantedDied_; }
+  // Whether a map position lies in an area kept open.
+  bool isKeptOpen(glm::dvec2 p) const { return isOpen_ && isOpen_(p); }
   const Grid& grid() const { return terrain_.grid; }
   const Terrain& terrain() const { return terrain_; }
   // The light (fraction of open level ground's) at a height above the ground, under this
@@ -111,7 +131,15 @@ class Ecosystem {
   std::vector<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown
   static constexpr std::uint32_t kNoCrown = ~std::uint32_t{0};
   std::vector<float> carbonDeficit_;  // per plant, this year's (trees)
-  std::vector<int> born_, died_;
+  std::vector<int> born_, died_, plantedDied_;
+  std::function<bool(glm::dvec2)> isOpen_;
+  std::vector<std::uint8_t> openCell_;  // per regeneration cell: its centre is kept open
+  struct SeedSourceForest {
+    int region;  // SeedMap's
+    double cover;
+    std::vector<double> shares;
+  };
+  std::vector<SeedSourceForest> seedSources_;
 };
 
 }  // namespace eco

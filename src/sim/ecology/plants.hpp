@@ -8,6 +8,10 @@
 
 namespace eco {
 
+// How a plant came: from a seed, or planted (sim/plan); planted stock on ground where a
+// condition rules its species out, with the planting's survival check, dies in its first year.
+enum class PlantOrigin : std::uint8_t { Seeded = 0, Planted = 1, PlantedRuledOut = 2 };
+
 struct Plants {
   std::vector<std::uint64_t> id;       // unique in a run, in order of establishment
   std::vector<std::uint8_t> species;   // index into the run's species list
@@ -26,16 +30,21 @@ struct Plants {
   // exactly (their numbers are doubles).
   std::vector<std::uint32_t> variantSeed;
   std::vector<std::uint16_t> stressYears;  // a sapling's poor years in a row
+  std::vector<std::uint8_t> origin;        // PlantOrigin: seeded or planted
   std::vector<std::uint8_t> alive;
 
   // Calls f(column) for every column, in a fixed order (resizing, compaction, checkpoints).
   template <typename F>
   void forEachColumn(F&& f) {
-    visitColumns(*this, f);
+    visitColumns(f, *this);
   }
   template <typename F>
   void forEachColumn(F&& f) const {
-    visitColumns(*this, f);
+    visitColumns(f, *this);
+  }
+  // Appends row `i` of other plants, every column.
+  void appendRow(const Plants& from, std::size_t i) {
+    visitColumns([i](auto& mine, const auto& theirs) { mine.push_back(theirs[i]); }, *this, from);
   }
 
   std::size_t size() const { return id.size(); }
@@ -46,11 +55,13 @@ struct Plants {
   void removeDead();
 
  private:
-  template <typename Self, typename F>
-  static void visitColumns(Self& p, F& f) {
-    f(p.id), f(p.species), f(p.east_m), f(p.north_m), f(p.ground_m), f(p.cell), f(p.age_years),
-        f(p.height_m), f(p.crownRadius_m), f(p.crownBase_m), f(p.dbh_m), f(p.vigor), f(p.light),
-        f(p.growthFactor), f(p.variantSeed), f(p.stressYears), f(p.alive);
+  // Calls f with the same column of each of `p...`, column by column.
+  template <typename F, typename... Self>
+  static void visitColumns(F&& f, Self&... p) {
+    f(p.id...), f(p.species...), f(p.east_m...), f(p.north_m...), f(p.ground_m...), f(p.cell...),
+        f(p.age_years...), f(p.height_m...), f(p.crownRadius_m...), f(p.crownBase_m...),
+        f(p.dbh_m...), f(p.vigor...), f(p.light...), f(p.growthFactor...), f(p.variantSeed...),
+        f(p.stressYears...), f(p.origin...), f(p.alive...);
   }
 };
 

@@ -20,7 +20,7 @@ namespace {
 
 constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
 // 2: block checksum; 3: growth factor, stand measures; 4: 32-bit variant seeds
-constexpr std::uint32_t kFormatVersion = 4;
+constexpr std::uint32_t kFormatVersion = 5;  // 5: plants' origin, the plan's stats
 constexpr std::size_t kChecksumBlock = std::size_t{1} << 20;
 
 }  // namespace
@@ -77,6 +77,9 @@ std::optional<std::string> plantFault(const Plants& p, std::size_t i, int year,
   if (!(std::isfinite(p.growthFactor[i]) && p.growthFactor[i] > 0.0f))
     return fmt::format("growth factor {} is not a positive number", p.growthFactor[i]);
   if (p.alive[i] > 1) return fmt::format("alive flag {} is neither 0 nor 1", p.alive[i]);
+  if (p.origin[i] > static_cast<std::uint8_t>(PlantOrigin::PlantedRuledOut))
+    return fmt::format("origin {} is none of 0 (seeded), 1 (planted) and 2 (planted, ruled out)",
+                       p.origin[i]);
   return std::nullopt;
 }
 
@@ -86,11 +89,13 @@ std::optional<std::string> statsFault(const StatsRow& row, int year, std::size_t
   if (row.species < kAllSpecies || row.species >= static_cast<std::int64_t>(speciesCount))
     return fmt::format("species index {}, but the scenario has {} species", row.species,
                        speciesCount);
-  if (row.alive < 0 || row.born < 0 || row.died < 0)
+  if (row.alive < 0 || row.born < 0 || row.died < 0 || row.planted < 0 ||
+      row.diedAfterPlanting < 0 || row.removed < 0)
     return std::string("a negative count of plants");
   for (double value :
        {row.meanHeight_m, row.stemsPerHa, row.basalArea_m2PerHa, row.qmd_cm, row.dominantHeight_m,
-        row.sdi, row.volume_m3PerHa, row.coverFraction, row.densestHectareBasalArea_m2PerHa})
+        row.sdi, row.volume_m3PerHa, row.coverFraction, row.densestHectareBasalArea_m2PerHa,
+        row.removedVolume_m3PerHa})
     if (!(std::isfinite(value) && value >= 0.0))
       return fmt::format("a measure of {} is not a number of at least 0", value);
   return std::nullopt;

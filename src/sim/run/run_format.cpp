@@ -4,7 +4,9 @@
 #include <charconv>
 #include <fstream>
 #include <sstream>
+#include <optional>
 #include <unordered_map>
+#include <variant>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -21,7 +23,8 @@ namespace {
 
 constexpr const char* kStatsHeader =
     "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,qmd_cm,"
-    "dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,densest_hectare_basal_area_m2_per_ha";
+    "dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,densest_hectare_basal_area_m2_per_ha,"
+    "planted,died_after_planting,removed,removed_volume_m3_per_ha";
 constexpr std::size_t kTreesColumns = 12;
 
 std::string fileText(const std::filesystem::path& file) {
@@ -68,6 +71,10 @@ std::filesystem::path RunPaths::snapshot(int year) const {
   return treesFolder() / fmt::format("year_{:04d}.csv", year);
 }
 
+std::filesystem::path RunPaths::removed(int year) const {
+  return removedFolder() / fmt::format("year_{:04d}.csv", year);
+}
+
 std::filesystem::path RunPaths::map(const std::string& name) const {
   return mapsFolder() / (name + ".exr");
 }
@@ -100,18 +107,108 @@ void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow
   std::string text = std::string(kStatsHeader) + "\n";
   for (const StatsRow& r : rows)
     text += fmt::format(
-        "{},{},{},{},{},{:.3f},{:.1f},{:.4f},{:.2f},{:.2f},{:.1f},{:.2f},{:.4f},{:.4f}\n", r.year,
-        r.species == kAllSpecies ? std::string("all") : species[r.species].species.name, r.alive,
-        r.born, r.died, r.meanHeight_m, r.stemsPerHa, r.basalArea_m2PerHa, r.qmd_cm,
+        "{},{},{},{},{},{:.3f},{:.1f},{:.4f},{:.2f},{:.2f},{:.1f},{:.2f},{:.4f},{:.4f},{},{},{},{:.3f}\n",
+        r.year, r.species == kAllSpecies ? std::string("all") : species[r.species].species.name,
+        r.alive, r.born, r.died, r.meanHeight_m, r.stemsPerHa, r.basalArea_m2PerHa, r.qmd_cm,
         r.dominantHeight_m, r.sdi, r.volume_m3PerHa, r.coverFraction,
-        r.densestHectareBasalArea_m2PerHa);
+        r.densestHectareBasalArea_m2PerHa, r.planted, r.diedAfterPlanting, r.removed,
+        r.removedVolume_m3PerHa);
   AtomicFile out(file);
   out.write(text);
   out.commit();
 }
 
+StatsFile readStatsCsv(const std::filesystem::path& file) {
+  using Column = std::variant<std::int32_t StatsRow::*, std::int64_t StatsRow::*, double StatsRow::*>;
+  struct Known {
+    const char* name;
+    Column column;
+    bool required;
+  };
+  static const Known kColumns[] = {
+      {"year", &StatsRow::year, true},
+      {"alive", &StatsRow::alive, true},
+      {"born", &StatsRow::born, true},
+      {"died", &StatsRow::died, true},
+      {"mean_height_m", &StatsRow::meanHeight_m, true},
+      {"stems_per_ha", &StatsRow::stemsPerHa, true},
+      {"basal_area_m2_per_ha", &StatsRow::basalArea_m2PerHa, true},
+      {"qmd_cm", &StatsRow::qmd_cm, true},
+      {"dominant_height_m", &StatsRow::dominantHeight_m, true},
+      {"sdi", &StatsRow::sdi, true},
+      {"volume_m3_per_ha", &StatsRow::volume_m3PerHa, true},
+      {"cover_fraction", &StatsRow::coverFraction, true},
+      {"densest_hectare_basal_area_m2_per_ha", &StatsRow::densestHectareBasalArea_m2PerHa, true},
+      {"planted", &StatsRow::planted, false},
+      {"died_after_planting", &StatsRow::diedAfterPlanting, false},
+      {"removed", &StatsRow::removed, false},
+      {"removed_volume_m3_per_ha", &StatsRow::removedVolume_m3PerHa, false},
+  };
+  const std::string text = fileText(file);
+  StatsFile stats;
+  std::vector<std::optional<Column>> columns;  // per field of a line, its column
+  std::size_t speciesField = 0;
+  std::vector<std::string_view> fields;
+  forEachLine(text, [&](int line, std::string_view row) {
+    auto fail = [&](const std::string& message) {
+      throw InputError({file.string(), line, ""}, message);
+    };
+    if (line == 1) {
+      std::vector<std::string_view> names(64);
+      const std::size_t n = splitFields(row, names);
+      if (n > names.size()) fail("more than 64 columns: not a stats.csv of ecoforest");
+      names.resize(n);
+      for (std::size_t f = 0; f < n; ++f) {
+        if (names[f] == "species") speciesField = f;
+        const auto known = std::find_if(std::begin(kColumns), std::end(kColumns),
+                                        [&](const Known& k) { return names[f] == k.name; });
+        columns.push_back(known == std::end(kColumns) ? std::nullopt
+                                                      : std::optional<Column>(known->column));
+      }
+      for (const Known& k : kColumns)
+        if (k.required && std::find(names.begin(), names.end(), k.name) == names.end())
+          fail(fmt::format("no column {}: not a stats.csv of ecoforest", k.name));
+      if (std::find(names.begin(), names.end(), "species") == names.end())
+        fail("no column species: not a stats.csv of ecoforest");
+      fields.resize(n);
+      return;
+    }
+    if (row.empty()) return;
+    if (splitFields(row, fields) != fields.size())
+      fail(fmt::format("expected {} fields", fields.size()));
+    StatsRow r;
+    const std::string_view species = fields[speciesField];
+    if (species == "all") {
+      r.species = kAllSpecies;
+    } else {
+      if (const std::string why = whyNotAPlainName(species); !why.empty())
+        fail(fmt::format("species '{}' is not a species name: {}", species, why));
+      auto found = std::find(stats.species.begin(), stats.species.end(), species);
+      if (found == stats.species.end()) found = stats.species.insert(found, std::string(species));
+      r.species = static_cast<std::int32_t>(found - stats.species.begin());
+    }
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      if (!columns[f]) continue;
+      std::visit(
+          [&](auto member) {
+            if (!parseField(fields[f], r.*member) || r.*member < 0)
+              fail(fmt::format("field {} ('{}') is not a number of at least 0", f + 1, fields[f]));
+          },
+          *columns[f]);
+    }
+    if (r.year < 1) fail(fmt::format("year {} is before year 1", r.year));
+    stats.rows.push_back(r);
+  });
+  if (columns.empty()) throw InputError({file.string(), 0, ""}, "the file is empty");
+  return stats;
+}
+
 void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem) {
-  const Plants& p = ecosystem.plants();
+  writeTreesCsv(file, ecosystem.plants(), ecosystem.species());
+}
+
+void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
+                   const std::vector<EcosystemSpecies>& species) {
   // Formatted in parallel chunks, written in order.
   constexpr std::size_t kRowsPerChunk = 16384;
   std::vector<std::string> chunks((p.size() + kRowsPerChunk - 1) / kRowsPerChunk);
@@ -122,7 +219,7 @@ void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem
     for (std::size_t i = c * kRowsPerChunk; i < end; ++i)
       fmt::format_to(std::back_inserter(text),
                      "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.4f},{:.3f},{}\n",
-                     p.id[i], ecosystem.species()[p.species[i]].species.name, p.east_m[i],
+                     p.id[i], species[p.species[i]].species.name, p.east_m[i],
                      p.north_m[i], p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i],
                      p.crownBase_m[i], p.dbh_m[i], p.vigor[i], p.variantSeed[i]);
   });

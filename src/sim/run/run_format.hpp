@@ -22,6 +22,8 @@ struct RunPaths {
   std::filesystem::path checkpoint() const { return dir / "checkpoint.bin"; }
   std::filesystem::path treesFolder() const { return dir / "trees"; }
   std::filesystem::path snapshot(int year) const;  // trees/year_NNNN.csv
+  std::filesystem::path removedFolder() const { return dir / "removed"; }
+  std::filesystem::path removed(int year) const;  // removed/year_NNNN.csv: the year's thinning
   std::filesystem::path conditionsJson() const { return dir / "conditions.json"; }
   std::filesystem::path mapsFolder() const { return dir / "maps"; }
   std::filesystem::path map(const std::string& name) const;  // maps/NAME.exr, raw floats
@@ -38,6 +40,10 @@ struct StatsRow {
   std::int32_t year = 0;
   std::int32_t species = 0;
   std::int64_t alive = 0, born = 0, died = 0;
+  // The plan's doings (docs/planning.md): trees planted at the start of the year, planted
+  // trees that died in it, trees a thinning removed at its end and their stem volume.
+  std::int64_t planted = 0, diedAfterPlanting = 0, removed = 0;
+  double removedVolume_m3PerHa = 0.0;
   double meanHeight_m = 0.0;  // of every plant
   // The forester's measures (stand_measures.hpp), trees of at least 10 cm dbh.
   double stemsPerHa = 0.0;
@@ -53,6 +59,16 @@ struct StatsRow {
 
 void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow>& rows,
                    const std::vector<EcosystemSpecies>& species);
+
+// A stats.csv read back: its rows, their species indices into `species` (in order of first
+// appearance) or kAllSpecies for the stand's rows.
+struct StatsFile {
+  std::vector<std::string> species;
+  std::vector<StatsRow> rows;
+};
+// Columns are found by name, so files of earlier versions without the plan's columns read
+// with those as 0; a missing column, a bad number or species name is an InputError at its line.
+StatsFile readStatsCsv(const std::filesystem::path& file);
 
 // A snapshot: one row per living plant, under this header.
 inline constexpr const char* kTreesCsvHeader =
@@ -73,6 +89,9 @@ struct TreeSnapshot {
 };
 
 void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem);
+// The same for any plants (the trees a thinning removed) of the ecosystem's species.
+void writeTreesCsv(const std::filesystem::path& file, const Plants& plants,
+                   const std::vector<EcosystemSpecies>& species);
 // Parses one trees CSV; errors give the file and line.
 TreeSnapshot readTreesCsv(const std::filesystem::path& file);
 

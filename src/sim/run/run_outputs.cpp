@@ -30,7 +30,7 @@ void forCellsUnderCrown(const Grid& g, const Plants& p, std::size_t i, F&& f) {
 
 }  // namespace
 
-std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem) {
+std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem, const PlanYear& plan) {
   const Plants& p = ecosystem.plants();
   const Grid& g = ecosystem.grid();
   const auto speciesCount = static_cast<int>(ecosystem.species().size());
@@ -56,6 +56,10 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem) {
       if (stand || s == static_cast<int>(r)) {
         row.born += ecosystem.bornLastYear()[s];
         row.died += ecosystem.diedLastYear()[s];
+        row.diedAfterPlanting += ecosystem.plantedDiedLastYear()[s];
+        row.planted += plan.planted[s];
+        row.removed += plan.removed[s];
+        row.removedVolume_m3PerHa += plan.removedVolume_m3[s] / area_ha;
       }
     row.meanHeight_m = row.alive ? heightSum[r] / row.alive : 0.0;
     const StandMeasures& m = measures[r];

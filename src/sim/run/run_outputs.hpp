@@ -5,12 +5,14 @@
 #include <vector>
 
 #include "sim/ecology/ecosystem.hpp"
+#include "sim/plan/management.hpp"
 #include "sim/run/run_format.hpp"
 
 namespace eco {
 
-// The rows of the year just stepped: one per species, then the whole stand's.
-std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem);
+// The rows of the year just stepped, with what the plan did in it: one per species, then
+// the whole stand's.
+std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem, const PlanYear& plan);
 
 // The height of the tallest plant whose crown covers each cell centre, 0 where none does.
 Field canopyHeight(const Ecosystem& ecosystem);

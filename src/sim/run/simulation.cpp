@@ -12,6 +12,7 @@
 #include "core/names.hpp"
 #include "sim/conditions/condition_maps.hpp"
 #include "sim/ecology/suitability.hpp"
+#include "sim/plan/management.hpp"
 #include "sim/run/checkpoint.hpp"
 #include "sim/run/run_lock.hpp"
 #include "sim/run/run_outputs.hpp"
@@ -79,46 +80,12 @@ RunRecord runRecord(const Scenario& scenario, const RunOptions& options, std::ui
   return r;
 }
 
-// The species index of each [[planting]]; an InputError at the planting whose species the
-// scenario does not list.
-std::vector<int> plantedSpecies(const Scenario& scenario,
-                                const std::vector<EcosystemSpecies>& all) {
-  std::vector<int> indices;
-  for (const Planting& planting : scenario.planting) {
-    const auto found = std::find_if(all.begin(), all.end(), [&](const EcosystemSpecies& s) {
-      return s.species.isCalled(planting.species);
-    });
-    if (found == all.end()) {
-      std::vector<std::string> names;
-      for (const EcosystemSpecies& s : all) names.push_back(s.species.name);
-      throw InputError(planting.where, "no species '" + planting.species + "' in the scenario" +
-                                           didYouMean(planting.species, names));
-    }
-    indices.push_back(static_cast<int>(found - all.begin()));
-  }
-  return indices;
-}
-
-// The scenario's [[planting]]: each species on its square grid over the whole map.
-void plantStands(Ecosystem& ecosystem, const Scenario& scenario, const std::vector<int>& species) {
-  const Grid& g = ecosystem.grid();
-  for (std::size_t k = 0; k < scenario.planting.size(); ++k) {
-    const Planting& planting = scenario.planting[k];
-    const double width = g.width * g.dx_m, height = g.height * g.dy_m;
-    for (double north = 0.5 * planting.spacing_m; north < height; north += planting.spacing_m)
-      for (double east = 0.5 * planting.spacing_m; east < width; east += planting.spacing_m) {
-        const double e = east - 0.5 * g.dx_m, n = north - 0.5 * g.dy_m;
-        if (ecosystem.terrain().isOutside(static_cast<std::size_t>(g.cellAt(e, n)))) continue;
-        ecosystem.plantSapling(species[k], e, n, planting.height_m);
-      }
-  }
-}
-
 // Temporaries of writes a kill -9 or a power cut interrupted (AtomicFile's NAME.tmp-PID-N
 // and the frame sinks' .partial_NAME): no process writes them any more once this run holds
 // the lock.
 void removeStaleTemporaries(const RunPaths& run) {
-  for (const std::filesystem::path& folder : {run.dir, run.treesFolder(), run.mapsFolder()}) {
+  for (const std::filesystem::path& folder :
+       {run.dir, run.treesFolder(), run.mapsFolder(), run.removedFolder()}) {
     std::error_code error;
     if (!std::filesystem::is_directory(folder, error)) continue;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
@@ -131,11 +98,15 @@ void removeStaleTemporaries(const RunPaths& run) {
 }
 
 // What an earlier run wrote that this one may not rewrite: its snapshots (this run may
-// write fewer), its checkpoint, statistics and maps (of species this run may not have).
+// write fewer), its thinnings, checkpoint, statistics and maps (of species this run may not
+// have).
 void removeEarlierRun(const RunPaths& run) {
-  for (const std::filesystem::path& folder : {run.treesFolder(), run.mapsFolder()})
+  for (const std::filesystem::path& folder :
+       {run.treesFolder(), run.mapsFolder(), run.removedFolder()}) {
+    if (!std::filesystem::is_directory(folder)) continue;
     for (const auto& entry : std::filesystem::directory_iterator(folder))
       if (entry.is_regular_file()) std::filesystem::remove(entry.path());
+  }
   std::filesystem::remove(run.checkpoint());
   std::filesystem::remove(run.stats());
 }
@@ -212,10 +183,11 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
                   [](const ScenarioSpecies& s) {
                     return s.seedRainPerHaPerYear <= 0.0 && s.surroundingForestShare <= 0.0;
                   }) &&
-      scenario.planting.empty() && !scenario.species.empty() && options.warn)
+      scenario.plan.planting.empty() && scenario.plan.seedSources.empty() &&
+      !scenario.species.empty() && options.warn)
     options.warn(fmt::format(
-        "{}: no species has a seed rain or a share of the surrounding forest, nothing is "
-        "planted, and the landscape starts empty, so nothing will grow",
+        "{}: no species has a seed rain or a share of the surrounding forest, there is no "
+        "seed source, nothing is planted, and the landscape starts empty, so nothing will grow",
         scenario.file.string()));
 
   // Read the checkpoint before anything is written, so a refused resume changes nothing.
@@ -229,7 +201,6 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
   ConditionFields fields =
       computeConditions(terrain, scenario.climate, SunlightSettings{}, &report);
   std::vector<EcosystemSpecies> species = loadEcosystemSpecies(scenario, fields);
-  const std::vector<int> planted = plantedSpecies(scenario, species);  // before any output
   if (checkpoint)
     checkCheckpoint(*checkpoint, {terrain.grid, species.size(), summary.targetYears},
                     run.checkpoint());
@@ -237,9 +208,12 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
 
   EcosystemSettings settings{scenario.seed, scenario.climate.prevailingWindFrom_deg};
   Ecosystem ecosystem(terrain, fields, std::move(species), settings);
+  // The plan's regions and species are checked before anything is written.
+  Management plan(scenario.plan, ecosystem, scenario.seed);
   std::vector<StatsRow> stats;
   createOutputFolder(run.mapsFolder());
   createOutputFolder(run.treesFolder());
+  if (!scenario.plan.thinning.empty()) createOutputFolder(run.removedFolder());
   if (checkpoint) {
     ecosystem.restore(std::move(checkpoint->state));
     stats = std::move(checkpoint->stats);
@@ -251,7 +225,9 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
     writeRunJson(run, *claimed);
     removeEarlierRun(run);
     writeConditionOutputs(fields, report, scenario, summary.folder);
-    plantStands(ecosystem, scenario, planted);
+    if (!scenario.plan.empty())
+      writeFieldMap(run.mapsFolder(), "plan", "0-4", maskOutside(terrain, plan.planMap()),
+                    terrain.grid);
     for (const EcosystemSpecies& s : ecosystem.species())
       writeFieldMap(run.mapsFolder(), "suitability_" + s.species.name, "0-1",
                     maskOutside(terrain, s.suitability), terrain.grid);
@@ -265,10 +241,15 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
   const auto start = Clock::now();
   const int firstYear = ecosystem.year() + 1;
   while (ecosystem.year() < summary.targetYears) {
+    PlanYear done(ecosystem.species().size());
+    plan.plantAtStartOf(ecosystem.year() + 1, done, options.warn);
     summary.plantYears += static_cast<double>(ecosystem.plants().size());
     ecosystem.step();
     const int year = ecosystem.year();
-    std::vector<StatsRow> rows = statsOfYear(ecosystem);
+    plan.thinAtEndOf(year, done);
+    if (done.removedPlants.size() > 0)
+      writeTreesCsv(run.removed(year), done.removedPlants, ecosystem.species());
+    std::vector<StatsRow> rows = statsOfYear(ecosystem, done);
     stats.insert(stats.end(), rows.begin(), rows.end());
     writeStatsCsv(run.stats(), stats, ecosystem.species());
     const bool last = year == summary.targetYears;

@@ -90,5 +90,57 @@ TEST(Dispersal, WindDispersedSeedsDriftDownwind) {
   EXPECT_NEAR(north / n, 0.0, 0.5);
 }
 
+// A [[seed_source]] that surrounds the map farther than any seed flies sends what the
+// surrounding forest of the same density sends.
+TEST(Dispersal, ASourceRegionAroundTheMapEqualsTheSurroundingForest) {
+  LifeHistory life;
+  life.dispersalMean_m = 30.0;
+  life.longDistanceFraction = 0.05;
+  life.longDistanceMean_m = 100.0;
+  // 480 m x 240 m: whole seed cells of 24 and 80 m (0.8 means), as the surrounding forest's
+  // edge is the seed grid's.
+  const Grid grid{48, 24, 10.0, 10.0};
+  SeedMap surrounded(grid, {&life}, {1.0, 0.0}), sourced(grid, {&life}, {1.0, 0.0});
+  surrounded.setSurroundingSeeds(0, 2.0);
+  const int around = sourced.addSourceRegion([](glm::dvec2 p) {
+    return p.x < -5.0 || p.y < -5.0 || p.x >= 475.0 || p.y >= 235.0;
+  });
+  sourced.addRegionSeeds(around, 0, 2.0);
+  surrounded.disperse();
+  sourced.disperse();
+  for (double east : {0.0, 100.0, 200.0, 470.0})
+    for (double north : {0.0, 150.0, 230.0})
+      EXPECT_NEAR(sourced.density(0, east, north), surrounded.density(0, east, north),
+                  1e-6 * surrounded.density(0, east, north));
+}
+
+// A forest west of the map: its seeds land on the map as far as the kernel carries them. At a
+// distance d from the forest's edge an even source of S seeds per m2 gives S P(X > d), X the
+// kernel's east-west offset, averaged over the target cell (here by sampling the kernel anew).
+TEST(Dispersal, SeedsFromASourceOffTheMapLandAtTheKernelsDistances) {
+  LifeHistory life;
+  life.dispersal = DispersalVector::Animal;
+  life.dispersalMean_m = 50.0;  // seed cells of 40 m
+  const Grid grid{80, 20, 10.0, 10.0};  // 800 m x 200 m, its west edge at east = -5 m
+  SeedMap seeds(grid, {&life}, {1.0, 0.0});
+  const int forest = seeds.addSourceRegion([](glm::dvec2 p) { return p.x < -5.0; });
+  seeds.addRegionSeeds(forest, 0, 2.0);
+  seeds.disperse();
+  Rng rng(streamKey(11, purpose("test")));
+  const int n = 1000000;
+  for (int cell = 0; cell < 5; ++cell) {
+    int landed = 0;
+    for (int k = 0; k < n; ++k) {
+      const double d = (cell + rng.uniform()) * 40.0;  // target, metres from the edge
+      const glm::dvec2 o = seedOffsetFrom(life, false, {1.0, 0.0}, rng);
+      landed += o.x > d && std::hypot(o.x, o.y) <= 5.0 * 50.0;  // the stencil reaches 5 means
+    }
+    const double expected = 2.0 * landed / n;
+    const double east = -5.0 + (cell + 0.5) * 40.0;
+    EXPECT_NEAR(seeds.density(0, east, 100.0), expected, 0.03 * expected + 1e-4) << "cell " << cell;
+  }
+  EXPECT_LT(seeds.density(0, 700.0, 100.0), 1e-6);  // 14 means away: no seed
+}
+
 }  // namespace
 }  // namespace eco

@@ -13,7 +13,23 @@ TEST(Plants, ResizeReachesEveryColumn) {
     EXPECT_EQ(column.size(), 7u);
     ++columns;
   });
-  EXPECT_EQ(columns, 17u);
+  EXPECT_EQ(columns, 18u);
+}
+
+TEST(Plants, AppendRowCopiesEveryColumn) {
+  Plants from;
+  from.resize(3);
+  from.id = {4, 5, 6};
+  from.dbh_m = {0.1f, 0.2f, 0.3f};
+  from.origin = {0, 1, 2};
+  Plants to;
+  to.appendRow(from, 1);
+  to.appendRow(from, 2);
+  EXPECT_EQ(to.size(), 2u);
+  to.forEachColumn([](const auto& column) { EXPECT_EQ(column.size(), 2u); });
+  EXPECT_EQ(to.id, (std::vector<std::uint64_t>{5, 6}));
+  EXPECT_EQ(to.dbh_m, (std::vector<float>{0.2f, 0.3f}));
+  EXPECT_EQ(to.origin, (std::vector<std::uint8_t>{1, 2}));
 }
 
 TEST(Plants, RemoveDeadKeepsTheOrderOfTheLiving) {

@@ -123,7 +123,7 @@ TEST_F(OneHectare, CsvFilesHaveTheDocumentedColumns) {
   ecosystem.plant(0, 12.0, 33.0, 40);
   const auto folder = test::freshDirectory("run_outputs");
   writeTreesCsv(folder / "trees.csv", ecosystem);
-  writeStatsCsv(folder / "stats.csv", statsOfYear(ecosystem), ecosystem.species());
+  writeStatsCsv(folder / "stats.csv", statsOfYear(ecosystem, PlanYear(ecosystem.species().size())), ecosystem.species());
   const std::string trees = test::readFile(folder / "trees.csv");
   EXPECT_EQ(trees.substr(0, trees.find('\n')),
             "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,"
@@ -133,9 +133,45 @@ TEST_F(OneHectare, CsvFilesHaveTheDocumentedColumns) {
   EXPECT_EQ(stats.substr(0, stats.find('\n')),
             "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,qmd_cm,"
             "dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,"
-            "densest_hectare_basal_area_m2_per_ha");
+            "densest_hectare_basal_area_m2_per_ha,planted,died_after_planting,removed,"
+            "removed_volume_m3_per_ha");
   EXPECT_NE(stats.find("\n0,t,1,0,0,"), std::string::npos) << stats;
   EXPECT_NE(stats.find("\n0,all,1,0,0,"), std::string::npos) << stats;
+}
+
+TEST_F(OneHectare, TheStatsReaderReadsWhatTheWriterWrote) {
+  ecosystem.plant(0, 12.0, 33.0, 40);
+  ecosystem.step();
+  PlanYear plan(1);
+  plan.planted[0] = 12;
+  plan.removed[0] = 3;
+  plan.removedVolume_m3[0] = 4.5;
+  const auto folder = test::freshDirectory("run_format_stats");
+  const std::vector<StatsRow> rows = statsOfYear(ecosystem, plan);
+  writeStatsCsv(folder / "stats.csv", rows, ecosystem.species());
+  const StatsFile back = readStatsCsv(folder / "stats.csv");
+  EXPECT_EQ(back.species, std::vector<std::string>{"t"});
+  ASSERT_EQ(back.rows.size(), 2u);
+  EXPECT_EQ(back.rows[0].species, 0);
+  EXPECT_EQ(back.rows[1].species, kAllSpecies);
+  EXPECT_EQ(back.rows[1].planted, 12);
+  EXPECT_EQ(back.rows[1].removed, 3);
+  EXPECT_NEAR(back.rows[1].removedVolume_m3PerHa, 4.5, 1e-3);  // on one hectare
+  EXPECT_NEAR(back.rows[0].basalArea_m2PerHa, rows[0].basalArea_m2PerHa, 1e-4);
+  // An earlier version's file, without the plan's columns, reads with them as 0; a broken
+  // one is refused at its line.
+  test::writeFile(folder / "old.csv",
+                  "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,"
+                  "qmd_cm,dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,"
+                  "densest_hectare_basal_area_m2_per_ha\n3,all,5,1,0,2.0,100,3.5,21,14,80,20,0.4,5\n");
+  EXPECT_EQ(readStatsCsv(folder / "old.csv").rows.at(0).planted, 0);
+  test::writeFile(folder / "bad.csv", test::readFile(folder / "old.csv") + "4,all,5,1,0,nan,100,3.5,21,14,80,20,0.4,5\n");
+  try {
+    readStatsCsv(folder / "bad.csv");
+    FAIL() << "a NaN was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 3);
+  }
 }
 
 TEST_F(OneHectare, TheTreesReaderReadsWhatTheWriterWrote) {

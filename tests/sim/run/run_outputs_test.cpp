@@ -17,7 +17,7 @@ using test::OneHectare;
 TEST_F(OneHectare, BasalAreaCoverAndCanopyFromThePlants) {
   ecosystem.plant(0, 41.0, 43.0, 100);
   const Plants& p = ecosystem.plants();
-  const std::vector<StatsRow> rows = statsOfYear(ecosystem);
+  const std::vector<StatsRow> rows = statsOfYear(ecosystem, PlanYear(ecosystem.species().size()));
   ASSERT_EQ(rows.size(), 2u);  // the species, and the whole stand
   EXPECT_EQ(rows[1].species, kAllSpecies);
   for (const StatsRow& row : rows) {

@@ -65,7 +65,7 @@ class TomlTable {
   // [[x0, y0], [x1, y1], ...] of at least `minimum` finite pairs in any order (a polygon's
   // corners), each with the line it is written on.
   std::vector<TomlPoint> points(std::string_view key, std::size_t minimum);
-  // The table's keys, in the file's order (a table of names to numbers, e.g. a mixture).
+  // The table's keys, sorted (a table of names to numbers, e.g. a mixture).
   std::vector<std::string> keys() const;
   std::optional<TomlTable> table(std::string_view key);
   std::vector<TomlTable> tables(std::string_view key);  // an array of tables ([[key]])

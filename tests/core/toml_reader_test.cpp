@@ -109,6 +109,20 @@ TEST(TomlReader, NonFiniteNumbersAreInputErrors) {
   EXPECT_EQ(inputErrorOf([&] { root.polyline("q"); }).where().line, 6);
 }
 
+TEST(TomlReader, PointsInAnyOrderAndATablesKeys) {
+  TomlDocument doc = TomlDocument::parse(
+      "p = [[5, 1], [0, 2],\n  [3, -4]]\nq = [[1, 1]]\n[mix]\nbeech = 0.7\nmaple = 0.3\n", "k.toml");
+  TomlTable root = doc.root();
+  const std::vector<TomlPoint> p = root.points("p", 3);
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p[0].x, 5.0);
+  EXPECT_EQ(p[2].y, -4.0);
+  EXPECT_EQ(p[2].line, 2);
+  InputError few = inputErrorOf([&] { root.points("q", 2); });
+  EXPECT_NE(std::string(few.what()).find("expected at least 2 points, got 1"), std::string::npos);
+  EXPECT_EQ(root.table("mix")->keys(), (std::vector<std::string>{"beech", "maple"}));
+}
+
 TEST(TomlReader, SyntaxErrorsAndMissingFiles) {
   InputError syntax = inputErrorOf([] { TomlDocument::parse("a = 1\nb = = 2\n", "bad.toml"); });
   EXPECT_EQ(syntax.where().file, "bad.toml");

@@ -1,5 +1,8 @@
 #include "sim/run/simulation.hpp"
 
+#include <map>
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -175,6 +178,106 @@ TEST(Simulation, CheckpointsEveryFewYearsStillResumeExactly) {
   EXPECT_TRUE(outputsOf(whole) == outputsOf(pieces));
 }
 
+// Every kind of rule at once on the small landscape (330 m x 330 m).
+const char* kEveryRule = R"(
+[[planting]]
+species = { beech = 0.6, pine = 0.4 }
+polygon = [[0, 0], [150, 0], [150, 150], [0, 150]]
+layout = "triangular"
+spacing_m = 3
+[[planting]]
+rows = ["pine", "beech"]
+year = 5
+layout = "contour"
+spacing_m = 3
+polygon = [[170, 170], [320, 170], [320, 320], [170, 320]]
+age_years = 2
+[[seed_source]]
+species = { beech = 0.8, pine = 0.2 }
+border_m = 200
+cover = 0.9
+[[exclusion]]
+line = [[-10, 160], [340, 160]]
+buffer_m = 4
+[[thinning]]
+method = "from_below"
+from_year = 15
+every_years = 5
+target_stems_per_ha = 300
+polygon = [[0, 0], [150, 0], [150, 150], [0, 150]]
+[[thinning]]
+method = "remove_species"
+species = ["pine"]
+from_year = 25
+every_years = 5
+polygon = [[170, 170], [320, 170], [320, 320], [170, 320]]
+)";
+
+std::vector<std::string> planOutputsOf(const std::filesystem::path& folder) {
+  std::vector<std::string> files = outputsOf(folder);
+  files.push_back(test::readFile(folder / "maps/plan.exr"));
+  for (const auto& entry : std::filesystem::directory_iterator(folder / "removed"))
+    files.push_back(entry.path().filename().string() + test::readFile(entry.path()));
+  return files;
+}
+
+TEST(Simulation, APlanIsCarriedOutAndCounted) {
+  const auto scenario = smallScenario("plan", kEveryRule, 0.0);
+  const auto out = test::freshDirectory("simulation_plan_out");
+  std::vector<std::string> warnings;
+  RunOptions options = optionsFor(scenario, out);
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  runSimulation(options);
+  const StatsFile stats = readStatsCsv(out / "stats.csv");
+  std::map<int, StatsRow> stand;
+  for (const StatsRow& r : stats.rows)
+    if (r.species == kAllSpecies) stand[r.year] = r;
+  EXPECT_GT(stand[1].planted, 2000);  // 2.25 ha at 3 m triangular, less the ride
+  EXPECT_GT(stand[5].planted, 1000);
+  for (int year : {2, 3, 4, 6}) EXPECT_EQ(stand[year].planted, 0) << year;
+  EXPECT_GT(stand[30].removed, 0);  // the pines of the contour rows go in year 25
+  EXPECT_GT(stand[25].removed, 0);
+  for (int year = 1; year <= 30; ++year)
+    EXPECT_EQ(std::filesystem::exists(out / fmt::format("removed/year_{:04d}.csv", year)),
+              stand[year].removed > 0)
+        << year;
+  EXPECT_TRUE(std::filesystem::exists(out / "maps/plan.png"));
+  // Nothing stands in the ride, and no pine is left in the contour block at a removal.
+  const TreeSnapshot last = readTreesCsv(out / "trees/year_0030.csv");
+  const auto pine = std::find(last.speciesNames.begin(), last.speciesNames.end(), "pine");
+  for (const TreeRow& t : last.trees) {
+    EXPECT_GT(std::abs(t.north_m - 160.0), 4.0);
+    if (pine != last.speciesNames.end() && t.species == pine - last.speciesNames.begin() &&
+        t.east_m > 170 && t.north_m > 170 && t.east_m < 320 && t.north_m < 320)
+      ADD_FAILURE() << "a pine at " << t.east_m << ", " << t.north_m;
+  }
+  // The forest around the map seeds it: seedlings arrive without any seed rain.
+  EXPECT_GT(stand[30].alive, stand[1].planted + stand[5].planted);
+}
+
+TEST(Simulation, APlanGivesTheSameOutputsWithOneAndTwoThreadsAndAfterAResume) {
+  const auto scenario = smallScenario("plan_threads", kEveryRule);
+  auto run = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const auto out = test::freshDirectory("simulation_plan_threads_" + std::to_string(threads));
+    runSimulation(optionsFor(scenario, out));
+    return planOutputsOf(out);
+  };
+  const std::vector<std::string> whole = run(2);
+  EXPECT_TRUE(run(1) == whole);
+  // Stopped in year 17, between the first two thinnings and after both plantings.
+  const auto pieces = test::freshDirectory("simulation_plan_pieces");
+  std::atomic<bool> stop{false};
+  RunOptions first = optionsFor(scenario, pieces);
+  first.stop = &stop;
+  first.progress = [&](const RunProgress& p) { stop = p.year >= 17; };
+  EXPECT_TRUE(runSimulation(first).interrupted);
+  RunOptions rest = optionsFor(scenario, pieces);
+  rest.resume = true;
+  runSimulation(rest);
+  EXPECT_TRUE(planOutputsOf(pieces) == whole);
+}
+
 TEST(Simulation, RefusesToResumeAnotherScenariosCheckpoint) {
   const auto out = test::freshDirectory("simulation_foreign");
   RunOptions options = optionsFor(smallScenario("foreign_a"), out);
@@ -281,6 +384,22 @@ years = -5
         << e.what();
   }
   EXPECT_TRUE(std::filesystem::is_empty(out));
+  // So is a plan's polygon off the map, before anything is written.
+  test::writeFile(folder / "off.toml",
+                  "name = \"x\"\n[terrain.generate]\nsize = 17\n[[species]]\nfile = \"" +
+                      speciesFile("beech") +
+                      "\"\n[[exclusion]]\npolygon = [[5000, 0], [6000, 0], [6000, 900]]\n");
+  const auto offOut = test::freshDirectory("simulation_bad_polygon");
+  try {
+    runSimulation(optionsFor(folder / "off.toml", offOut));
+    ADD_FAILURE() << "a polygon off the map was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("off.toml:7: exclusion[0].polygon: the polygon lies "
+                                         "outside the map"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(offOut));
 }
 
 TEST(Simulation, WarnsWhenNothingCanArrive) {

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/compare_command.hpp"
 #include "app/conditions_command.hpp"
 #include "app/export_command.hpp"
 #include "app/lsystem_command.hpp"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   eco::addTerrainCommand(app);
   eco::addRunCommand(app);
   eco::addValidateCommand(app);
+  eco::addCompareCommand(app);
   eco::addRenderCommand(app);
   eco::addViewCommand(app);
   eco::addExportCommand(app);

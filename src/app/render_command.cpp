@@ -69,22 +69,30 @@ void runRender(const RenderArgs& args) {
   const Forest forest = source.forestOf(year, args.demoTrees);
 
   const double loadMs = millisecondsSince(start);
-
-  const auto rendererStart = std::chrono::steady_clock::now();
-  HeadlessGl gl;
-  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
-                         source.library.get());
-  if (overlay) renderer.terrain().setOverlay(args.view.overlay, *overlay);
-  RenderTarget target = RenderTarget::create(args.view.size.width, args.view.size.height);
-  const double rendererMs = millisecondsSince(rendererStart);
-  const FrameStats stats =
-      renderer.render(&forest, camera, renderOptionsFrom(args.view, source.scenario), target);
-  const Image image = readPixels(target.width, target.height);
+  FrameStats stats;
+  double rendererMs = 0.0;
+  const Image image = drawStill(source, forest, camera, args.view, overlay, &stats, &rendererMs);
   writeRgb8Image(args.out, image);
   if (args.stats) std::cout << statsJson(stats, loadMs, rendererMs).dump(2) << "\n";
 }
 
 }  // namespace
+
+Image drawStill(const SceneSource& source, const Forest& forest, const Camera& camera,
+                const ViewOptions& view, const std::optional<Field>& overlay, FrameStats* stats,
+                double* setupMs) {
+  const auto rendererStart = std::chrono::steady_clock::now();
+  HeadlessGl gl;
+  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
+                         source.library.get());
+  if (overlay) renderer.terrain().setOverlay(view.overlay, *overlay);
+  RenderTarget target = RenderTarget::create(view.size.width, view.size.height);
+  if (setupMs) *setupMs = millisecondsSince(rendererStart);
+  const FrameStats frame =
+      renderer.render(&forest, camera, renderOptionsFrom(view, source.scenario), target);
+  if (stats) *stats = frame;
+  return readPixels(target.width, target.height);
+}
 
 void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();

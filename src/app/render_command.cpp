@@ -30,9 +30,10 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
-nlohmann::ordered_json statsJson(const FrameStats& s, double loadMs, double rendererMs) {
+nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
+  const FrameStats& s = still.frame;
   const auto& n = s.forest.instances;
-  return {{"renderer", glDescription()},
+  return {{"renderer", still.renderer},
           {"instances", {{"lod0", n[0]}, {"lod1", n[1]}, {"lod2", n[2]}, {"impostor", n[3]}}},
           {"culled", s.forest.culled},
           {"too_small", s.forest.tooSmall},
@@ -42,7 +43,7 @@ nlohmann::ordered_json statsJson(const FrameStats& s, double loadMs, double rend
           {"tree_triangles_all_lod0", s.forest.lod0Triangles},
           {"terrain_triangles", s.terrainTriangles},
           {"load_ms", loadMs},
-          {"renderer_setup_ms", rendererMs},
+          {"renderer_setup_ms", still.setupMs},
           {"prepare_ms", s.prepareMs},
           {"frame_ms", s.frameMs}};
 }
@@ -69,28 +70,26 @@ void runRender(const RenderArgs& args) {
   const Forest forest = source.forestOf(year, args.demoTrees);
 
   const double loadMs = millisecondsSince(start);
-  FrameStats stats;
-  double rendererMs = 0.0;
-  const Image image = drawStill(source, forest, camera, args.view, overlay, &stats, &rendererMs);
+  StillStats stats;
+  const Image image = drawStill(source, forest, camera, args.view, overlay, &stats);
   writeRgb8Image(args.out, image);
-  if (args.stats) std::cout << statsJson(stats, loadMs, rendererMs).dump(2) << "\n";
+  if (args.stats) std::cout << statsJson(stats, loadMs).dump(2) << "\n";
 }
 
 }  // namespace
 
 Image drawStill(const SceneSource& source, const Forest& forest, const Camera& camera,
-                const ViewOptions& view, const std::optional<Field>& overlay, FrameStats* stats,
-                double* setupMs) {
+                const ViewOptions& view, const std::optional<Field>& overlay, StillStats* stats) {
   const auto rendererStart = std::chrono::steady_clock::now();
   HeadlessGl gl;
   SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
                          source.library.get());
   if (overlay) renderer.terrain().setOverlay(view.overlay, *overlay);
   RenderTarget target = RenderTarget::create(view.size.width, view.size.height);
-  if (setupMs) *setupMs = millisecondsSince(rendererStart);
+  const double setupMs = millisecondsSince(rendererStart);
   const FrameStats frame =
       renderer.render(&forest, camera, renderOptionsFrom(view, source.scenario), target);
-  if (stats) *stats = frame;
+  if (stats) *stats = {frame, setupMs, glDescription()};
   return readPixels(target.width, target.height);
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -14,11 +15,18 @@ namespace eco {
 
 void addRenderCommand(CLI::App& app);
 
+// What drawing a still measured: the frame's figures, the renderer's setup time and the
+// OpenGL renderer's name (asked while its context lives).
+struct StillStats {
+  FrameStats frame;
+  double setupMs = 0.0;
+  std::string renderer;
+};
+
 // Draws a forest on its source's terrain (its library built) from a camera, headless, into
-// an image of the options' size. `stats` gets the frame's figures, `setupMs` the renderer's
-// setup time.
+// an image of the options' size.
 Image drawStill(const SceneSource& source, const Forest& forest, const Camera& camera,
                 const ViewOptions& view, const std::optional<Field>& overlay,
-                FrameStats* stats = nullptr, double* setupMs = nullptr);
+                StillStats* stats = nullptr);
 
 }  // namespace eco

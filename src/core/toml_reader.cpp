@@ -168,9 +168,9 @@ std::vector<TomlPoint> TomlTable::points(std::string_view key, std::size_t minim
     };
     TomlPoint point{toDouble((*pair)[0]), toDouble((*pair)[1]), lineOf(element)};
     if (!std::isfinite(point.x) || !std::isfinite(point.y))
-      throw InputError({file_, point.line, path(key)},
-                       "point (" + formatNumber(point.x) + ", " + formatNumber(point.y) +
-                           ") is not a pair of finite numbers");
+      throw InputError({file_, point.line, path(key)}, "point (" + formatNumber(point.x) + ", " +
+                                                           formatNumber(point.y) +
+                                                           ") is not a pair of finite numbers");
     points.push_back(point);
   }
   if (points.size() < minimum)

@@ -90,7 +90,7 @@ struct Scenario {
   Climate climate;
   SimulationSettings simulation;
   std::vector<ScenarioSpecies> species;  // empty for terrain-only scenarios
-  Plan plan;  // planting, seed sources, areas kept open, thinning
+  Plan plan;                             // planting, seed sources, areas kept open, thinning
   std::optional<ValidationSettings> validation;
   OutputSettings output;
 };

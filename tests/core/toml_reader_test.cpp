@@ -111,7 +111,8 @@ TEST(TomlReader, NonFiniteNumbersAreInputErrors) {
 
 TEST(TomlReader, PointsInAnyOrderAndATablesKeys) {
   TomlDocument doc = TomlDocument::parse(
-      "p = [[5, 1], [0, 2],\n  [3, -4]]\nq = [[1, 1]]\n[mix]\nbeech = 0.7\nmaple = 0.3\n", "k.toml");
+      "p = [[5, 1], [0, 2],\n  [3, -4]]\nq = [[1, 1]]\n[mix]\nbeech = 0.7\nmaple = 0.3\n",
+      "k.toml");
   TomlTable root = doc.root();
   const std::vector<TomlPoint> p = root.points("p", 3);
   ASSERT_EQ(p.size(), 3u);

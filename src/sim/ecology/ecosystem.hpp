@@ -79,8 +79,8 @@ class Ecosystem {
   void plant(int species, double east_m, double north_m, int age_years);
   // Adds planted stock: a sapling of this height and age. Stock planted where a condition
   // rules its species out and checked for survival (PlantedRuledOut) dies in its first year.
-  void plantSapling(int species, double east_m, double north_m, double height_m,
-                    int age_years = 0, PlantOrigin origin = PlantOrigin::Planted);
+  void plantSapling(int species, double east_m, double north_m, double height_m, int age_years = 0,
+                    PlantOrigin origin = PlantOrigin::Planted);
   // Removes the plants whose flag is set (thinning), keeping the others' order.
   void removePlants(const std::vector<std::uint8_t>& removed);
 

@@ -21,11 +21,11 @@ struct Plants {
   std::vector<std::int32_t> age_years;
   std::vector<float> height_m;
   std::vector<float> crownRadius_m;
-  std::vector<float> crownBase_m;          // height of the lowest living branches
-  std::vector<float> dbh_m;                // stem diameter at breast height, 0 below 1.3 m
-  std::vector<float> vigor;                // 0..1, this year's
-  std::vector<float> light;                // fraction of open-sky light at the crown top
-  std::vector<float> growthFactor;         // the individual's lasting growth rate, about 1
+  std::vector<float> crownBase_m;   // height of the lowest living branches
+  std::vector<float> dbh_m;         // stem diameter at breast height, 0 below 1.3 m
+  std::vector<float> vigor;         // 0..1, this year's
+  std::vector<float> light;         // fraction of open-sky light at the crown top
+  std::vector<float> growthFactor;  // the individual's lasting growth rate, about 1
   // The tree model's individual seed: 32 bits, which spreadsheets, R and JavaScript hold
   // exactly (their numbers are doubles).
   std::vector<std::uint32_t> variantSeed;

@@ -28,7 +28,8 @@ void forCellsInBounds(const Grid& g, const MapBounds& b, F&& f) {
   const int x0 = std::max(0, static_cast<int>(std::floor(b.min.x / g.dx_m)));
   const int x1 = std::min(g.width - 1, static_cast<int>(std::ceil(b.max.x / g.dx_m)));
   const int y0 = std::max(0, static_cast<int>(std::floor((g.height - 1) - b.max.y / g.dy_m)));
-  const int y1 = std::min(g.height - 1, static_cast<int>(std::ceil((g.height - 1) - b.min.y / g.dy_m)));
+  const int y1 =
+      std::min(g.height - 1, static_cast<int>(std::ceil((g.height - 1) - b.min.y / g.dy_m)));
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) f(x, y);
 }
@@ -45,7 +46,8 @@ std::vector<PlantingSpot> gridSpots(const Planting& planting, const Region& regi
     const double north = map.min.y + (row + 0.5) * r;
     if (north > b.max.y || north >= map.max.y) break;
     const double shift = (row % 2) * rowShift * s;
-    const int col0 = std::max(0, static_cast<int>(std::floor((b.min.x - map.min.x - shift) / s - 0.5)));
+    const int col0 =
+        std::max(0, static_cast<int>(std::floor((b.min.x - map.min.x - shift) / s - 0.5)));
     for (int col = col0;; ++col) {
       const glm::dvec2 p(map.min.x + (col + 0.5) * s + shift, north);
       if (p.x > b.max.x || p.x >= map.max.x) break;
@@ -73,16 +75,18 @@ std::vector<PlantingSpot> contourSpots(const Planting& planting, const Region& r
   forCellsInBounds(g, region.bounds(), [&](int x, int y) {
     if (x + 1 >= g.width || y + 1 >= g.height) return;
     // Corners clockwise from the north-west, edges top, right, bottom, left between them.
-    const std::array<std::pair<int, int>, 4> corner{{{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}}};
+    const std::array<std::pair<int, int>, 4> corner{
+        {{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}}};
     std::array<double, 4> h;
     for (int c = 0; c < 4; ++c) {
       const std::size_t cell = g.index(corner[c].first, corner[c].second);
       if (terrain.isOutside(cell)) return;
       h[c] = terrain.height_m[cell];
     }
-    const std::array<std::uint64_t, 4> edge{
-        2 * static_cast<std::uint64_t>(g.index(x, y)), 2 * static_cast<std::uint64_t>(g.index(x + 1, y)) + 1,
-        2 * static_cast<std::uint64_t>(g.index(x, y + 1)), 2 * static_cast<std::uint64_t>(g.index(x, y)) + 1};
+    const std::array<std::uint64_t, 4> edge{2 * static_cast<std::uint64_t>(g.index(x, y)),
+                                            2 * static_cast<std::uint64_t>(g.index(x + 1, y)) + 1,
+                                            2 * static_cast<std::uint64_t>(g.index(x, y + 1)),
+                                            2 * static_cast<std::uint64_t>(g.index(x, y)) + 1};
     const auto [lo, hi] = std::minmax_element(h.begin(), h.end());
     // Levels sit at (k + 1/2) steps, so a flat cell never lies on one.
     for (int k = static_cast<int>(std::ceil(*lo / levelStep_m - 0.5));
@@ -102,7 +106,8 @@ std::vector<PlantingSpot> contourSpots(const Planting& planting, const Region& r
       for (int e = 0; e < 4; ++e)
         if (above[e] != above[(e + 1) % 4]) crossed[n++] = e;
       auto add = [&](int e0, int e1) {
-        segments.push_back({k, {keyOf(k, edge[e0]), keyOf(k, edge[e1])}, {crossing(e0), crossing(e1)}});
+        segments.push_back(
+            {k, {keyOf(k, edge[e0]), keyOf(k, edge[e1])}, {crossing(e0), crossing(e1)}});
       };
       if (n == 2) {
         add(crossed[0], crossed[1]);
@@ -183,7 +188,8 @@ std::vector<PlantingSpot> contourSpots(const Planting& planting, const Region& r
 std::vector<PlantingSpot> randomSpots(const Planting& planting, const Region& region,
                                       const Terrain& terrain, std::uint64_t seed) {
   const double area = region.areaOnLandscape_m2(terrain);
-  const auto target = static_cast<std::size_t>(std::llround(area / (planting.spacing_m * planting.spacing_m)));
+  const auto target =
+      static_cast<std::size_t>(std::llround(area / (planting.spacing_m * planting.spacing_m)));
   const MapBounds map = MapBounds::of(terrain.grid);
   const MapBounds b{glm::max(region.bounds().min, map.min), glm::min(region.bounds().max, map.max)};
   const double d = planting.minDistance_m;
@@ -199,7 +205,8 @@ std::vector<PlantingSpot> randomSpots(const Planting& planting, const Region& re
     const glm::dvec2 p(b.min.x + rng.uniform() * (b.max.x - b.min.x),
                        b.min.y + rng.uniform() * (b.max.y - b.min.y));
     if (!region.contains(p) || !onLandscape(terrain, p)) continue;
-    const int bx = static_cast<int>((p.x - b.min.x) / cell), by = static_cast<int>((p.y - b.min.y) / cell);
+    const int bx = static_cast<int>((p.x - b.min.x) / cell),
+              by = static_cast<int>((p.y - b.min.y) / cell);
     bool free = true;
     for (int y = std::max(0, by - 1); free && y <= std::min(ny - 1, by + 1); ++y)
       for (int x = std::max(0, bx - 1); free && x <= std::min(nx - 1, bx + 1); ++x) {
@@ -223,7 +230,8 @@ double meanGradient(const Terrain& terrain, const Region& region) {
   std::size_t cells = 0;
   forCellsInBounds(g, region.bounds(), [&](int x, int y) {
     if (x == 0 || y == 0 || x + 1 >= g.width || y + 1 >= g.height) return;
-    for (std::size_t c : {g.index(x, y), g.index(x - 1, y), g.index(x + 1, y), g.index(x, y - 1), g.index(x, y + 1)})
+    for (std::size_t c : {g.index(x, y), g.index(x - 1, y), g.index(x + 1, y), g.index(x, y - 1),
+                          g.index(x, y + 1)})
       if (terrain.isOutside(c)) return;
     if (!region.contains({g.eastOf(x), g.northOf(y)})) return;
     const double gx = (terrain.heightAt(x + 1, y) - terrain.heightAt(x - 1, y)) / (2.0 * g.dx_m);

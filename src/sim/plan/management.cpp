@@ -17,7 +17,8 @@ namespace {
 std::vector<int> indicesOf(const std::vector<SpeciesShare>& shares,
                            const std::vector<EcosystemSpecies>& species) {
   std::vector<int> indices;
-  for (const SpeciesShare& s : shares) indices.push_back(planSpeciesIndex(s.species, s.where, species));
+  for (const SpeciesShare& s : shares)
+    indices.push_back(planSpeciesIndex(s.species, s.where, species));
   return indices;
 }
 
@@ -41,8 +42,9 @@ int speciesAt(const Planting& rule, const std::vector<int>& mix, const std::vect
 
 int planSpeciesIndex(const std::string& name, const SourceLocation& where,
                      const std::vector<EcosystemSpecies>& species) {
-  const auto found = std::find_if(species.begin(), species.end(),
-                                  [&](const EcosystemSpecies& s) { return s.species.isCalled(name); });
+  const auto found = std::find_if(species.begin(), species.end(), [&](const EcosystemSpecies& s) {
+    return s.species.isCalled(name);
+  });
   if (found != species.end()) return static_cast<int>(found - species.begin());
   std::vector<std::string> names;
   for (const EcosystemSpecies& s : species) names.push_back(s.species.name);
@@ -54,7 +56,8 @@ Management::Management(const Plan& plan, Ecosystem& ecosystem, std::uint64_t see
   const Grid& grid = ecosystem.grid();
   const std::vector<EcosystemSpecies>& species = ecosystem.species();
   for (const Planting& p : plan.planting)
-    plantings_.push_back({&p, Region(p.region, grid), indicesOf(p.mix, species), indicesOf(p.rows, species)});
+    plantings_.push_back(
+        {&p, Region(p.region, grid), indicesOf(p.mix, species), indicesOf(p.rows, species)});
   for (const Thinning& t : plan.thinning) {
     Region region(t.region, grid);
     const double area_ha = region.areaOnLandscape_m2(ecosystem.terrain()) / 1e4;
@@ -67,7 +70,8 @@ Management::Management(const Plan& plan, Ecosystem& ecosystem, std::uint64_t see
     // The ecosystem keeps its own copy: it may be stepped after this is gone.
     auto open = std::make_shared<const std::vector<Region>>(exclusions_);
     ecosystem.keepOpen([open](glm::dvec2 p) {
-      return std::any_of(open->begin(), open->end(), [&](const Region& r) { return r.contains(p); });
+      return std::any_of(open->begin(), open->end(),
+                         [&](const Region& r) { return r.contains(p); });
     });
   }
   for (const SeedSource& s : plan.seedSources) {
@@ -104,9 +108,9 @@ void Management::plantAtStartOf(int year, PlanYear& done,
       const bool possible = species[s].suitability[static_cast<std::size_t>(cell)] > 0.0f;
       if (!possible) ++ruledOut[s];
       ++planted[s];
-      ecosystem_.plantSapling(s, spot.position.x, spot.position.y, rule.height_m, rule.stockAge_years,
-                              possible || !rule.survivalCheck ? PlantOrigin::Planted
-                                                              : PlantOrigin::PlantedRuledOut);
+      ecosystem_.plantSapling(
+          s, spot.position.x, spot.position.y, rule.height_m, rule.stockAge_years,
+          possible || !rule.survivalCheck ? PlantOrigin::Planted : PlantOrigin::PlantedRuledOut);
     }
     for (std::size_t s = 0; s < species.size(); ++s) done.planted[s] += planted[s];
     if (!warn) continue;
@@ -121,8 +125,9 @@ void Management::plantAtStartOf(int year, PlanYear& done,
       if (ruledOut[s] > 0)
         warn(fmt::format("{}: {} of {} planted {} stand where a condition rules {} out{}", at,
                          ruledOut[s], planted[s], species[s].species.name, species[s].species.name,
-                         rule.survivalCheck ? "; they die in their first year (stats.csv: died_after_planting)"
-                                            : "; without survival_check they take their chances"));
+                         rule.survivalCheck
+                             ? "; they die in their first year (stats.csv: died_after_planting)"
+                             : "; without survival_check they take their chances"));
   }
 }
 

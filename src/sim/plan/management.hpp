@@ -37,7 +37,8 @@ class Management {
 
   // The plantings of `year` (before it is stepped). `warn` hears what the user should know:
   // stock planted where a condition rules its species out, a layout that fell back.
-  void plantAtStartOf(int year, PlanYear& done, const std::function<void(const std::string&)>& warn);
+  void plantAtStartOf(int year, PlanYear& done,
+                      const std::function<void(const std::string&)>& warn);
   // The thinnings of `year` (after it is stepped).
   void thinAtEndOf(int year, PlanYear& done);
 

@@ -96,7 +96,8 @@ PlantingLayout parseLayout(TomlTable& table) {
 Planting parsePlanting(TomlTable& table, const std::filesystem::path& folder) {
   Planting p;
   p.where = table.has("species") ? table.where("species")
-                                 : table.has("rows") ? table.where("rows") : table.where("");
+            : table.has("rows")  ? table.where("rows")
+                                 : table.where("");
   if (table.has("species") == table.has("rows"))
     table.fail("species", "give species (a name or a table of shares) or rows, not both");
   if (table.has("species")) {
@@ -123,8 +124,7 @@ Planting parsePlanting(TomlTable& table, const std::filesystem::path& folder) {
                              "the density a {} m spacing asks for",
                              kLargestMinDistanceShare, kLargestMinDistanceShare * p.spacing_m,
                              p.spacing_m));
-    if (table.has("row_spacing_m"))
-      table.fail("row_spacing_m", "a random layout has no rows");
+    if (table.has("row_spacing_m")) table.fail("row_spacing_m", "a random layout has no rows");
   }
   if (!p.rows.empty() && p.layout == PlantingLayout::Random)
     table.fail("rows", "a random layout has no rows: give species shares instead");
@@ -188,8 +188,7 @@ Thinning parseThinning(TomlTable& table, const std::filesystem::path& folder) {
       table.fail(t.targetBasalArea_m2PerHa ? "target_basal_area_m2_per_ha" : "target_stems_per_ha",
                  "remove_species removes every tree of its species: it takes no target");
   } else if (t.targetBasalArea_m2PerHa.has_value() == t.targetStemsPerHa.has_value()) {
-    table.fail("method",
-               "give one target: target_basal_area_m2_per_ha or target_stems_per_ha");
+    table.fail("method", "give one target: target_basal_area_m2_per_ha or target_stems_per_ha");
   }
   table.finish();
   return t;
@@ -213,12 +212,14 @@ bool Thinning::appliesIn(int year) const {
 
 Plan parsePlan(TomlTable& root, const std::filesystem::path& scenarioFolder) {
   Plan plan;
-  for (TomlTable& t : root.tables("planting")) plan.planting.push_back(parsePlanting(t, scenarioFolder));
+  for (TomlTable& t : root.tables("planting"))
+    plan.planting.push_back(parsePlanting(t, scenarioFolder));
   for (TomlTable& t : root.tables("seed_source"))
     plan.seedSources.push_back(parseSeedSource(t, scenarioFolder));
   for (TomlTable& t : root.tables("exclusion"))
     plan.exclusions.push_back(parseExclusion(t, scenarioFolder));
-  for (TomlTable& t : root.tables("thinning")) plan.thinning.push_back(parseThinning(t, scenarioFolder));
+  for (TomlTable& t : root.tables("thinning"))
+    plan.thinning.push_back(parseThinning(t, scenarioFolder));
   return plan;
 }
 

@@ -53,11 +53,11 @@ struct Planting {
   std::vector<SpeciesShare> mix;
   std::vector<SpeciesShare> rows;
   PlantingLayout layout = PlantingLayout::Square;
-  double spacing_m = 2.0;     // between trees in a row (random: the mean spacing)
-  double rowSpacing_m = 2.0;  // between rows (default: the spacing)
-  double minDistance_m = 0.0; // random layout: no two trees closer than this
-  double height_m = 0.3;      // of the planted stock
-  int stockAge_years = 0;     // of the planted stock
+  double spacing_m = 2.0;      // between trees in a row (random: the mean spacing)
+  double rowSpacing_m = 2.0;   // between rows (default: the spacing)
+  double minDistance_m = 0.0;  // random layout: no two trees closer than this
+  double height_m = 0.3;       // of the planted stock
+  int stockAge_years = 0;      // of the planted stock
   // Planted trees on ground where a condition rules their species out die in their first
   // year, and the run says how many; without the check they take their chances as seedlings
   // do.

@@ -16,9 +16,9 @@ namespace {
 double distanceToSegment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
   const glm::dvec2 ab = b - a;
   const double length2 = ab.x * ab.x + ab.y * ab.y;
-  const double t =
-      length2 > 0.0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2, 0.0, 1.0)
-                    : 0.0;
+  const double t = length2 > 0.0
+                       ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2, 0.0, 1.0)
+                       : 0.0;
   const glm::dvec2 d = p - (a + t * ab);
   return std::hypot(d.x, d.y);
 }
@@ -65,10 +65,10 @@ Region::Region(const RegionSpec& spec, const Grid& grid, bool mayLieOutside)
       throw InputError(spec_.where, "mask file not found: " + spec_.mask.string());
     const SingleChannelImage image = readSingleChannel(spec_.mask);
     if (image.width != grid.width || image.height != grid.height)
-      throw InputError(spec_.where,
-                       fmt::format("the mask {} is {} x {} pixels; the terrain is {} x {} cells",
-                                   spec_.mask.string(), image.width, image.height, grid.width,
-                                   grid.height));
+      throw InputError(
+          spec_.where,
+          fmt::format("the mask {} is {} x {} pixels; the terrain is {} x {} cells",
+                      spec_.mask.string(), image.width, image.height, grid.width, grid.height));
     // White is inside: at least half the stored type's maximum (128 of 255, 0.5 of 1).
     std::vector<std::uint8_t> mask(image.values.size(), 0);
     for (std::size_t c = 0; c < mask.size(); ++c) mask[c] = image.values[c] >= 0.5 * image.typeMax;

@@ -92,10 +92,9 @@ std::optional<std::string> statsFault(const StatsRow& row, int year, std::size_t
   if (row.alive < 0 || row.born < 0 || row.died < 0 || row.planted < 0 ||
       row.diedAfterPlanting < 0 || row.removed < 0)
     return std::string("a negative count of plants");
-  for (double value :
-       {row.meanHeight_m, row.stemsPerHa, row.basalArea_m2PerHa, row.qmd_cm, row.dominantHeight_m,
-        row.sdi, row.volume_m3PerHa, row.coverFraction, row.densestHectareBasalArea_m2PerHa,
-        row.removedVolume_m3PerHa})
+  for (double value : {row.meanHeight_m, row.stemsPerHa, row.basalArea_m2PerHa, row.qmd_cm,
+                       row.dominantHeight_m, row.sdi, row.volume_m3PerHa, row.coverFraction,
+                       row.densestHectareBasalArea_m2PerHa, row.removedVolume_m3PerHa})
     if (!(std::isfinite(value) && value >= 0.0))
       return fmt::format("a measure of {} is not a number of at least 0", value);
   return std::nullopt;

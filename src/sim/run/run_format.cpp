@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
-#include <sstream>
 #include <optional>
+#include <sstream>
 #include <unordered_map>
 #include <variant>
 
@@ -107,7 +107,8 @@ void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow
   std::string text = std::string(kStatsHeader) + "\n";
   for (const StatsRow& r : rows)
     text += fmt::format(
-        "{},{},{},{},{},{:.3f},{:.1f},{:.4f},{:.2f},{:.2f},{:.1f},{:.2f},{:.4f},{:.4f},{},{},{},{:.3f}\n",
+        "{},{},{},{},{},{:.3f},{:.1f},{:.4f},{:.2f},{:.2f},{:.1f},{:.2f},{:.4f},{:.4f},{},{},{},{:."
+        "3f}\n",
         r.year, r.species == kAllSpecies ? std::string("all") : species[r.species].species.name,
         r.alive, r.born, r.died, r.meanHeight_m, r.stemsPerHa, r.basalArea_m2PerHa, r.qmd_cm,
         r.dominantHeight_m, r.sdi, r.volume_m3PerHa, r.coverFraction,
@@ -119,7 +120,8 @@ void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow
 }
 
 StatsFile readStatsCsv(const std::filesystem::path& file) {
-  using Column = std::variant<std::int32_t StatsRow::*, std::int64_t StatsRow::*, double StatsRow::*>;
+  using Column =
+      std::variant<std::int32_t StatsRow::*, std::int64_t StatsRow::*, double StatsRow::*>;
   struct Known {
     const char* name;
     Column column;
@@ -219,8 +221,8 @@ void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
     for (std::size_t i = c * kRowsPerChunk; i < end; ++i)
       fmt::format_to(std::back_inserter(text),
                      "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.4f},{:.3f},{}\n",
-                     p.id[i], species[p.species[i]].species.name, p.east_m[i],
-                     p.north_m[i], p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i],
+                     p.id[i], species[p.species[i]].species.name, p.east_m[i], p.north_m[i],
+                     p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i],
                      p.crownBase_m[i], p.dbh_m[i], p.vigor[i], p.variantSeed[i]);
   });
   AtomicFile out(file);

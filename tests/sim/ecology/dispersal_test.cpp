@@ -102,9 +102,8 @@ TEST(Dispersal, ASourceRegionAroundTheMapEqualsTheSurroundingForest) {
   const Grid grid{48, 24, 10.0, 10.0};
   SeedMap surrounded(grid, {&life}, {1.0, 0.0}), sourced(grid, {&life}, {1.0, 0.0});
   surrounded.setSurroundingSeeds(0, 2.0);
-  const int around = sourced.addSourceRegion([](glm::dvec2 p) {
-    return p.x < -5.0 || p.y < -5.0 || p.x >= 475.0 || p.y >= 235.0;
-  });
+  const int around = sourced.addSourceRegion(
+      [](glm::dvec2 p) { return p.x < -5.0 || p.y < -5.0 || p.x >= 475.0 || p.y >= 235.0; });
   sourced.addRegionSeeds(around, 0, 2.0);
   surrounded.disperse();
   sourced.disperse();
@@ -120,7 +119,7 @@ TEST(Dispersal, ASourceRegionAroundTheMapEqualsTheSurroundingForest) {
 TEST(Dispersal, SeedsFromASourceOffTheMapLandAtTheKernelsDistances) {
   LifeHistory life;
   life.dispersal = DispersalVector::Animal;
-  life.dispersalMean_m = 50.0;  // seed cells of 40 m
+  life.dispersalMean_m = 50.0;          // seed cells of 40 m
   const Grid grid{80, 20, 10.0, 10.0};  // 800 m x 200 m, its west edge at east = -5 m
   SeedMap seeds(grid, {&life}, {1.0, 0.0});
   const int forest = seeds.addSourceRegion([](glm::dvec2 p) { return p.x < -5.0; });

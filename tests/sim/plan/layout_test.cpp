@@ -86,7 +86,8 @@ TEST(Layout, ContourRowsOnAPlaneAreLevelAndEvenlySpaced) {
   for (auto& [row, trees] : rows) {
     std::sort(trees.begin(), trees.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x; });
     for (const glm::dvec2& t : trees) EXPECT_NEAR(t.y, trees.front().y, 1e-3);
-    for (std::size_t k = 1; k < trees.size(); ++k) EXPECT_NEAR(trees[k].x - trees[k - 1].x, 3.0, 1e-6);
+    for (std::size_t k = 1; k < trees.size(); ++k)
+      EXPECT_NEAR(trees[k].x - trees[k - 1].x, 3.0, 1e-6);
     if (previousNorth > -1e9) {
       EXPECT_NEAR(trees.front().y - previousNorth, 4.0, 2e-3);
     }

@@ -112,7 +112,9 @@ TEST_F(TwoSpeciesHectare, PlantedStockDiesInItsFirstYearWhereAConditionRulesItOu
     plan.planting.back().survivalCheck = check;
     std::vector<std::string> warnings;
     PlanYear done(2);
-    Management(plan, ecosystem, 3).plantAtStartOf(1, done, [&](const std::string& w) { warnings.push_back(w); });
+    Management(plan, ecosystem, 3).plantAtStartOf(1, done, [&](const std::string& w) {
+      warnings.push_back(w);
+    });
     ASSERT_EQ(done.planted[0], 2500);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("1250 of 2500 planted a stand where a condition rules a out"),

@@ -106,7 +106,8 @@ TEST(Region, AMaskMustHaveTheTerrainsSizeAndCanBeWidened) {
 }
 
 TEST(Region, ItsAreaCountsTheLandscapeCellsInside) {
-  const Terrain terrain = test::analyticTerrain(50, 40, 2.0, 2.0, [](double, double) { return 0.0; });
+  const Terrain terrain =
+      test::analyticTerrain(50, 40, 2.0, 2.0, [](double, double) { return 0.0; });
   const Region square(polygon({{-1, -1}, {19, -1}, {19, 19}, {-1, 19}}), terrain.grid);
   EXPECT_DOUBLE_EQ(square.areaOnLandscape_m2(terrain), 400.0);  // 10 x 10 cells of 4 m2
 }

@@ -44,7 +44,8 @@ TEST(RunFormat, ReadsATreesFileAndNumbersSpeciesInOrderOfAppearance) {
 TEST(RunFormat, AMalformedTreesFileNamesTheLine) {
   const auto file = test::freshDirectory("run_folder_bad") / "trees.csv";
   test::writeFile(
-      file, std::string(kHeader) + "1,pine,1,2,3,4,5,0.6,0.7,0.08,0.9,10\n2,pine,1,2,x,4,5,0.6,0.7,0.08,0.9,10\n");
+      file, std::string(kHeader) +
+                "1,pine,1,2,3,4,5,0.6,0.7,0.08,0.9,10\n2,pine,1,2,x,4,5,0.6,0.7,0.08,0.9,10\n");
   try {
     readTreesCsv(file);
     FAIL();
@@ -123,7 +124,8 @@ TEST_F(OneHectare, CsvFilesHaveTheDocumentedColumns) {
   ecosystem.plant(0, 12.0, 33.0, 40);
   const auto folder = test::freshDirectory("run_outputs");
   writeTreesCsv(folder / "trees.csv", ecosystem);
-  writeStatsCsv(folder / "stats.csv", statsOfYear(ecosystem, PlanYear(ecosystem.species().size())), ecosystem.species());
+  writeStatsCsv(folder / "stats.csv", statsOfYear(ecosystem, PlanYear(ecosystem.species().size())),
+                ecosystem.species());
   const std::string trees = test::readFile(folder / "trees.csv");
   EXPECT_EQ(trees.substr(0, trees.find('\n')),
             "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,"
@@ -160,12 +162,14 @@ TEST_F(OneHectare, TheStatsReaderReadsWhatTheWriterWrote) {
   EXPECT_NEAR(back.rows[0].basalArea_m2PerHa, rows[0].basalArea_m2PerHa, 1e-4);
   // An earlier version's file, without the plan's columns, reads with them as 0; a broken
   // one is refused at its line.
-  test::writeFile(folder / "old.csv",
-                  "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,"
-                  "qmd_cm,dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,"
-                  "densest_hectare_basal_area_m2_per_ha\n3,all,5,1,0,2.0,100,3.5,21,14,80,20,0.4,5\n");
+  test::writeFile(
+      folder / "old.csv",
+      "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,"
+      "qmd_cm,dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,"
+      "densest_hectare_basal_area_m2_per_ha\n3,all,5,1,0,2.0,100,3.5,21,14,80,20,0.4,5\n");
   EXPECT_EQ(readStatsCsv(folder / "old.csv").rows.at(0).planted, 0);
-  test::writeFile(folder / "bad.csv", test::readFile(folder / "old.csv") + "4,all,5,1,0,nan,100,3.5,21,14,80,20,0.4,5\n");
+  test::writeFile(folder / "bad.csv", test::readFile(folder / "old.csv") +
+                                          "4,all,5,1,0,nan,100,3.5,21,14,80,20,0.4,5\n");
   try {
     readStatsCsv(folder / "bad.csv");
     FAIL() << "a NaN was read";

@@ -92,12 +92,12 @@ TerrainRenderer::TerrainRenderer(const Terrain& terrain)
 }
 
 void TerrainRenderer::setOverlay(const std::string& name, const Field& values) {
-  const FieldStats range = statsOf(values);
+  const auto [lo, hi] = rampRange(name, "", statsOf(values));
   Image image(grid_.width, grid_.height);
   for (int y = 0; y < grid_.height; ++y)
     for (int x = 0; x < grid_.width; ++x) {
       const float v = values[grid_.index(x, y)];
-      const double t = range.max > range.min ? (v - range.min) / (range.max - range.min) : 0.5;
+      const double t = hi > lo ? (v - lo) / (hi - lo) : 0.5;
       // Outside the landscape (NaN) the ground shows grey.
       image.set(
           x, y,

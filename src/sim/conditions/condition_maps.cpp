@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "sim/geotiff.hpp"
 #include "sim/image_io.hpp"
+#include "sim/plan/plan_spec.hpp"
 #include "sim/run/run_format.hpp"
 
 namespace eco {
@@ -50,7 +51,15 @@ const std::vector<Stop>& rampFor(const std::string& field) {
       {0.0f, {0.85f, 0.82f, 0.75f}}, {0.5f, {0.62f, 0.75f, 0.35f}}, {1.0f, {0.05f, 0.35f, 0.12f}}};
   static const std::vector<Stop> canopy = {
       {0.0f, {0.93f, 0.9f, 0.8f}}, {0.3f, {0.6f, 0.78f, 0.4f}}, {1.0f, {0.02f, 0.25f, 0.1f}}};
+  // A plan's rules (sim/plan/management.hpp: 0 nothing, 1 seed source, 2 thinned, 3 planted,
+  // 4 kept open), one colour each at its code.
+  static const std::vector<Stop> plan = {{0.0f, {0.88f, 0.85f, 0.78f}},
+                                         {0.25f, {0.1f, 0.38f, 0.2f}},
+                                         {0.5f, {0.9f, 0.6f, 0.0f}},
+                                         {0.75f, {0.0f, 0.62f, 0.45f}},
+                                         {1.0f, {0.95f, 0.9f, 0.25f}}};
   if (field.starts_with("suitability")) return suitability;
+  if (field == "plan") return plan;
   if (field == "canopy_height") return canopy;
   if (field == "altitude") return altitude;
   if (field == "slope") return slope;
@@ -58,14 +67,6 @@ const std::vector<Stop>& rampFor(const std::string& field) {
   if (field == "moisture") return moisture;
   if (field == "windiness") return windiness;
   return sunniness;
-}
-
-// The range a map's colours span: fixed for bounded fields, the data's otherwise.
-std::pair<double, double> rampRange(const std::string& name, const std::string& unit,
-                                    FieldStats stats) {
-  if (unit == "0-1") return {0.0, 1.0};
-  if (name == "aspect") return {0.0, 360.0};
-  return {stats.min, stats.max};
 }
 
 // The map alone, one pixel per cell, so that its world file places it; cells outside the
@@ -87,28 +88,39 @@ void writeMapPng(const std::filesystem::path& file, const Field& values, const G
 }
 
 // The legend beside the map: the ramp from its low to its high end, with their values and
-// the unit.
+// the unit; for the plan, a swatch and the name of each rule.
 void writeLegendPng(const std::filesystem::path& file, const std::string& name,
                     const std::string& unit, std::pair<double, double> range) {
-  constexpr int kWidth = 256;
+  const bool plan = name == "plan";
+  const int kWidth = plan ? 480 : 256;
   const auto [lo, hi] = range;
   OIIO::ImageBuf image(OIIO::ImageSpec(kWidth, kLegendHeight, 3, OIIO::TypeDesc::UINT8));
   OIIO::ImageBufAlgo::fill(image, {0.12f, 0.12f, 0.12f});
-  for (int y = 4; y < 14; ++y)
-    for (int x = 4; x < kWidth - 4; ++x) {
-      glm::vec3 c = rampColor(name, static_cast<double>(x - 4) / (kWidth - 9));
-      float rgb[3] = {c.r, c.g, c.b};
-      image.setpixel(x, y, rgb);
-    }
   const float white[3] = {0.95f, 0.95f, 0.95f};
   // DejaVu Sans comes with Debian's fonts-dejavu-core (scripts/setup installs it); without
   // a font the legend keeps its bar and conditions.json holds the numbers.
   const char* font = "DejaVuSans";
-  OIIO::ImageBufAlgo::render_text(image, 4, 29, fmt::format("{:.4g}", lo), 13, font, white);
-  OIIO::ImageBufAlgo::render_text(
-      image, kWidth - 4, 29,
-      unit == "0-1" ? fmt::format("{:.4g}", hi) : fmt::format("{:.4g} {}", hi, unit), 13, font,
-      white, OIIO::ImageBufAlgo::TextAlignX::Right);
+  if (plan) {
+    const int codes = static_cast<int>(std::size(kPlanMapCodeNames));
+    for (int k = 0; k < codes; ++k) {
+      const glm::vec3 c = rampColor(name, static_cast<double>(k) / (codes - 1));
+      const int x0 = 4 + k * (kWidth / codes);
+      OIIO::ImageBufAlgo::render_box(image, x0, 4, x0 + 24, 14, {c.r, c.g, c.b}, true);
+      OIIO::ImageBufAlgo::render_text(image, x0, 29, kPlanMapCodeNames[k], 13, font, white);
+    }
+  } else {
+    for (int y = 4; y < 14; ++y)
+      for (int x = 4; x < kWidth - 4; ++x) {
+        glm::vec3 c = rampColor(name, static_cast<double>(x - 4) / (kWidth - 9));
+        float rgb[3] = {c.r, c.g, c.b};
+        image.setpixel(x, y, rgb);
+      }
+    OIIO::ImageBufAlgo::render_text(image, 4, 29, fmt::format("{:.4g}", lo), 13, font, white);
+    OIIO::ImageBufAlgo::render_text(
+        image, kWidth - 4, 29,
+        unit == "0-1" ? fmt::format("{:.4g}", hi) : fmt::format("{:.4g} {}", hi, unit), 13, font,
+        white, OIIO::ImageBufAlgo::TextAlignX::Right);
+  }
   image.geterror();  // a missing font is not an error worth failing the run for
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(kWidth) * kLegendHeight * 3);
   image.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, rgb.data());
@@ -116,6 +128,14 @@ void writeLegendPng(const std::filesystem::path& file, const std::string& name,
 }
 
 }  // namespace
+
+std::pair<double, double> rampRange(const std::string& field, const std::string& unit,
+                                    FieldStats stats) {
+  if (unit == "0-1" || field.starts_with("suitability")) return {0.0, 1.0};
+  if (field == "aspect") return {0.0, 360.0};
+  if (field == "plan") return {0.0, 4.0};
+  return {stats.min, stats.max};
+}
 
 glm::vec3 rampColor(const std::string& field, double t) {
   const std::vector<Stop>& stops = rampFor(field);

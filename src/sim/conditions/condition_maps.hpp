@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "sim/conditions/conditions.hpp"
 
@@ -14,9 +15,15 @@ namespace eco {
 
 // RGB of a field value on the field's colour ramp; t in [0, 1].
 glm::vec3 rampColor(const std::string& field, double t);
+// The values a map's ramp spans: fixed for bounded fields (aspect 0-360, unit "0-1", the
+// plan's codes 0-4, whose colours stand for its rules), the data's least and greatest
+// otherwise. Maps and the terrain overlay colour alike by it.
+std::pair<double, double> rampRange(const std::string& field, const std::string& unit,
+                                    FieldStats stats);
 
 // One map: <folder>/<name>.exr, .tif, .png with .pgw, and _legend.png. Names pick the colour ramp
-// (a condition's, "suitability_*" or "canopy_height"); unit "0-1" fixes the range to [0, 1].
+// (a condition's, "suitability_*", "canopy_height" or "plan"); unit "0-1" fixes the range to
+// [0, 1].
 FieldStats writeFieldMap(const std::filesystem::path& folder, const std::string& name,
                          const std::string& unit, const Field& values, const Grid& grid);
 

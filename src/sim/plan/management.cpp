@@ -177,23 +177,19 @@ void Management::thinAtEndOf(int year, PlanYear& done) {
 }
 
 Field Management::planMap() const {
-  const Terrain& terrain = ecosystem_.terrain();
-  const Grid& g = terrain.grid;
+  const Grid& g = ecosystem_.grid();
   Field map(g.cellCount(), 0.0f);
-  for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x) {
-      const glm::dvec2 p(g.eastOf(x), g.northOf(y));
-      float code = 0.0f;
-      for (const Region& r : seedSources_)
-        if (r.contains(p)) code = 1.0f;
-      for (const PlacedThinning& t : thinnings_)
-        if (t.region.contains(p)) code = 2.0f;
-      for (const PlacedPlanting& planting : plantings_)
-        if (planting.region.contains(p)) code = 3.0f;
-      for (const Region& r : exclusions_)
-        if (r.contains(p)) code = 4.0f;
-      map[g.index(x, y)] = code;
-    }
+  auto mark = [&](const Region& region, PlanMapCode code) {
+    for (int y = 0; y < g.height; ++y)
+      for (int x = 0; x < g.width; ++x)
+        if (region.contains({g.eastOf(x), g.northOf(y)}))
+          map[g.index(x, y)] = static_cast<float>(code);
+  };
+  // In the codes' order, so that the later wins where rules overlap.
+  for (const Region& r : seedSources_) mark(r, PlanMapCode::SeedSource);
+  for (const PlacedThinning& t : thinnings_) mark(t.region, PlanMapCode::Thinned);
+  for (const PlacedPlanting& p : plantings_) mark(p.region, PlanMapCode::Planted);
+  for (const Region& r : exclusions_) mark(r, PlanMapCode::KeptOpen);
   return map;
 }
 

@@ -42,8 +42,7 @@ class Management {
   // The thinnings of `year` (after it is stepped).
   void thinAtEndOf(int year, PlanYear& done);
 
-  // A map of the plan per cell: 0 nothing, 1 seed source, 2 thinned, 3 planted, 4 kept open
-  // (where rules overlap, the later of these).
+  // The plan's map: a PlanMapCode per cell.
   Field planMap() const;
 
  private:

@@ -99,6 +99,12 @@ struct Thinning {
   bool appliesIn(int year) const;
 };
 
+// The plan's map (maps/plan): per cell, the rule that applies there, the later of these
+// where rules overlap.
+enum class PlanMapCode { Nothing = 0, SeedSource = 1, Thinned = 2, Planted = 3, KeptOpen = 4 };
+inline constexpr const char* kPlanMapCodeNames[] = {"nothing", "seed source", "thinned", "planted",
+                                                    "kept open"};
+
 struct Plan {
   std::vector<Planting> planting;
   std::vector<SeedSource> seedSources;

@@ -55,4 +55,18 @@ TEST(ConditionMaps, RampsRunBetweenTheirEnds) {
   EXPECT_EQ(rampColor("slope", -5.0), rampColor("slope", 0.0));   // clamped
 }
 
+// The plan's codes keep their colours whatever codes a map holds: a map of only planted (3)
+// and kept-open (4) cells does not stretch them over the ramp.
+TEST(ConditionMaps, ThePlansCodesHaveFixedColours) {
+  EXPECT_EQ(rampRange("plan", "0-4", {3.0, 3.5, 4.0}), std::make_pair(0.0, 4.0));
+  EXPECT_EQ(rampRange("suitability_beech", "", {0.2, 0.5, 0.7}), std::make_pair(0.0, 1.0));
+  EXPECT_EQ(rampRange("altitude", "m", {200.0, 300.0, 400.0}), std::make_pair(200.0, 400.0));
+  const Grid grid{2, 1, 10.0, 10.0};
+  const auto dir = test::freshDirectory("condition_maps_plan");
+  writeFieldMap(dir, "plan", "0-4", {3.0f, 4.0f}, grid);
+  for (int code = 1; code <= 4; ++code)
+    EXPECT_NE(rampColor("plan", code / 4.0), rampColor("plan", (code - 1) / 4.0)) << code;
+  EXPECT_EQ(pngSize(dir / "plan_legend.png"), std::make_pair(480, 34));
+}
+
 }  // namespace eco

@@ -9,7 +9,9 @@
 #include "app/render_command.hpp"
 #include "app/scene_source.hpp"
 #include "core/atomic_file.hpp"
+#include "core/binary_io.hpp"
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "sim/image_io.hpp"
 #include "sim/run/charts.hpp"
 #include "sim/run/comparison.hpp"
@@ -47,6 +49,14 @@ const Charted kCharts[] = {
     {"removed_volume.png", "Stem volume removed by thinning, so far", "m³/ha",
      [](const StandYear& y) { return y.removedVolumeSoFar_m3PerHa; }},
 };
+
+// Which species files, with their contents, a scenario's trees are built from.
+std::uint64_t speciesFingerprint(const Scenario& scenario) {
+  std::uint64_t hash = fnv1a64("");
+  for (const ScenarioSpecies& s : scenario.species)
+    hash = fnv1a64(readFileBytes(s.file).value_or(s.file.string()), hash);
+  return hash;
+}
 
 // Each run by its scenario's name, or its folder's where two runs share a scenario name.
 std::vector<std::string> namesOf(const std::vector<RunFolder>& runs) {
@@ -107,25 +117,37 @@ void runCompare(const CompareArgs& args) {
       "compare: {} runs at years {}: {}/compare.csv, compare.md and {} charts\n", runs.size(),
       fmt::join(years, ", "), out.string(), std::size(kCharts));
   if (stillYears.empty()) return;
-  std::vector<SceneSource> sources;
-  for (const RunFolder& f : folders) {
-    std::cout << fmt::format("compare: building the trees of {}\n", f.dir.string()) << std::flush;
-    SceneSource& source = sources.emplace_back(openSceneSource(f.dir.string()));
-    source.buildLibrary();
-  }
-  for (int year : stillYears) {
-    std::vector<Image> stills;
-    std::vector<std::string> captions;
-    for (std::size_t i = 0; i < sources.size(); ++i) {
-      const Camera camera = cameraFrom(args.view, sources[i].terrain);
-      std::optional<Field> overlay;
-      if (!args.view.overlay.empty()) overlay = sources[i].overlay(args.view.overlay);
-      stills.push_back(
-          drawStill(sources[i], sources[i].forestOf(year, 0), camera, args.view, overlay));
-      captions.push_back(fmt::format("{}, year {}", names[i], year));
+  // One still per run and year; runs whose species are the same files share one tree
+  // library, built once (it is the slow and large part).
+  std::vector<std::vector<Image>> stills(stillYears.size());
+  std::unique_ptr<TreeLibrary> library;
+  std::uint64_t librarySpecies = 0;
+  for (std::size_t i = 0; i < folders.size(); ++i) {
+    SceneSource source = openSceneSource(folders[i].dir.string());
+    const std::uint64_t species = speciesFingerprint(source.scenario);
+    if (library && species == librarySpecies) {
+      source.library = std::move(library);
+    } else {
+      library.reset();
+      std::cout << fmt::format("compare: building the trees of {}\n", folders[i].dir.string())
+                << std::flush;
+      source.buildLibrary();
+      librarySpecies = species;
     }
-    const std::filesystem::path file = out / fmt::format("stills_year_{:04d}.png", year);
-    writeRgb8Image(file, sideBySide(stills, captions));
+    const Camera camera = cameraFrom(args.view, source.terrain);
+    std::optional<Field> overlay;
+    if (!args.view.overlay.empty()) overlay = source.overlay(args.view.overlay);
+    for (std::size_t k = 0; k < stillYears.size(); ++k)
+      stills[k].push_back(
+          drawStill(source, source.forestOf(stillYears[k], 0), camera, args.view, overlay));
+    library = std::move(source.library);
+  }
+  for (std::size_t k = 0; k < stillYears.size(); ++k) {
+    std::vector<std::string> captions;
+    for (const std::string& name : names)
+      captions.push_back(fmt::format("{}, year {}", name, stillYears[k]));
+    const std::filesystem::path file = out / fmt::format("stills_year_{:04d}.png", stillYears[k]);
+    writeRgb8Image(file, sideBySide(stills[k], captions));
     std::cout << fmt::format("compare: {}\n", file.string()) << std::flush;
   }
 }

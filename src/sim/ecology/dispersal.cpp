@@ -121,6 +121,11 @@ int SeedMap::addSourceRegion(const std::function<bool(glm::dvec2)>& covered) {
   return regions_++;
 }
 
+bool SeedMap::regionReachesTheMap(int region) const {
+  return std::any_of(layers_.begin(), layers_.end(),
+                     [&](const Layer& layer) { return !layer.regions[region].empty(); });
+}
+
 void SeedMap::addRegionSeeds(int region, int species, double seedsPerM2) {
   for (std::size_t l : layersOf_[species]) {
     Layer& layer = layers_[l];

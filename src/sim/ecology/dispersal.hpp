@@ -42,6 +42,8 @@ class SeedMap {
   // A forest of its own ground (a [[seed_source]], on or off the map): `covered` is sampled
   // once over every seed grid out to the kernels' reach beyond the map. Returns its number.
   int addSourceRegion(const std::function<bool(glm::dvec2)>& covered);
+  // Whether any of the region's ground lies within the kernels' reach of the map.
+  bool regionReachesTheMap(int region) const;
   // This year the region's forest sends this many seeds of a species per m2 of its ground.
   void addRegionSeeds(int region, int species, double seedsPerM2);
   // Spreads the sources by each species' kernel.

@@ -178,10 +178,13 @@ void Ecosystem::keepOpen(std::function<bool(glm::dvec2)> isOpen) {
   });
 }
 
-void Ecosystem::addSeedSource(const std::function<bool(glm::dvec2)>& covered, double cover,
+bool Ecosystem::addSeedSource(const std::function<bool(glm::dvec2)>& covered, double cover,
                               std::vector<double> shares) {
   ECO_ASSERT(shares.size() == species_.size(), "a share per species");
-  seedSources_.push_back({seeds_.addSourceRegion(covered), cover, std::move(shares)});
+  const int region = seeds_.addSourceRegion(covered);
+  if (!seeds_.regionReachesTheMap(region)) return false;
+  seedSources_.push_back({region, cover, std::move(shares)});
+  return true;
 }
 
 CrownShape Ecosystem::crownOf(std::size_t i) const {

@@ -90,7 +90,8 @@ class Ecosystem {
   // A forest on or around the map that sends seeds like the map's own trees: `covered`
   // says which map positions lie under it (it is sampled over the seed grids once), `cover`
   // is the share of its ground under crowns and `shares` each species' share of them.
-  void addSeedSource(const std::function<bool(glm::dvec2)>& covered, double cover,
+  // False (and nothing added) when it lies beyond the reach of every kernel.
+  bool addSeedSource(const std::function<bool(glm::dvec2)>& covered, double cover,
                      std::vector<double> shares);
 
   int year() const { return state_.year; }

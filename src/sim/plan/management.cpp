@@ -79,8 +79,11 @@ Management::Management(const Plan& plan, Ecosystem& ecosystem, std::uint64_t see
     std::vector<double> shares(species.size(), 0.0);
     const std::vector<int> indices = indicesOf(s.mix, species);
     for (std::size_t k = 0; k < indices.size(); ++k) shares[indices[k]] += s.mix[k].share;
-    ecosystem.addSeedSource([&region](glm::dvec2 p) { return region.contains(p); }, s.cover,
-                            std::move(shares));
+    if (!ecosystem.addSeedSource([&region](glm::dvec2 p) { return region.contains(p); }, s.cover,
+                                 std::move(shares)))
+      throw InputError(s.region.where,
+                       "the seed source lies farther from the map than its seeds fly (five "
+                       "kernel means): it would send none");
     seedSources_.push_back(std::move(region));
   }
 }

@@ -225,6 +225,27 @@ TEST_F(TwoSpeciesHectare, ThePlanMapShowsEachRuleWhereItApplies) {
   EXPECT_EQ(map[g.index(8, 0)], 0.0f);  // nothing
 }
 
+// A forest too far off to seed the map would be silently useless: it is refused.
+TEST_F(TwoSpeciesHectare, ASeedSourceBeyondTheKernelsReachIsAnError) {
+  Ecosystem ecosystem(terrain, fields, species, {});
+  Plan plan;
+  SeedSource far;
+  far.mix = {{"a", 1.0}};
+  far.region = square(-3000, 0, -2000, 100);  // 2 km west; "a" flies 20 m on average
+  far.region.where = {"s.toml", 12, "seed_source[0].polygon"};
+  plan.seedSources.push_back(far);
+  try {
+    Management m(plan, ecosystem, 3);
+    FAIL() << "a seed source out of reach was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 12);
+    EXPECT_NE(std::string(e.what()).find("farther from the map than its seeds fly"),
+              std::string::npos);
+  }
+  plan.seedSources[0].region = square(-60, 0, -6, 100);  // just west of the map
+  EXPECT_NO_THROW(Management(plan, ecosystem, 3));
+}
+
 TEST_F(TwoSpeciesHectare, PlanSpeciesMustBeTheScenarios) {
   Ecosystem ecosystem(terrain, fields, species, {});
   Plan plan;

@@ -98,8 +98,10 @@ Planting parsePlanting(TomlTable& table, const std::filesystem::path& folder) {
   p.where = table.has("species") ? table.where("species")
             : table.has("rows")  ? table.where("rows")
                                  : table.where("");
-  if (table.has("species") == table.has("rows"))
-    table.fail("species", "give species (a name or a table of shares) or rows, not both");
+  if (table.has("species") && table.has("rows"))
+    table.fail("rows", "give species (a name or a table of shares) or rows, not both");
+  if (!table.has("species") && !table.has("rows"))
+    table.fail("species", "say what is planted: species (a name or a table of shares) or rows");
   if (table.has("species")) {
     p.mix = parseMix(table, "species");
   } else {
@@ -120,8 +122,8 @@ Planting parsePlanting(TomlTable& table, const std::filesystem::path& folder) {
     p.minDistance_m = table.number("min_distance_m", 0.5 * p.spacing_m, {0.0, 1000.0});
     if (p.minDistance_m > kLargestMinDistanceShare * p.spacing_m)
       table.fail("min_distance_m",
-                 fmt::format("at most {:.2f} of spacing_m ({:.3g} m): closer packing cannot reach "
-                             "the density a {} m spacing asks for",
+                 fmt::format("at most {:.2f} of spacing_m ({:.3g} m): random trees that far "
+                             "apart cannot reach the density a {} m spacing asks for",
                              kLargestMinDistanceShare, kLargestMinDistanceShare * p.spacing_m,
                              p.spacing_m));
     if (table.has("row_spacing_m")) table.fail("row_spacing_m", "a random layout has no rows");

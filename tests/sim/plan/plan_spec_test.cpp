@@ -120,6 +120,8 @@ TEST(PlanSpec, BadRulesNameTheirLineAndKey) {
             std::string::npos);
   EXPECT_NE(errorOf("[[planting]]\nspecies = \"beech\"\nrows = [\"pine\"]\n").find("not both"),
             std::string::npos);
+  EXPECT_NE(errorOf("[[planting]]\nspacing_m = 2\n").find("say what is planted"),
+            std::string::npos);
   EXPECT_NE(errorOf("[[exclusion]]\nline = [[0, 0], [9, 9]]\n")
                 .find("plan.toml:2: exclusion[0].line: a line needs buffer_m > 0"),
             std::string::npos);

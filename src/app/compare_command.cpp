@@ -2,7 +2,6 @@
 
 #include <iostream>
 #include <memory>
-#include <set>
 
 #include <fmt/format.h>
 
@@ -37,15 +36,15 @@ struct Charted {
 
 const Charted kCharts[] = {
     {"basal_area.png", "Basal area (trees of at least 10 cm)", "m²/ha",
-     [](const StandYear& y) { return y.basalArea_m2PerHa; }},
+     [](const StandYear& y) { return y.stand.basalArea_m2PerHa; }},
     {"stems_per_ha.png", "Stems (at least 10 cm)", "stems/ha",
-     [](const StandYear& y) { return y.stemsPerHa; }},
+     [](const StandYear& y) { return y.stand.stemsPerHa; }},
     {"dominant_height.png", "Dominant height (100 tallest per ha)", "m",
-     [](const StandYear& y) { return y.dominantHeight_m; }},
+     [](const StandYear& y) { return y.stand.dominantHeight_m; }},
     {"canopy_cover.png", "Canopy cover", "% of the map",
-     [](const StandYear& y) { return 100.0 * y.coverFraction; }},
+     [](const StandYear& y) { return 100.0 * y.stand.coverFraction; }},
     {"volume.png", "Standing stem volume", "m³/ha",
-     [](const StandYear& y) { return y.volume_m3PerHa; }},
+     [](const StandYear& y) { return y.stand.volume_m3PerHa; }},
     {"removed_volume.png", "Stem volume removed by thinning, so far", "m³/ha",
      [](const StandYear& y) { return y.removedVolumeSoFar_m3PerHa; }},
 };

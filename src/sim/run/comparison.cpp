@@ -1,7 +1,6 @@
 #include "sim/run/comparison.hpp"
 
 #include <algorithm>
-#include <set>
 
 #include <fmt/format.h>
 
@@ -45,21 +44,12 @@ ComparedRun readComparedRun(const std::filesystem::path& dir, std::string name) 
   run.stats = readStatsCsv(file);
   std::map<int, StandYear> byYear;
   for (const StatsRow& r : run.stats.rows) {
-    StandYear& stand = byYear[r.year];
-    stand.year = r.year;
-    if (r.species != kAllSpecies) {
-      stand.basalAreaShare[run.stats.species[r.species]] = r.basalArea_m2PerHa;
-      continue;
-    }
-    stand.basalArea_m2PerHa = r.basalArea_m2PerHa;
-    stand.stemsPerHa = r.stemsPerHa;
-    stand.meanHeight_m = r.meanHeight_m;
-    stand.dominantHeight_m = r.dominantHeight_m;
-    stand.coverFraction = r.coverFraction;
-    stand.volume_m3PerHa = r.volume_m3PerHa;
-    stand.plants = r.alive;
-    stand.removedVolumeSoFar_m3PerHa = r.removedVolume_m3PerHa;  // this year's, summed below
-    stand.plantedSoFar = r.planted;
+    StandYear& y = byYear[r.year];
+    y.year = r.year;
+    if (r.species == kAllSpecies)
+      y.stand = r;
+    else
+      y.basalAreaShare[run.stats.species[r.species]] = r.basalArea_m2PerHa;
   }
   if (byYear.empty()) throw InputError({file.string(), 0, ""}, "no year in the file");
   double removed = 0.0;
@@ -68,14 +58,14 @@ ComparedRun readComparedRun(const std::filesystem::path& dir, std::string name) 
     const auto found = byYear.find(year);
     if (found == byYear.end())
       throw InputError({file.string(), 0, ""}, fmt::format("year {} is missing", year));
-    StandYear& stand = found->second;
-    removed += stand.removedVolumeSoFar_m3PerHa;
-    planted += stand.plantedSoFar;
-    stand.removedVolumeSoFar_m3PerHa = removed;
-    stand.plantedSoFar = planted;
-    for (auto& [species, share] : stand.basalAreaShare)
-      share = stand.basalArea_m2PerHa > 0.0 ? share / stand.basalArea_m2PerHa : 0.0;
-    run.years.push_back(stand);
+    StandYear& y = found->second;
+    removed += y.stand.removedVolume_m3PerHa;
+    planted += y.stand.planted;
+    y.removedVolumeSoFar_m3PerHa = removed;
+    y.plantedSoFar = planted;
+    for (auto& [species, share] : y.basalAreaShare)
+      share = y.stand.basalArea_m2PerHa > 0.0 ? share / y.stand.basalArea_m2PerHa : 0.0;
+    run.years.push_back(y);
   }
   return run;
 }
@@ -109,10 +99,11 @@ std::string comparisonCsv(const std::vector<ComparedRun>& runs, const std::vecto
   for (int year : years)
     for (const ComparedRun& run : runs) {
       const StandYear& y = run.at(year);
+      const StatsRow& r = y.stand;
       csv += fmt::format("{},{},{:.2f},{:.1f},{:.2f},{:.2f},{:.4f},{:.1f},{:.1f},{},{}", run.name,
-                         year, y.basalArea_m2PerHa, y.stemsPerHa, y.meanHeight_m,
-                         y.dominantHeight_m, y.coverFraction, y.volume_m3PerHa,
-                         y.removedVolumeSoFar_m3PerHa, y.plantedSoFar, y.plants);
+                         year, r.basalArea_m2PerHa, r.stemsPerHa, r.meanHeight_m,
+                         r.dominantHeight_m, r.coverFraction, r.volume_m3PerHa,
+                         y.removedVolumeSoFar_m3PerHa, y.plantedSoFar, r.alive);
       for (const std::string& s : species) csv += fmt::format(",{:.4f}", shareOf(y, s));
       csv += "\n";
     }
@@ -137,10 +128,11 @@ std::string comparisonMarkdown(const std::vector<ComparedRun>& runs,
     md += "\n";
     for (const ComparedRun& run : runs) {
       const StandYear& y = run.at(year);
+      const StatsRow& r = y.stand;
       md += fmt::format(
           "| {} | {:.1f} | {:.0f} | {:.1f} | {:.1f} | {:.0f} | {:.0f} | {:.0f} | {} |", run.name,
-          y.basalArea_m2PerHa, y.stemsPerHa, y.meanHeight_m, y.dominantHeight_m,
-          100.0 * y.coverFraction, y.volume_m3PerHa, y.removedVolumeSoFar_m3PerHa, y.plantedSoFar);
+          r.basalArea_m2PerHa, r.stemsPerHa, r.meanHeight_m, r.dominantHeight_m,
+          100.0 * r.coverFraction, r.volume_m3PerHa, y.removedVolumeSoFar_m3PerHa, y.plantedSoFar);
       for (const std::string& s : species) md += fmt::format(" {:.0f} |", 100.0 * shareOf(y, s));
       md += "\n";
     }

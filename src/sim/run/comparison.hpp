@@ -12,18 +12,13 @@
 
 namespace eco {
 
-// A run's whole stand in one year, with what its plan has done so far.
+// A run's whole stand in one year (its stats.csv row "all"), with what its plan has done so
+// far and each species' share of the basal area.
 struct StandYear {
   int year = 0;
-  double basalArea_m2PerHa = 0.0;  // trees of at least 10 cm dbh, as every measure here
-  double stemsPerHa = 0.0;
-  double meanHeight_m = 0.0;  // of every plant, seedlings included
-  double dominantHeight_m = 0.0;
-  double coverFraction = 0.0;
-  double volume_m3PerHa = 0.0;
+  StatsRow stand;                           // its measures count trees of at least 10 cm dbh
   double removedVolumeSoFar_m3PerHa = 0.0;  // removed by thinning up to this year
   std::int64_t plantedSoFar = 0;
-  std::int64_t plants = 0;
   std::map<std::string, double> basalAreaShare;  // per species, of the stand's basal area
 };
 

@@ -33,9 +33,9 @@ TEST(Comparison, ARunsYearsCarryItsMeasuresAndWhatItsPlanDidSoFar) {
   const ComparedRun run = readComparedRun(runWith("comparison_run", 40), "a");
   ASSERT_EQ(run.lastYear(), 40);
   const StandYear& y = run.at(30);
-  EXPECT_DOUBLE_EQ(y.basalArea_m2PerHa, 15.0);
-  EXPECT_DOUBLE_EQ(y.stemsPerHa, 300.0);
-  EXPECT_DOUBLE_EQ(y.dominantHeight_m, 30.0);
+  EXPECT_DOUBLE_EQ(y.stand.basalArea_m2PerHa, 15.0);
+  EXPECT_DOUBLE_EQ(y.stand.stemsPerHa, 300.0);
+  EXPECT_DOUBLE_EQ(y.stand.dominantHeight_m, 30.0);
   EXPECT_DOUBLE_EQ(y.removedVolumeSoFar_m3PerHa, 75.0);  // 30 years of 2.5
   EXPECT_EQ(y.plantedSoFar, 300);
   EXPECT_DOUBLE_EQ(y.basalAreaShare.at("beech"), 0.75);

@@ -8,12 +8,11 @@
 #include "app/render_command.hpp"
 #include "app/scene_source.hpp"
 #include "core/atomic_file.hpp"
-#include "core/binary_io.hpp"
 #include "core/error.hpp"
-#include "core/hash.hpp"
 #include "sim/image_io.hpp"
 #include "sim/run/charts.hpp"
 #include "sim/run/comparison.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace eco {
 namespace {
@@ -49,14 +48,6 @@ const Charted kCharts[] = {
      [](const StandYear& y) { return y.removedVolumeSoFar_m3PerHa; }},
 };
 
-// Which species files, with their contents, a scenario's trees are built from.
-std::uint64_t speciesFingerprint(const Scenario& scenario) {
-  std::uint64_t hash = fnv1a64("");
-  for (const ScenarioSpecies& s : scenario.species)
-    hash = fnv1a64(readFileBytes(s.file).value_or(s.file.string()), hash);
-  return hash;
-}
-
 // Each run by its scenario's name, or its folder's where two runs share a scenario name.
 std::vector<std::string> namesOf(const std::vector<RunFolder>& runs) {
   std::vector<std::string> names;
@@ -71,11 +62,7 @@ void runCompare(const CompareArgs& args) {
   if (args.runs.size() < 2)
     throw InputError({"compare", 0, ""}, "name at least two run folders to compare");
   std::vector<RunFolder> folders;
-  for (const std::string& run : args.runs) {
-    if (!std::filesystem::is_directory(run))
-      throw InputError({run, 0, ""}, "no such run folder (make one with `ecoforest run`)");
-    folders.push_back(openRunFolder(run));
-  }
+  for (const std::string& run : args.runs) folders.push_back(openRunArgument(run));
   const std::vector<std::string> names = namesOf(folders);
   std::vector<ComparedRun> runs;
   for (std::size_t i = 0; i < folders.size(); ++i)
@@ -122,8 +109,8 @@ void runCompare(const CompareArgs& args) {
   std::unique_ptr<TreeLibrary> library;
   std::uint64_t librarySpecies = 0;
   for (std::size_t i = 0; i < folders.size(); ++i) {
-    SceneSource source = openSceneSource(folders[i].dir.string());
-    const std::uint64_t species = speciesFingerprint(source.scenario);
+    SceneSource source = sceneSourceOf(folders[i]);
+    const std::uint64_t species = speciesFilesFingerprint(source.scenario);
     if (library && species == librarySpecies) {
       source.library = std::move(library);
     } else {

@@ -54,20 +54,29 @@ void requireOutputFolder(const std::filesystem::path& out) {
     throw InputError({out.string(), 0, "--out"}, "its folder does not exist");
 }
 
-SceneSource openRunSource(const std::string& run) {
+RunFolder openRunArgument(const std::string& run) {
   if (!std::filesystem::is_directory(run))
     throw InputError({run, 0, ""}, "no such run folder (make one with `ecoforest run`)");
-  return openSceneSource(run);
+  return openRunFolder(run);
+}
+
+SceneSource openRunSource(const std::string& run) {
+  return sceneSourceOf(openRunArgument(run));
+}
+
+SceneSource sceneSourceOf(RunFolder run) {
+  SceneSource source;
+  source.scenario = run.scenario;
+  source.run = std::move(run);
+  source.terrain = loadTerrain(source.scenario);
+  return source;
 }
 
 SceneSource openSceneSource(const std::string& runOrScenario) {
+  if (std::filesystem::is_directory(runOrScenario))
+    return sceneSourceOf(openRunFolder(runOrScenario));
   SceneSource source;
-  if (std::filesystem::is_directory(runOrScenario)) {
-    source.run = openRunFolder(runOrScenario);
-    source.scenario = source.run->scenario;
-  } else {
-    source.scenario = loadScenario(resolveScenario(runOrScenario));
-  }
+  source.scenario = loadScenario(resolveScenario(runOrScenario));
   source.terrain = loadTerrain(source.scenario);
   return source;
 }

@@ -38,9 +38,12 @@ struct SceneSource {
 // InputError at --out unless the folder the file (or frame folder) goes into exists.
 void requireOutputFolder(const std::filesystem::path& out);
 
-// The run folder of a run-only command (export, timelapse): an InputError when `run` is not
-// a folder, before it could be taken for a scenario name.
+// The run folder a run-only command names (export, timelapse, compare): an InputError when
+// `run` is not a folder, before it could be taken for a scenario name.
+RunFolder openRunArgument(const std::string& run);
 SceneSource openRunSource(const std::string& run);
+// An opened run folder's scene: its scenario and terrain.
+SceneSource sceneSourceOf(RunFolder run);
 
 // A directory is a run folder; anything else a scenario name or file (resolveScenario).
 // The tree library is left to buildLibrary(), so that bad input fails fast.

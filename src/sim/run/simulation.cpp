@@ -119,6 +119,10 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
 std::uint64_t scenarioFingerprint(const Scenario& scenario) {
   std::uint64_t hash = fnv1a64(fileBytes(scenario.file));
   if (scenario.terrain.heightmap) hash = fnv1a64(fileBytes(*scenario.terrain.heightmap), hash);
+  return speciesFilesFingerprint(scenario, hash);
+}
+
+std::uint64_t speciesFilesFingerprint(const Scenario& scenario, std::uint64_t hash) {
   for (const ScenarioSpecies& s : scenario.species) hash = fnv1a64(fileBytes(s.file), hash);
   return hash;
 }

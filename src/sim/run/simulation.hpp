@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/hash.hpp"
 #include "sim/conditions/conditions.hpp"
 #include "sim/ecology/ecosystem.hpp"
 #include "sim/run/run_format.hpp"
@@ -56,6 +57,8 @@ RunSummary runSimulation(const RunOptions& options);
 // A fingerprint of everything that defines a run's ecology: the scenario file, its
 // heightmap and its species files.
 std::uint64_t scenarioFingerprint(const Scenario& scenario);
+// The species files' part of it, continuing `hash`: what the trees are built from.
+std::uint64_t speciesFilesFingerprint(const Scenario& scenario, std::uint64_t hash = fnv1a64(""));
 
 // The scenario's species with their ecology and site suitability; errors name the scenario
 // line of the species entry at fault.

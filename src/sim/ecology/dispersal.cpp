@@ -78,12 +78,11 @@ SeedMap::SeedMap(const Grid& terrain, const std::vector<const LifeHistory*>& spe
   }
 }
 
-std::size_t SeedMap::cellOf(const Layer& layer, double east_m, double north_m) const {
-  const int x = std::clamp(static_cast<int>(std::floor((east_m - originEast_m_) / layer.cell_m)), 0,
-                           layer.width - 1);
-  const int y = std::clamp(static_cast<int>(std::floor((north_m - originNorth_m_) / layer.cell_m)),
-                           0, layer.height - 1);
-  return static_cast<std::size_t>(y) * layer.width + x;
+glm::ivec2 SeedMap::cellOf(const Layer& layer, double east_m, double north_m) const {
+  return {std::clamp(static_cast<int>(std::floor((east_m - originEast_m_) / layer.cell_m)), 0,
+                     layer.width - 1),
+          std::clamp(static_cast<int>(std::floor((north_m - originNorth_m_) / layer.cell_m)), 0,
+                     layer.height - 1)};
 }
 
 void SeedMap::clear() {
@@ -137,9 +136,8 @@ void SeedMap::addRegionSeeds(int region, int species, double seedsPerM2) {
 void SeedMap::addSeeds(int species, double east_m, double north_m, double seeds) {
   for (std::size_t l : layersOf_[species]) {
     Layer& layer = layers_[l];
-    const std::size_t cell = cellOf(layer, east_m, north_m);
-    layer.sources[sourceOf(layer, static_cast<int>(cell % layer.width),
-                           static_cast<int>(cell / layer.width))] += seeds * layer.share;
+    const glm::ivec2 cell = cellOf(layer, east_m, north_m);
+    layer.sources[sourceOf(layer, cell.x, cell.y)] += seeds * layer.share;
   }
 }
 
@@ -162,8 +160,11 @@ void SeedMap::disperse() {
 
 double SeedMap::density(int species, double east_m, double north_m) const {
   double seeds = 0.0;
-  for (std::size_t l : layersOf_[species])
-    seeds += layers_[l].density[cellOf(layers_[l], east_m, north_m)];
+  for (std::size_t l : layersOf_[species]) {
+    const Layer& layer = layers_[l];
+    const glm::ivec2 cell = cellOf(layer, east_m, north_m);
+    seeds += layer.density[static_cast<std::size_t>(cell.y) * layer.width + cell.x];
+  }
   return seeds;
 }
 

@@ -73,7 +73,8 @@ class SeedMap {
     std::vector<float> density;   // seeds per m2, width x height
     std::vector<std::vector<Covered>> regions;  // per source region, the cells it covers
   };
-  std::size_t cellOf(const Layer& layer, double east_m, double north_m) const;
+  // The layer's cell (x east, y north) holding a map position, clamped to the map's cells.
+  glm::ivec2 cellOf(const Layer& layer, double east_m, double north_m) const;
   std::size_t sourceOf(const Layer& layer, int x, int y) const {
     return static_cast<std::size_t>(y + layer.margin) * (layer.width + 2 * layer.margin) +
            static_cast<std::size_t>(x + layer.margin);

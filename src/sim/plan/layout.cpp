@@ -5,8 +5,6 @@
 #include <cmath>
 #include <unordered_map>
 
-#include <glm/common.hpp>
-
 #include "core/random.hpp"
 
 namespace eco {
@@ -190,8 +188,7 @@ std::vector<PlantingSpot> randomSpots(const Planting& planting, const Region& re
   const double area = region.areaOnLandscape_m2(terrain);
   const auto target =
       static_cast<std::size_t>(std::llround(area / (planting.spacing_m * planting.spacing_m)));
-  const MapBounds map = MapBounds::of(terrain.grid);
-  const MapBounds b{glm::max(region.bounds().min, map.min), glm::min(region.bounds().max, map.max)};
+  const MapBounds b = region.bounds();  // a planting's region lies within the map
   const double d = planting.minDistance_m;
   // A hash grid of cells of side d: a tree closer than d lies in one of the 3 x 3 around.
   const double cell = d > 0.0 ? d : 1.0;

@@ -31,7 +31,8 @@ class Region {
   Region(const RegionSpec& spec, const Grid& grid, bool mayLieOutside = false);
 
   bool contains(glm::dvec2 p) const;
-  // The part of the map it may hold (the map for a border: only its own contains() says).
+  // A box around what it holds: within the map, except for a seed source's shape or
+  // border, which may reach beyond it.
   MapBounds bounds() const { return bounds_; }
   // The area of its landscape cells (cell centres inside, outside no-data), m2: the area
   // stand measures of the region are per.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <memory>
-#include <numeric>
 
 #include <fmt/format.h>
 
@@ -141,8 +140,10 @@ void Management::thinAtEndOf(int year, PlanYear& done) {
     const Plants& p = ecosystem_.plants();
     std::vector<std::uint8_t> removed(p.size(), 0);
     std::vector<std::size_t> candidates;
-    double measure = 0.0;  // basal area (m2) or stems of the region's measured trees
+    // What a tree adds to the region's measure: a stem, or its basal area (m2).
     const bool byStems = t.rule->targetStemsPerHa.has_value();
+    auto share = [&](std::size_t i) { return byStems ? 1.0 : basalAreaOf(p.dbh_m[i]); };
+    double measure = 0.0;  // of the region's trees of at least 10 cm
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (!t.region.contains({p.east_m[i], p.north_m[i]})) continue;
       if (t.rule->method == ThinningMethod::RemoveSpecies) {
@@ -150,7 +151,7 @@ void Management::thinAtEndOf(int year, PlanYear& done) {
         continue;
       }
       if (p.dbh_m[i] < kMeasuredDbh_m) continue;
-      measure += byStems ? 1.0 : basalAreaOf(p.dbh_m[i]);
+      measure += share(i);
       if (t.thinned[p.species[i]]) candidates.push_back(i);
     }
     if (t.rule->method != ThinningMethod::RemoveSpecies && t.area_ha > 0.0) {
@@ -164,7 +165,7 @@ void Management::thinAtEndOf(int year, PlanYear& done) {
       for (std::size_t i : candidates) {
         if (measure <= target) break;
         removed[i] = 1;
-        measure -= byStems ? 1.0 : basalAreaOf(p.dbh_m[i]);
+        measure -= share(i);
       }
     }
     for (std::size_t i = 0; i < p.size(); ++i) {

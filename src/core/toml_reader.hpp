@@ -17,13 +17,9 @@
 
 #include "core/error.hpp"
 #include "core/polyline.hpp"
+#include "core/range.hpp"
 
 namespace eco {
-
-struct Range {
-  double min = -std::numeric_limits<double>::infinity();
-  double max = std::numeric_limits<double>::infinity();
-};
 
 struct TomlPoint {
   double x = 0.0, y = 0.0;

@@ -2,21 +2,20 @@
 
 #include <algorithm>
 
+#include "core/error.hpp"
 #include "core/names.hpp"
 #include "core/toml_reader.hpp"
 #include "model/lsystem/deriver.hpp"
 #include "model/lsystem/parser.hpp"
 #include "model/lsystem/turtle.hpp"
+#include "model/species_schema.hpp"
 
 namespace eco {
 namespace {
 
 LeafDistribution parseDistribution(TomlTable& table, std::string_view key) {
-  std::string name = table.string(key);
-  for (LeafDistribution d :
-       {LeafDistribution::Spiral, LeafDistribution::Stacked, LeafDistribution::Staggered,
-        LeafDistribution::Bunched, LeafDistribution::Coniferous})
-    if (name == toString(d)) return d;
+  const std::string name = table.string(key);
+  if (std::optional<LeafDistribution> d = leafDistributionNamed(name)) return *d;
   table.fail(key, "unknown leaf distribution '" + name +
                       "' (expected spiral, stacked, staggered, bunched or coniferous)");
 }
@@ -27,53 +26,50 @@ glm::vec3 parseColor(TomlTable& table, std::string_view key, glm::vec3 fallback)
   return glm::vec3(c[0], c[1], c[2]);
 }
 
-// The ranges are the paper's (section II.A for scalars, II.B for the auxiliary graphs).
+// The bounds are the paper's (model/species_schema.hpp).
 LocalGraphs parseGraphs(TomlTable& local) {
-  LocalGraphs g;
-  g.ksG = local.polyline("ks_g", {0.5, 1.0});
-  g.ksW = local.polyline("ks_w", {0.0, 2.0});
-  g.alphaG = local.polyline("alpha_g_deg", {0.0, 180.0});
-  g.alphaW = local.polyline("alpha_w", {0.0, 2.0});
-  g.alphaMG = local.polyline("alpha_m_g_deg", {-180.0, 180.0});
-  g.alphaMW = local.polyline("alpha_m_w", {0.0, 2.0});
-  g.maxLenG = local.polyline("max_length_g", {0.0, 10.0});
-  g.maxLenW = local.polyline("max_length_w", {0.0, 2.0});
-  g.klG = local.polyline("kl_g", {0.0, 10.0});
-  g.klW = local.polyline("kl_w", {0.0, 2.0});
-  g.minLenG = local.polyline("min_length_g", {0.0, 10.0});
-  g.minLenW = local.polyline("min_length_w", {0.0, 2.0});
+  LocalGraphs graphs;
+  for (const LocalGraphInfo& info : localGraphs())
+    graphOf(graphs, info.graph) = local.polyline(info.key, info.values);
   local.finish();
-  return g;
+  return graphs;
+}
+
+// One global parameter; required without a fallback.
+void parseGlobal(TomlTable& table, GlobalParameter parameter, Species& species,
+                 std::optional<double> fallback = {}) {
+  const GlobalParameterInfo& info = infoOf(parameter);
+  ECO_ASSERT(!(info.integer && fallback), info.key << ": integers here are required keys");
+  const double value = info.integer
+                           ? static_cast<double>(table.integer(info.key, {}, info.valid))
+                           : table.number(info.key, fallback, info.valid);
+  setValue(species, parameter, value);
 }
 
 // EcoMod's wind keys, shared by [strand] and [lsystem]; every one is optional.
-WindParams parseWind(TomlTable& table) {
-  WindParams p;
-  p.directed_wg = table.number("wind_directed_wg", p.directed_wg, {0.0, 10.0});
-  p.undirected_ws = table.number("wind_undirected_ws", p.undirected_ws, {0.0, 10.0});
-  auto w = table.numbers("wind_direction", 3,
-                         std::vector<double>{p.direction.x, p.direction.y, p.direction.z},
-                         Range{-1000.0, 1000.0});
-  p.direction = glm::dvec3(w[0], w[1], w[2]);
-  p.flexibility = table.number("flexibility_kf", p.flexibility, {0.0, 1.0});
-  return p;
+void parseWind(TomlTable& table, Species& species) {
+  const WindParams defaults;
+  parseGlobal(table, GlobalParameter::WindDirected, species, defaults.directed_wg);
+  parseGlobal(table, GlobalParameter::WindUndirected, species, defaults.undirected_ws);
+  auto w = table.numbers(
+      "wind_direction", 3,
+      std::vector<double>{defaults.direction.x, defaults.direction.y, defaults.direction.z},
+      Range{-1000.0, 1000.0});
+  species.wind.direction = glm::dvec3(w[0], w[1], w[2]);
+  parseGlobal(table, GlobalParameter::Flexibility, species, defaults.flexibility);
 }
 
-void parseStrand(TomlTable& root, StrandParams& p, WindParams& wind) {
+void parseStrand(TomlTable& root, Species& species) {
   std::optional<TomlTable> strand = root.table("strand");
   if (!strand) root.fail("strand", "missing required table [strand]");
-
-  // The paper's slider stops at 5000, yet its own pine has S = 6000: the slider bound is
-  // not a validity limit. 100000 keeps a typo from exhausting memory.
-  p.strands = static_cast<int>(strand->integer("strands", {}, {1, 100000}));
-  p.trunkLength_m = strand->number("trunk_length_m", {}, {0.0, 10.0});
-  p.kd = strand->number("kd", {}, {0.0, 0.05});
-  p.phyllotaxis_deg = strand->number("phyllotaxis_deg", {}, {0.0, 360.0});
-  p.kc = strand->number("kc", {}, {0.0, 1.0});
-  p.leafSize_m = strand->number("leaf_size_m", {}, {0.0, 0.3});
-  p.leafDensity = strand->number("leaf_density", {}, {0.0, 30.0});
+  for (GlobalParameter parameter :
+       {GlobalParameter::Strands, GlobalParameter::TrunkLength, GlobalParameter::Kd,
+        GlobalParameter::Phyllotaxis, GlobalParameter::Kc, GlobalParameter::LeafSize,
+        GlobalParameter::LeafDensity})
+    parseGlobal(*strand, parameter, species);
+  StrandParams& p = species.strand;
   p.leafDistribution = parseDistribution(*strand, "leaf_distribution");
-  wind = parseWind(*strand);
+  parseWind(*strand, species);
   p.lod = static_cast<int>(strand->integer("lod", 0, {0, 2}));
   std::optional<TomlTable> local = strand->table("local");
   if (!local) strand->fail("local", "missing required table [strand.local]");
@@ -83,7 +79,7 @@ void parseStrand(TomlTable& root, StrandParams& p, WindParams& wind) {
 
 // Also reads EcoMod's wind parameters, which bend L-system trees as they do strand trees.
 LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& speciesFile,
-                             WindParams& wind) {
+                             Species& species) {
   LSystemTree tree;
   tree.grammarFile = speciesFile.parent_path() / table.string("file");
   if (!std::filesystem::is_regular_file(tree.grammarFile))
@@ -92,7 +88,7 @@ LSystemTree parseLSystemTree(TomlTable& table, const std::filesystem::path& spec
   tree.iterations =
       static_cast<int>(table.integer("iterations", grammar->iterations, {1, kMaxIterations}));
   tree.unit_m = table.number("unit_m", grammar->turtle.unit_m, {1e-6, 1e6});
-  wind = parseWind(table);
+  parseWind(table, species);
   // A species must be a plant: its mature tree has to draw wood.
   DeriveOptions mature;
   mature.iterations = tree.iterations;
@@ -122,6 +118,16 @@ const char* toString(LeafDistribution distribution) {
   return "?";
 }
 
+std::optional<LeafDistribution> leafDistributionNamed(std::string_view name) {
+  for (LeafDistribution d : kLeafDistributions)
+    if (name == toString(d)) return d;
+  return std::nullopt;
+}
+
+const char* toString(LeafShape shape) {
+  return shape == LeafShape::NeedleTuft ? "needle_tuft" : "broadleaf";
+}
+
 bool Species::isCalled(std::string_view called) const {
   return sameNameIgnoringCase(name, called) ||
          std::any_of(commonNames.begin(), commonNames.end(), [&](const std::string& common) {
@@ -147,11 +153,11 @@ Species loadSpecies(const std::filesystem::path& file) {
     species.generator = TreeGenerator::LSystem;
     std::optional<TomlTable> table = root.table("lsystem");
     if (!table) root.fail("lsystem", "generator = \"lsystem\" needs a table [lsystem]");
-    species.lsystem = parseLSystemTree(*table, file, species.wind);
+    species.lsystem = parseLSystemTree(*table, file, species);
   } else if (generator != "strand") {
     root.fail("generator", "unknown generator '" + generator + "' (expected strand or lsystem)");
   } else {
-    parseStrand(root, species.strand, species.wind);
+    parseStrand(root, species);
   }
 
   if (std::optional<TomlTable> variation = root.table("variation")) {
@@ -165,10 +171,10 @@ Species loadSpecies(const std::filesystem::path& file) {
     Appearance& a = species.appearance;
     a.barkColor = parseColor(*look, "bark_color", a.barkColor);
     a.leafColor = parseColor(*look, "leaf_color", a.leafColor);
-    std::string shape = look->string("leaf_shape", "broadleaf");
-    if (shape == "broadleaf")
+    const std::string shape = look->string("leaf_shape", toString(LeafShape::Broadleaf));
+    if (shape == toString(LeafShape::Broadleaf))
       a.leafShape = LeafShape::Broadleaf;
-    else if (shape == "needle_tuft")
+    else if (shape == toString(LeafShape::NeedleTuft))
       a.leafShape = LeafShape::NeedleTuft;
     else
       look->fail("leaf_shape",

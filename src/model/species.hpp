@@ -20,9 +20,15 @@ namespace eco {
 
 enum class LeafDistribution { Spiral, Stacked, Staggered, Bunched, Coniferous };
 const char* toString(LeafDistribution distribution);
+// The distribution of that name in the species file ("spiral", ...), if there is one.
+std::optional<LeafDistribution> leafDistributionNamed(std::string_view name);
+inline constexpr LeafDistribution kLeafDistributions[] = {
+    LeafDistribution::Spiral, LeafDistribution::Stacked, LeafDistribution::Staggered,
+    LeafDistribution::Bunched, LeafDistribution::Coniferous};
 
 // What a leaf card shows; the coniferous distribution always uses single needles.
 enum class LeafShape { Broadleaf, NeedleTuft };
+const char* toString(LeafShape shape);  // as in the species file
 
 // The auxiliary graphs of eqs. (1)-(6), each a polyline over g or over w.
 struct LocalGraphs {

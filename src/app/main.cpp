@@ -8,6 +8,7 @@
 
 #include "app/compare_command.hpp"
 #include "app/conditions_command.hpp"
+#include "app/design_command.hpp"
 #include "app/export_command.hpp"
 #include "app/lsystem_command.hpp"
 #include "app/render_command.hpp"
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   eco::addTreeCommand(app);
   eco::addLSystemCommand(app);
+  eco::addDesignCommand(app);
   eco::addConditionsCommand(app);
   eco::addTerrainCommand(app);
   eco::addRunCommand(app);

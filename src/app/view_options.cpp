@@ -4,20 +4,24 @@
 
 namespace eco {
 
-void addFrameOptions(CLI::App& command, ViewOptions& o) {
+void addSizeOption(CLI::App& command, FrameSize& size) {
   command
       .add_option_function<std::string>(
           "--size",
-          [&o](const std::string& text) {
-            const std::optional<FrameSize> size = parseFrameSize(text);
-            if (!size)
+          [&size](const std::string& text) {
+            const std::optional<FrameSize> parsed = parseFrameSize(text);
+            if (!parsed)
               throw CLI::ValidationError(
                   "--size", "expected WIDTHxHEIGHT, each " + std::to_string(kMinFrameSide) + ".." +
                                 std::to_string(kMaxFrameSide) + ", got '" + text + "'");
-            o.size = *size;
+            size = *parsed;
           },
           "Frame size WIDTHxHEIGHT")
-      ->default_str(toString(o.size));
+      ->default_str(toString(size));
+}
+
+void addFrameOptions(CLI::App& command, ViewOptions& o) {
+  addSizeOption(command, o.size);
   command.add_option("--day", o.sun.dayOfYear, "Day of the year for the sun")
       ->check(CLI::Range(1.0, 366.0))
       ->capture_default_str();

@@ -31,6 +31,8 @@ struct ViewOptions {
   std::string overlay;            // a map to colour the terrain with
 };
 
+// --size WIDTHxHEIGHT alone (the designer's window).
+void addSizeOption(CLI::App& command, FrameSize& size);
 // --size, --day, --hour, --wind-from, --wind-wg, --wind-ws, --level, --no-impostors,
 // --no-shadows: what every command that draws frames takes.
 void addFrameOptions(CLI::App& command, ViewOptions& options);

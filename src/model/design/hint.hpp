@@ -24,6 +24,7 @@ struct HintInterval {
   double hi = std::numeric_limits<double>::infinity();
   bool withEnds = true;
 
+  bool operator==(const HintInterval&) const = default;
   bool contains(double order) const {
     return withEnds ? order >= lo && order <= hi : order > lo && order < hi;
   }

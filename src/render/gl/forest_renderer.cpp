@@ -69,45 +69,7 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
       bakeProgram_({{GL_VERTEX_SHADER, "tree.vert"}, {GL_FRAGMENT_SHADER, "tree.frag"}}, {"BAKE"}),
       impostorProgram_(
           {{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}}) {
-  // Every mesh into one vertex and one index buffer.
-  std::vector<PackedTreeVertex> vertices;
-  std::vector<std::uint32_t> indices;
-  const auto& types = library.types();
-  std::size_t vertexCount = 0, indexCount = 0;
-  for (const TreeType& type : types)
-    for (const WindMesh& mesh : type.meshes.lods)
-      for (const WindPart& part : mesh.parts)
-        vertexCount += part.vertices.size(), indexCount += part.indices.size();
-  vertices.reserve(vertexCount);
-  indices.reserve(indexCount);
-  ranges_.resize(types.size());
-  triangles_.resize(types.size());
-  for (std::size_t t = 0; t < types.size(); ++t)
-    for (int lod = 0; lod < kLodCount; ++lod) {
-      const WindMesh& mesh = types[t].meshes.lods[lod];
-      triangles_[t][lod] = mesh.triangleCount();
-      for (const WindPart& part : mesh.parts) {
-        ranges_[t][lod].push_back({part.material, static_cast<GLsizei>(part.indices.size()),
-                                   indices.size() * sizeof(std::uint32_t),
-                                   static_cast<GLint>(vertices.size())});
-        for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
-        indices.insert(indices.end(), part.indices.begin(), part.indices.end());
-      }
-    }
-  vertices_ = makeBuffer(std::span<const PackedTreeVertex>(vertices));
-  indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
-  GLuint id = 0;
-  glCreateBuffers(1, &id);
-  instances_ = GlName(GlKind::Buffer, id);
-
-  meshArray_ = makeVertexArray();
-  glVertexArrayVertexBuffer(meshArray_.id(), 0, vertices_.id(), 0, sizeof(PackedTreeVertex));
-  glVertexArrayElementBuffer(meshArray_.id(), indices_.id());
-  setTreeVertexLayout(meshArray_.id());
-  setInstanceLayout(meshArray_.id());
-
-  impostorArray_ = makeVertexArray();  // instance attributes only: one sprite per tree
-  setInstanceLayout(impostorArray_.id());
+  uploadMeshes();
 
   // Materials of each species, textures generated as the exporters do (in parallel: the
   // procedural textures take a moment each), then uploaded.
@@ -159,9 +121,57 @@ void ForestRenderer::drawRanges(const std::vector<DrawRange>& ranges, int specie
   }
 }
 
+void ForestRenderer::uploadMeshes() {
+  // Every mesh into one vertex and one index buffer.
+  std::vector<PackedTreeVertex> vertices;
+  std::vector<std::uint32_t> indices;
+  const auto& types = library_.types();
+  std::size_t vertexCount = 0, indexCount = 0;
+  for (const TreeType& type : types)
+    for (const WindMesh& mesh : type.meshes.lods)
+      for (const WindPart& part : mesh.parts)
+        vertexCount += part.vertices.size(), indexCount += part.indices.size();
+  vertices.reserve(vertexCount);
+  indices.reserve(indexCount);
+  ranges_.assign(types.size(), {});
+  triangles_.assign(types.size(), {});
+  for (std::size_t t = 0; t < types.size(); ++t)
+    for (int lod = 0; lod < kLodCount; ++lod) {
+      const WindMesh& mesh = types[t].meshes.lods[lod];
+      triangles_[t][lod] = mesh.triangleCount();
+      for (const WindPart& part : mesh.parts) {
+        ranges_[t][lod].push_back({part.material, static_cast<GLsizei>(part.indices.size()),
+                                   indices.size() * sizeof(std::uint32_t),
+                                   static_cast<GLint>(vertices.size())});
+        for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
+        indices.insert(indices.end(), part.indices.begin(), part.indices.end());
+      }
+    }
+  vertices_ = makeBuffer(std::span<const PackedTreeVertex>(vertices));
+  indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  instances_ = GlName(GlKind::Buffer, id);
+
+  meshArray_ = makeVertexArray();
+  glVertexArrayVertexBuffer(meshArray_.id(), 0, vertices_.id(), 0, sizeof(PackedTreeVertex));
+  glVertexArrayElementBuffer(meshArray_.id(), indices_.id());
+  setTreeVertexLayout(meshArray_.id());
+  setInstanceLayout(meshArray_.id());
+
+  impostorArray_ = makeVertexArray();  // instance attributes only: one sprite per tree
+  setInstanceLayout(impostorArray_.id());
+  instanceCapacity_ = 0;  // the instance buffer is new and empty
+  atlases_.resize(types.size());
+}
+
+void ForestRenderer::reloadMeshes(const FrameUniformBuffer& uniforms, bool bakeImpostors) {
+  uploadMeshes();
+  if (bakeImpostors) this->bakeImpostors(uniforms);
+}
+
 int ForestRenderer::impostorSource(int type) const {
-  const TreeType& t = library_.types()[type];
-  return library_.typeIndex(t.species, 0, t.ageClass);
+  return library_.types()[type].impostorSource;
 }
 
 Image ForestRenderer::impostorFrameImage(int type, glm::ivec2 frame) const {

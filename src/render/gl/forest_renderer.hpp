@@ -59,6 +59,10 @@ class ForestRenderer {
   ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
                  const FrameUniformBuffer& uniforms);
 
+  // Uploads the library's meshes again after its types changed (TreeLibrary::setType), the
+  // materials kept; impostors are baked again only when asked (they take longest).
+  void reloadMeshes(const FrameUniformBuffer& uniforms, bool bakeImpostors);
+
   // Culls, picks levels and fills the instance buffer for this camera.
   ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
                       const LodSettings& lod, const ShadowBox& shadows);
@@ -98,6 +102,7 @@ class ForestRenderer {
 
   void drawRanges(const std::vector<DrawRange>& ranges, int species, Bucket bucket,
                   const Program& program) const;
+  void uploadMeshes();
   void bakeImpostors(const FrameUniformBuffer& uniforms);
   void bindMaterial(const Program& program, int species, MaterialKind kind) const;
 

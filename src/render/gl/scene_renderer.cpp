@@ -31,6 +31,10 @@ SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
   if (library) forest_ = std::make_unique<ForestRenderer>(*library, impostors, uniforms_);
 }
 
+void SceneRenderer::reloadTrees(bool bakeImpostors) {
+  if (forest_) forest_->reloadMeshes(uniforms_, bakeImpostors);
+}
+
 void SceneRenderer::renderShadowMap(const RenderOptions& options, const FrameUniforms& u,
                                     bool forestCasts) {
   if (shadowSize_ != options.shadowMapSize) {

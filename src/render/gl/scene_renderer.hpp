@@ -31,6 +31,9 @@ class SceneRenderer {
   FrameStats render(const Forest* forest, const Camera& camera, const RenderOptions& options,
                     const RenderTarget& target);
 
+  // The library's meshes changed (ForestRenderer::reloadMeshes).
+  void reloadTrees(bool bakeImpostors);
+
   TerrainRenderer& terrain() { return terrain_; }
   const Terrain& terrainData() const { return terrainData_; }
   ForestRenderer* forest() { return forest_.get(); }

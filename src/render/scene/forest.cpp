@@ -38,6 +38,19 @@ void Forest::append(const Forest& from, std::size_t i) {
   blendWeight.push_back(from.blendWeight[i]);
 }
 
+void Forest::addAsBuilt(int typeIndex, glm::vec3 base) {
+  type.push_back(typeIndex);
+  position.push_back(base);
+  yaw.push_back(0.0f);
+  scaleY.push_back(1.0f);
+  scaleXZ.push_back(1.0f);
+  tint.push_back(glm::vec3(1.0f));
+  phase.push_back(0.0f);
+  presence.push_back(1.0f);
+  blendType.push_back(-1);
+  blendWeight.push_back(0.0f);
+}
+
 void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
                  float crownRadius_m, float vigor, std::uint64_t individual) {
   const TreeType& t = library.types()[typeIndex];

@@ -33,6 +33,8 @@ struct Forest {
   void reserve(std::size_t n);
   // Appends tree i of `from`, every array alike (a subset of a forest: species shown).
   void append(const Forest& from, std::size_t i);
+  // One tree exactly as its type was built: not turned, scaled or tinted (the designer).
+  void addAsBuilt(int typeIndex, glm::vec3 base);
   // One plant, drawn by `typeIndex` at its height and crown radius.
   void add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
            float crownRadius_m, float vigor, std::uint64_t individual);

@@ -60,12 +60,8 @@ TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySetti
     TreeType& type = types_[i];
     const Species& s = species_[type.species];
     type.meshes = buildWindLods(s, type.seed, type.age);
-    const SkeletonMeasures measures =
-        measure(buildTree(s, windBuildOptions(s, type.seed, type.age, {}, 0.0)));
-    // An L-system may draw nothing in its first steps: such a type is empty, not a /0.
-    type.height_m = std::max(static_cast<float>(measures.height_m), 1e-3f);
-    type.crownRadius_m = static_cast<float>(measures.crownRadius_m);
-    type.bounds = boundingSphere(type.meshes);
+    type.impostorSource = typeIndex(type.species, 0, type.ageClass);
+    measureType(type, measure(buildTree(s, windBuildOptions(s, type.seed, type.age, {}, 0.0))));
   });
   const int classes = static_cast<int>(settings.ageClasses.size());
   for (int s = 0; s < static_cast<int>(species.size()); ++s) {
@@ -77,7 +73,38 @@ TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySetti
   }
 }
 
+void measureType(TreeType& type, const SkeletonMeasures& rest) {
+  // An L-system may draw nothing in its first steps: such a type is empty, not a /0.
+  type.height_m = std::max(static_cast<float>(rest.height_m), 1e-3f);
+  type.crownRadius_m = static_cast<float>(rest.crownRadius_m);
+  type.bounds = boundingSphere(type.meshes);
+}
+
+TreeLibrary::TreeLibrary(std::vector<Species> species, std::vector<TreeType> types)
+    : species_(std::move(species)), grid_(false) {
+  for (std::size_t t = 0; t < types.size(); ++t) setType(static_cast<int>(t), std::move(types[t]));
+  for (std::size_t s = 0; s < species_.size(); ++s) {
+    float tallest = 1e-3f;
+    for (const TreeType& type : types_)
+      if (type.species == static_cast<int>(s)) tallest = std::max(tallest, type.height_m);
+    maxHeight_m_.push_back(tallest);
+    seedlingHeight_m_.push_back(static_cast<float>(LifeHistory{}.seedlingHeight_m));
+  }
+}
+
+void TreeLibrary::setType(int index, TreeType type) {
+  ECO_ASSERT(!grid_ && index >= 0 && index <= static_cast<int>(types_.size()) &&
+                 type.species >= 0 && type.species < static_cast<int>(species_.size()),
+             "type " << index << " of species " << type.species);
+  type.impostorSource = index;
+  if (index == static_cast<int>(types_.size()))
+    types_.push_back(std::move(type));
+  else
+    types_[index] = std::move(type);
+}
+
 int TreeLibrary::typeIndex(int species, int variant, int ageClass) const {
+  ECO_ASSERT(grid_, "typeIndex of a library of given types");
   const int classes = static_cast<int>(settings_.ageClasses.size());
   return (species * settings_.variants + variant) * classes + ageClass;
 }

@@ -44,11 +44,21 @@ struct TreeType {
   float crownRadius_m = 0.0f;
   glm::vec4 bounds{0.0f};  // centre (tree frame) and radius of a sphere around every LOD
   WindLods meshes;
+  // The type whose impostor frames this one shows (ForestRenderer bakes that type's only).
+  int impostorSource = 0;
 };
+
+// Height, crown and bounds of a type from its rest skeleton's measures and its meshes.
+void measureType(TreeType& type, const SkeletonMeasures& rest);
 
 class TreeLibrary {
  public:
   TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySettings& settings);
+  // Types the caller built, each its own impostor source (the designer's preview, whose
+  // trees are not a grid of variants and ages): typeIndex(), typeFor() and blendFor() are
+  // for the grid above and must not be called. setType() replaces one as the user edits.
+  TreeLibrary(std::vector<Species> species, std::vector<TreeType> types);
+  void setType(int index, TreeType type);
 
   const std::vector<Species>& species() const { return species_; }
   // The largest height a species reaches (its growth curve's maximum, or its mature tree).
@@ -82,6 +92,7 @@ class TreeLibrary {
   std::vector<Species> species_;
   std::vector<float> maxHeight_m_, seedlingHeight_m_;
   LibrarySettings settings_;
+  bool grid_ = true;  // types are species x variants x age classes
   std::vector<TreeType> types_;
 };
 

@@ -29,7 +29,9 @@ TreeBuildOptions windBuildOptions(const Species& species, std::uint64_t seed, do
   return options;
 }
 
-WindLods buildWindLods(const Species& species, std::uint64_t seed, double age) {
+std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed, double age,
+                                      std::span<const SkeletonMesher> meshers, int* windless,
+                                      TreeSkeleton* rest, bool windBases) {
   const double quarter = 0.5 * std::numbers::pi;
   const std::array<TreeWind, 5> winds{TreeWind{},                       // rest
                                       TreeWind{kSwayBasis_ws, {0, 0}},  // t = pi / 2
@@ -38,25 +40,28 @@ WindLods buildWindLods(const Species& species, std::uint64_t seed, double age) {
                                       TreeWind{0.0, {0, kBendBasis_wg}}};
   const std::array<double, 5> times{0.0, quarter, 0.0, 0.0, 0.0};
 
-  WindLods result;
-  std::array<std::array<TreeMesh, kLodCount>, 5> meshes;
+  std::vector<WindMesh> result(meshers.size());
+  std::array<std::vector<TreeMesh>, 5> meshes;
   TreeSkeleton skeleton;
-  for (std::size_t w = 0; w < winds.size(); ++w) {
+  const std::size_t poses = windBases ? winds.size() : 1;
+  for (std::size_t w = 0; w < poses; ++w) {
     buildTreeInto(species, windBuildOptions(species, seed, age, winds[w], times[w]), skeleton);
-    for (int lod = 0; lod < kLodCount; ++lod) buildLodInto(skeleton, species, lod, meshes[w][lod]);
+    meshes[w].resize(meshers.size());
+    for (std::size_t m = 0; m < meshers.size(); ++m) meshers[m](skeleton, meshes[w][m]);
+    if (w == 0 && rest) *rest = skeleton;
   }
-  for (int lod = 0; lod < kLodCount; ++lod) {
-    const TreeMesh& rest = meshes[0][lod];
-    bool sameTopology = true;
-    for (std::size_t w = 1; w < winds.size(); ++w) {
-      const TreeMesh& other = meshes[w][lod];
+  for (std::size_t m = 0; m < meshers.size(); ++m) {
+    const TreeMesh& rest = meshes[0][m];
+    bool sameTopology = windBases;
+    for (std::size_t w = 1; w < poses; ++w) {
+      const TreeMesh& other = meshes[w][m];
       sameTopology = sameTopology && other.parts.size() == rest.parts.size();
       for (std::size_t p = 0; sameTopology && p < rest.parts.size(); ++p)
         sameTopology = other.parts[p].positions.size() == rest.parts[p].positions.size() &&
                        other.parts[p].material == rest.parts[p].material;
     }
-    if (!sameTopology) ++result.windless;
-    WindMesh& out = result.lods[lod];
+    if (!sameTopology && windBases && windless) ++*windless;
+    WindMesh& out = result[m];
     for (std::size_t p = 0; p < rest.parts.size(); ++p) {
       const MeshPart& part = rest.parts[p];
       WindPart& gpu = out.parts.emplace_back();
@@ -69,7 +74,7 @@ WindLods buildWindLods(const Species& species, std::uint64_t seed, double age) {
         vertex.normal = part.normals[v];
         vertex.uv = part.uvs[v];
         auto offset = [&](std::size_t w) {
-          return sameTopology ? meshes[w][lod].parts[p].positions[v] - part.positions[v]
+          return sameTopology ? meshes[w][m].parts[p].positions[v] - part.positions[v]
                               : glm::vec3(0.0f);
         };
         vertex.swaySin = offset(1);
@@ -79,6 +84,18 @@ WindLods buildWindLods(const Species& species, std::uint64_t seed, double age) {
       }
     }
   }
+  return result;
+}
+
+WindLods buildWindLods(const Species& species, std::uint64_t seed, double age) {
+  std::array<SkeletonMesher, kLodCount> levels;
+  for (int lod = 0; lod < kLodCount; ++lod)
+    levels[lod] = [&species, lod](const TreeSkeleton& skeleton, TreeMesh& mesh) {
+      buildLodInto(skeleton, species, lod, mesh);
+    };
+  WindLods result;
+  std::vector<WindMesh> meshes = buildWindMeshes(species, seed, age, levels, &result.windless);
+  for (int lod = 0; lod < kLodCount; ++lod) result.lods[lod] = std::move(meshes[lod]);
   return result;
 }
 

@@ -13,6 +13,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -69,5 +71,17 @@ struct WindLods {
   int windless = 0;
 };
 WindLods buildWindLods(const Species& species, std::uint64_t seed, double age);
+
+// The same for any meshes of the tree: each mesher turns a posed skeleton into a mesh, and
+// every mesh gets its wind bases from the same five skeletons (the designer's preview
+// shows one level and the visual hint's sleeves). `windless` counts meshes whose topology
+// changed with the wind (their bases stay zero); `rest` receives the rest pose's skeleton.
+// Without `windBases` only the rest pose is built (a fifth of the work) and the bases stay
+// zero: a tree that the scene's wind never moves.
+using SkeletonMesher = std::function<void(const TreeSkeleton&, TreeMesh&)>;
+std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed, double age,
+                                      std::span<const SkeletonMesher> meshers,
+                                      int* windless = nullptr, TreeSkeleton* rest = nullptr,
+                                      bool windBases = true);
 
 }  // namespace eco

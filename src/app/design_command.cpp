@@ -1,0 +1,263 @@
+#include "app/design_command.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include "app/data_paths.hpp"
+#include "app/design_panel.hpp"
+#include "app/design_view.hpp"
+#include "app/view_options.hpp"
+#include "core/atomic_file.hpp"
+#include "model/design/edit_script.hpp"
+#include "model/export/tree_export.hpp"
+#include "model/mesh/lod.hpp"
+#include "model/species_writer.hpp"
+#include "model/tree_generator.hpp"
+#include "render/gl/gl_context.hpp"
+#include "render/gl/offscreen_ui.hpp"
+#include "render/gl/window.hpp"
+#include "sim/image_io.hpp"
+
+namespace eco {
+namespace {
+
+struct DesignArgs {
+  std::string species;
+  std::vector<std::string> compare;
+  std::string apply;
+  std::string save, exportFile, screenshot;
+  FrameSize size{1600, 900};
+  std::uint64_t seed = 1;
+  double age = 1.0;
+  int level = 0;
+  bool noRow = false;
+  int frames = 0;  // > 0: the window closes after this many frames (automation, tests)
+};
+
+std::vector<Species> loadCompared(const std::vector<std::string>& names) {
+  std::vector<Species> compared;
+  for (const std::string& name : names) compared.push_back(loadSpecies(resolveSpecies(name)));
+  return compared;
+}
+
+std::vector<std::string> namesOf(const std::vector<Species>& species) {
+  std::vector<std::string> names;
+  for (const Species& s : species) names.push_back(s.name);
+  return names;
+}
+
+std::string orDefault(const std::string& path, const Species& species, const char* suffix) {
+  return path.empty() ? species.name + "-design" + suffix : path;
+}
+
+// The edited tree as `ecoforest tree` exports it: the preview's seed, age and mesh level.
+void exportDesigned(const Species& species, const PreviewSettings& preview,
+                    const std::filesystem::path& file) {
+  TreeBuildOptions options;
+  options.seed = preview.seed;
+  options.age = preview.age;
+  const int lod = preview.level < kLodCount ? preview.level : 0;
+  exportTree(buildLod(buildTree(species, options), species, lod), species, file);
+}
+
+// One complete scene, built on this thread (the headless mode, the window's first frame).
+PreviewScene completeScene(const Species& edited, const std::vector<Species>& compared,
+                           const PreviewSettings& settings, std::uint64_t version) {
+  PreviewScene scene = buildPreview(edited, settings);
+  scene.version = version;
+  addPreviewRow(scene, edited, compared);
+  return scene;
+}
+
+// Where the window test finds the control points: ECOFOREST_DESIGN_LAYOUT names a JSON file
+// that receives each graph's points in window pixels.
+void reportLayout(const DesignPanelState& state, FrameSize size) {
+  const char* file = std::getenv("ECOFOREST_DESIGN_LAYOUT");
+  if (!file || !*file) return;
+  nlohmann::ordered_json graphs;
+  for (const LocalGraphInfo& info : localGraphs()) {
+    nlohmann::json points = nlohmann::json::array();
+    for (glm::vec2 p : state.pointPixels[static_cast<int>(info.graph)]) points.push_back({p.x, p.y});
+    graphs[std::string(info.key)] = points;
+  }
+  AtomicFile out(file);
+  out.write(nlohmann::ordered_json{{"window", {size.width, size.height}}, {"graphs", graphs}}.dump(1));
+  out.commit();
+}
+
+void saveScreenshotOf(const RenderTarget& target, const std::string& file) {
+  target.bind();
+  writeRgb8Image(file, readPixels(target.width, target.height));
+}
+
+void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelState& state,
+                 const std::vector<Species>& compared) {
+  const EditScript script = loadEditScript(args.apply);
+  applyEditScript(script, session);
+  if (script.hint) {
+    const HintRequest& h = script.hint.value();
+    const int points = static_cast<int>(graphOf(session.species().strand.graphs, h.graph).points().size());
+    if (h.point && *h.point >= points)
+      throw InputError(h.where, "the graph has no point " + std::to_string(*h.point));
+    if (h.segment && *h.segment + 1 >= points)
+      throw InputError(h.where, "the graph has no segment " + std::to_string(*h.segment));
+    state.pinned = GraphFocus{h.graph, h.point.value_or(-1), h.segment.value_or(-1)};
+    state.preview.hint = hintOf(*state.pinned, session.species());
+  }
+  std::cout << session.species().name << ": " << script.edits.size() << " edits applied\n";
+  if (!args.save.empty()) {
+    saveSpecies(session.species(), args.save);
+    std::cout << "saved " << args.save << "\n";
+  }
+  if (!args.exportFile.empty()) {
+    exportDesigned(session.species(), state.preview, args.exportFile);
+    std::cout << "exported " << args.exportFile << "\n";
+  }
+  if (args.screenshot.empty()) return;
+
+  HeadlessGl gl;
+  DesignView view(session.species(), compared,
+                  completeScene(session.species(), compared, state.preview, session.version()));
+  OffscreenUi ui;
+  const RenderTarget target = RenderTarget::create(args.size.width, args.size.height);
+  const RenderOptions options = previewRenderOptions(session.species(), state.preview, false, 0.0);
+  // ImGui sizes auto-resizing panels over its first frames: draw a few, keep the last.
+  for (int frame = 0; frame < 3; ++frame) {
+    ui.beginFrame(args.size);
+    drawDesignPanels(session, state, view.shown().stats, namesOf(compared),
+                     {static_cast<float>(args.size.width), static_cast<float>(args.size.height)});
+    view.render(view.framingCamera(), options, state.row, target);
+    ui.drawOnto(target);
+  }
+  saveScreenshotOf(target, args.screenshot);
+  std::cout << "screenshot " << args.screenshot << "\n";
+}
+
+void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState& state,
+               const std::vector<Species>& compared) {
+  Window window("ecoforest design — " + session.species().name, args.size);
+  DesignView view(session.species(), compared,
+                  completeScene(session.species(), compared, state.preview, session.version()));
+  OrbitCamera camera = view.framingCamera();
+  PreviewBuilder builder(compared);
+  std::uint64_t requestedVersion = session.version();
+  PreviewSettings requested = state.preview;
+  const std::vector<std::string> comparedNames = namesOf(compared);
+  RenderTarget target;
+  double windTime = 0.0, lastTime = window.seconds();
+  for (int frame = 1; !window.shouldClose(); ++frame) {
+    window.beginFrame();
+    const double now = window.seconds();
+    const double dt = std::min(now - lastTime, 0.1);
+    lastTime = now;
+    const FrameSize size = window.framebufferSize();
+    const DesignPanelRequests asked =
+        drawDesignPanels(session, state, view.shown().stats, comparedNames,
+                         {static_cast<float>(size.width), static_cast<float>(size.height)});
+    state.preview.hint = asked.hint;
+
+    // The orbit camera: drag anywhere off the panels, wheel to zoom.
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!io.WantCaptureMouse) {
+      if (ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right))
+        camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
+      camera.zoom(io.MouseWheel);
+    }
+
+    // A change asks the worker for a new tree; the frame that asked waits for it up to a
+    // frame's time, so a tree that builds that fast (the beech) shows at once.
+    std::chrono::milliseconds wait{0};
+    if (session.version() != requestedVersion || !(state.preview == requested)) {
+      requestedVersion = session.version();
+      requested = state.preview;
+      builder.request(session.species(), requestedVersion, requested);
+      wait = std::chrono::milliseconds(12);
+    }
+    if (std::optional<PreviewScene> scene = builder.take(wait)) view.show(std::move(*scene));
+
+    if (state.windPlaying) windTime += 2.0 * dt;
+    if (size.width > 0 && size.height > 0) {
+      if (target.width != size.width || target.height != size.height)
+        target = RenderTarget::create(size.width, size.height);
+      view.render(camera,
+                  previewRenderOptions(session.species(), view.shown().settings, state.windPlaying,
+                                       windTime),
+                  state.row, target);
+    }
+    try {
+      if (asked.save) {
+        const std::string file = orDefault(args.save, session.species(), ".toml");
+        saveSpecies(session.species(), file);
+        state.status = "saved " + file;
+      }
+      if (asked.exportTree) {
+        const std::string file = orDefault(args.exportFile, session.species(), ".glb");
+        exportDesigned(session.species(), state.preview, file);
+        state.status = "exported " + file;
+      }
+      if (asked.screenshot) {
+        const std::string file = orDefault(args.screenshot, session.species(), ".png");
+        saveScreenshotOf(target, file);
+        state.status = "screenshot " + file;
+      }
+    } catch (const std::exception& error) {
+      state.status = error.what();  // the window stays: the user can choose another file
+    }
+    if (!state.status.empty() && (asked.save || asked.exportTree || asked.screenshot))
+      std::cerr << "ecoforest design: " << state.status << "\n";
+    if (frame == 3) reportLayout(state, size);
+    window.present(target);
+    if (args.frames > 0 && frame >= args.frames) break;
+  }
+}
+
+void runDesign(const DesignArgs& args) {
+  DesignSession session(loadSpecies(resolveSpecies(args.species)));
+  const std::vector<Species> compared = loadCompared(args.compare);
+  DesignPanelState state;
+  state.preview.seed = args.seed;
+  state.preview.age = args.age;
+  state.preview.level = args.level;
+  state.row = !args.noRow;
+  if (!args.apply.empty())
+    runHeadless(args, session, state, compared);
+  else
+    runWindow(args, session, state, compared);
+}
+
+}  // namespace
+
+void addDesignCommand(CLI::App& app) {
+  auto args = std::make_shared<DesignArgs>();
+  CLI::App* command = app.add_subcommand(
+      "design", "Design a species' tree: the EcoMod dialogs with an immediate 3D preview");
+  command->add_option("species", args->species, "Species name (beech, pine, ...) or a species .toml")
+      ->required();
+  command->add_option("--compare", args->compare, "Other species to shape it against, side by side");
+  command->add_option("--apply", args->apply,
+                      "Apply a file of edits without a window (docs/designer.md), then save, "
+                      "export and screenshot as asked");
+  command->add_option("--save", args->save, "Species .toml the edited species is saved to");
+  command->add_option("--export", args->exportFile, "Write the edited tree: .obj, .gltf, .glb, .pov or .wrl");
+  command->add_option("--screenshot", args->screenshot, "PNG of the designer (with --apply: made headless)");
+  addSizeOption(*command, args->size);
+  command->add_option("--seed", args->seed, "The individual shown")->capture_default_str();
+  command->add_option("--age", args->age, "Age shown, 0 seedling .. 1 mature")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  command->add_option("--level", args->level, "Level shown: 0-2 the LODs, 3 the impostor")
+      ->check(CLI::Range(0, kLevelCount - 1))
+      ->capture_default_str();
+  command->add_flag("--no-row", args->noRow, "Show the edited tree alone");
+  command->add_option("--frames", args->frames, "Close the window after this many frames (automation)");
+  command->callback([args] { runDesign(*args); });
+}
+
+}  // namespace eco

@@ -1,0 +1,53 @@
+#include "app/design_view.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace eco {
+
+DesignView::DesignView(const Species& edited, const std::vector<Species>& compared,
+                       PreviewScene first) {
+  ECO_ASSERT(first.complete, "the first preview must place every tree");
+  bases_ = first.bases;
+  ground_ = previewGround(bases_);
+  library_ = std::make_unique<TreeLibrary>(previewSpecies(edited, compared), std::move(first.types));
+  renderer_ = std::make_unique<SceneRenderer>(ground_, kPreviewLatitude_deg, library_.get());
+  first.types.clear();
+  shown_ = std::move(first);
+}
+
+void DesignView::show(PreviewScene scene) {
+  for (std::size_t t = 0; t < scene.types.size(); ++t)
+    library_->setType(static_cast<int>(t), std::move(scene.types[t]));
+  if (scene.complete) bases_ = scene.bases;
+  renderer_->reloadTrees(scene.settings.level == kLevelImpostor);
+  scene.types.clear();
+  shown_ = std::move(scene);
+}
+
+OrbitCamera DesignView::framingCamera() const {
+  const TreeType& tree = library_->types()[kPreviewEdited];
+  OrbitCamera camera;
+  camera.target = bases_[kPreviewEdited] + glm::vec3(0.0f, 0.5f * tree.height_m, 0.0f);
+  camera.distance_m = 1.5f * std::max(tree.height_m, 2.0f * tree.crownRadius_m) + 3.0f;
+  return camera;
+}
+
+FrameStats DesignView::render(const OrbitCamera& camera, const RenderOptions& options, bool row,
+                              const RenderTarget& target) {
+  const Forest forest = previewForest(bases_, shown_.settings.hint.has_value(), row);
+  return renderer_->render(&forest, camera.camera(), options, target);
+}
+
+RenderOptions previewRenderOptions(const Species& edited, const PreviewSettings& settings,
+                                   bool windPlaying, double windTime) {
+  RenderOptions options;
+  options.lod.forcedLevel = settings.level;
+  options.shadowRange_m = 60.0f;
+  options.wind.sway_ws = windPlaying ? edited.wind.undirected_ws : 0.0;
+  options.wind.time = windTime;
+  return options;
+}
+
+}  // namespace eco

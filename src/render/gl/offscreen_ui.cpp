@@ -1,0 +1,37 @@
+#include "render/gl/offscreen_ui.hpp"
+
+#include <epoxy/gl.h>
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+namespace eco {
+
+OffscreenUi::OffscreenUi() {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+OffscreenUi::~OffscreenUi() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui::DestroyContext();
+}
+
+void OffscreenUi::beginFrame(FrameSize size, glm::vec2 mouse) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(size.width), static_cast<float>(size.height));
+  io.DeltaTime = 1.0f / 30.0f;
+  io.MousePos = ImVec2(mouse.x, mouse.y);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui::NewFrame();
+}
+
+void OffscreenUi::drawOnto(const RenderTarget& target) {
+  ImGui::Render();
+  target.bind();
+  glDisable(GL_FRAMEBUFFER_SRGB);  // ImGui's colours are already sRGB
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+}  // namespace eco

@@ -12,7 +12,7 @@
 
 #include "app/data_paths.hpp"
 #include "app/design_panel.hpp"
-#include "app/design_view.hpp"
+#include "render/gl/design_view.hpp"
 #include "app/view_options.hpp"
 #include "core/atomic_file.hpp"
 #include "model/design/edit_script.hpp"
@@ -20,6 +20,7 @@
 #include "model/mesh/lod.hpp"
 #include "model/species_writer.hpp"
 #include "model/tree_generator.hpp"
+#include "render/gl/background_preview.hpp"
 #include "render/gl/gl_context.hpp"
 #include "render/gl/offscreen_ui.hpp"
 #include "render/gl/window.hpp"
@@ -127,7 +128,7 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
                   completeScene(session.species(), compared, state.preview, session.version()));
   OffscreenUi ui;
   const RenderTarget target = RenderTarget::create(args.size.width, args.size.height);
-  const RenderOptions options = previewRenderOptions(session.species(), state.preview, false, 0.0);
+  const RenderOptions options = previewRenderOptions(state.preview, 0.0, 0.0);
   // ImGui sizes auto-resizing panels over its first frames: draw a few, keep the last.
   for (int frame = 0; frame < 3; ++frame) {
     ui.beginFrame(args.size);
@@ -143,14 +144,19 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
 void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState& state,
                const std::vector<Species>& compared) {
   Window window("ecoforest design — " + session.species().name, args.size);
-  DesignView view(session.species(), compared,
-                  completeScene(session.species(), compared, state.preview, session.version()));
-  OrbitCamera camera = view.framingCamera();
+  // The trees are built on one thread and drawn on another (background_preview.hpp): this
+  // one only draws the panels and shows the newest picture.
+  BackgroundPreview preview(session.species(), compared,
+                            completeScene(session.species(), compared, state.preview,
+                                          session.version()));
+  OrbitCamera camera = preview.framingCamera();
   PreviewBuilder builder(compared);
   std::uint64_t requestedVersion = session.version();
   PreviewSettings requested = state.preview;
   const std::vector<std::string> comparedNames = namesOf(compared);
-  RenderTarget target;
+  RenderTarget shown;  // the newest picture, in this context
+  PreviewStats stats;
+  std::optional<PreviewFrame> lastAsked;
   double windTime = 0.0, lastTime = window.seconds();
   for (int frame = 1; !window.shouldClose(); ++frame) {
     window.beginFrame();
@@ -159,7 +165,7 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
     lastTime = now;
     const FrameSize size = window.framebufferSize();
     const DesignPanelRequests asked =
-        drawDesignPanels(session, state, view.shown().stats, comparedNames,
+        drawDesignPanels(session, state, stats, comparedNames,
                          {static_cast<float>(size.width), static_cast<float>(size.height)});
     state.preview.hint = asked.hint;
 
@@ -171,8 +177,8 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
       camera.zoom(io.MouseWheel);
     }
 
-    // A change asks the worker for a new tree; the frame that asked waits for it up to a
-    // frame's time, so a tree that builds that fast (the beech) shows at once.
+    // A change asks the builder for a new tree; the frame that asked waits for it up to
+    // 12 ms, so a tree that builds that fast (the beech) goes to the preview at once.
     std::chrono::milliseconds wait{0};
     if (session.version() != requestedVersion || !(state.preview == requested)) {
       requestedVersion = session.version();
@@ -180,17 +186,28 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
       builder.request(session.species(), requestedVersion, requested);
       wait = std::chrono::milliseconds(12);
     }
-    if (std::optional<PreviewScene> scene = builder.take(wait)) view.show(std::move(*scene));
-
+    std::optional<PreviewScene> scene = builder.take(wait);
     if (state.windPlaying) windTime += 2.0 * dt;
-    if (size.width > 0 && size.height > 0) {
-      if (target.width != size.width || target.height != size.height)
-        target = RenderTarget::create(size.width, size.height);
-      view.render(camera,
-                  previewRenderOptions(session.species(), view.shown().settings, state.windPlaying,
-                                       windTime),
-                  state.row, target);
+    PreviewFrame next{camera, state.row,
+                      state.windPlaying ? session.species().wind.undirected_ws : 0.0, windTime,
+                      size};
+    const bool moved = !lastAsked || lastAsked->camera.yaw_deg != next.camera.yaw_deg ||
+                       lastAsked->camera.pitch_deg != next.camera.pitch_deg ||
+                       lastAsked->camera.distance_m != next.camera.distance_m ||
+                       lastAsked->row != next.row || !(lastAsked->size == next.size) ||
+                       (next.sway_ws > 0.0 && lastAsked->windTime != next.windTime);
+    if ((scene || moved) && size.width > 0 && size.height > 0) {
+      preview.request(next, std::move(scene));
+      lastAsked = next;
     }
+    preview.rethrowFailure();
+    if (std::optional<RenderedPreview> picture = preview.take()) {
+      if (shown.width != picture->image.width || shown.height != picture->image.height)
+        shown = RenderTarget::create(picture->image.width, picture->image.height);
+      writePixels(shown, picture->image);
+      stats = picture->stats;
+    }
+
     try {
       if (asked.save) {
         const std::string file = orDefault(args.save, session.species(), ".toml");
@@ -202,18 +219,18 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
         exportDesigned(session.species(), state.preview, file);
         state.status = "exported " + file;
       }
-      if (asked.screenshot) {
+      if (asked.screenshot && shown.width > 0) {
         const std::string file = orDefault(args.screenshot, session.species(), ".png");
-        saveScreenshotOf(target, file);
+        saveScreenshotOf(shown, file);
         state.status = "screenshot " + file;
       }
     } catch (const std::exception& error) {
       state.status = error.what();  // the window stays: the user can choose another file
     }
-    if (!state.status.empty() && (asked.save || asked.exportTree || asked.screenshot))
+    if (asked.save || asked.exportTree || asked.screenshot)
       std::cerr << "ecoforest design: " << state.status << "\n";
     if (frame == 3) reportLayout(state, size);
-    window.present(target);
+    window.present(shown);
     if (args.frames > 0 && frame >= args.frames) break;
   }
 }

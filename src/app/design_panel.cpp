@@ -151,32 +151,36 @@ std::optional<GraphFocus> graphCanvas(DesignSession& session, DesignPanelState& 
 }
 
 // The combined value of a pair over g (across) and w (down), as evaluateLocal() gives it.
-void combinedHeatmap(const Species& species, const GraphPair& pair) {
+constexpr int kHeatColumns = 16, kHeatRows = 26;  // g = 0..15, w = 0..50 in steps of 2
+
+std::vector<double> combinedValues(const Species& species, const GraphPair& pair) {
+  std::vector<double> values;
+  for (int r = 0; r < kHeatRows; ++r)
+    for (int g = 0; g < kHeatColumns; ++g)
+      values.push_back(evaluateLocal(species.strand.graphs, g, 2 * r).*pair.value);
+  return values;
+}
+
+void combinedHeatmap(const GraphPair& pair, const std::vector<double>& values) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::Dummy({kHeatmapWidth, kCanvas.y});
-  const int columns = 16, rows = 26;  // g = 0..15, w = 0..50 in steps of 2
-  const float cw = kHeatmapWidth / columns, ch = kCanvas.y / rows;
-  double lo = 1e300, hi = -1e300;
-  for (int g = 0; g < columns; ++g)
-    for (int r = 0; r < rows; ++r) {
-      const double v = evaluateLocal(species.strand.graphs, g, 2 * r).*pair.value;
-      lo = std::min(lo, v), hi = std::max(hi, v);
-    }
-  for (int g = 0; g < columns; ++g)
-    for (int r = 0; r < rows; ++r) {
-      const double v = evaluateLocal(species.strand.graphs, g, 2 * r).*pair.value;
-      const double t = (v - pair.combined.min) / (pair.combined.max - pair.combined.min);
+  const float cw = kHeatmapWidth / kHeatColumns, ch = kCanvas.y / kHeatRows;
+  for (int r = 0; r < kHeatRows; ++r)
+    for (int g = 0; g < kHeatColumns; ++g) {
+      const double t = (values[r * kHeatColumns + g] - pair.combined.min) /
+                       (pair.combined.max - pair.combined.min);
       draw->AddRectFilled({origin.x + g * cw, origin.y + r * ch},
                           {origin.x + (g + 1) * cw, origin.y + (r + 1) * ch}, rampColor(t));
     }
   if (ImGui::IsItemHovered()) {
     const ImVec2 m = ImGui::GetIO().MousePos;
-    const int g = std::clamp(static_cast<int>((m.x - origin.x) / cw), 0, columns - 1);
-    const int w = 2 * std::clamp(static_cast<int>((m.y - origin.y) / ch), 0, rows - 1);
-    ImGui::SetTooltip("%s at g = %d, w = %d: %.4g\n(this tree: %.4g .. %.4g; scale %g .. %g)",
-                      pair.name.data(), g, w, evaluateLocal(species.strand.graphs, g, w).*pair.value,
-                      lo, hi, pair.combined.min, pair.combined.max);
+    const int g = std::clamp(static_cast<int>((m.x - origin.x) / cw), 0, kHeatColumns - 1);
+    const int r = std::clamp(static_cast<int>((m.y - origin.y) / ch), 0, kHeatRows - 1);
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    ImGui::SetTooltip("%s at g = %d, w = %d: %.4g\n(here %.4g .. %.4g; colours %g .. %g)",
+                      pair.name.data(), g, 2 * r, values[r * kHeatColumns + g], *lo, *hi,
+                      pair.combined.min, pair.combined.max);
   }
 }
 
@@ -293,6 +297,12 @@ DesignPanelRequests drawDesignPanels(DesignSession& session, DesignPanelState& s
   const float width = 2 * kCanvas.x + kHeatmapWidth + 4 * ImGui::GetStyle().ItemSpacing.x + 16;
   ImGui::SetNextWindowPos({display.x - width - 8, 8}, ImGuiCond_FirstUseEver);
   ImGui::Begin("local parameters", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  if (state.combinedVersion != session.version()) {
+    state.combined.clear();
+    for (const GraphPair& pair : graphPairs())
+      state.combined.push_back(combinedValues(session.species(), pair));
+    state.combinedVersion = session.version();
+  }
   std::optional<GraphFocus> over;
   for (const GraphPair& pair : graphPairs()) {
     ImGui::TextUnformatted(pair.name.data(), pair.name.data() + pair.name.size());
@@ -300,7 +310,7 @@ DesignPanelRequests drawDesignPanels(DesignSession& session, DesignPanelState& s
       if (std::optional<GraphFocus> o = graphCanvas(session, state, graph)) over = o;
       ImGui::SameLine();
     }
-    combinedHeatmap(session.species(), pair);
+    combinedHeatmap(pair, state.combined[&pair - graphPairs().data()]);
   }
   ImGui::End();
 

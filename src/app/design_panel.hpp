@@ -37,6 +37,9 @@ struct DesignPanelState {
   // layout report of the window test.
   std::vector<std::vector<glm::vec2>> pointPixels = std::vector<std::vector<glm::vec2>>(kLocalGraphCount);
   std::string status;  // the last save or export, or what went wrong
+  // The combined values of the six pairs over (g, w), computed once per species version.
+  std::uint64_t combinedVersion = ~std::uint64_t{0};
+  std::vector<std::vector<double>> combined;
   // The drag in progress.
   std::optional<GraphFocus> dragging;
   std::uint64_t gesture = 0;

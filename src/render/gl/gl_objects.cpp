@@ -1,5 +1,7 @@
 #include "render/gl/gl_objects.hpp"
 
+#include "core/error.hpp"
+
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -108,6 +110,16 @@ Image readPixels(int width, int height, GLenum attachment) {
     std::swap_ranges(image.rgba.begin() + y * row, image.rgba.begin() + (y + 1) * row,
                      image.rgba.begin() + (height - 1 - y) * row);
   return image;
+}
+
+void writePixels(const RenderTarget& target, const Image& image) {
+  ECO_ASSERT(image.width == target.width && image.height == target.height,
+             image.width << "x" << image.height << " into " << target.width << "x" << target.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+  for (int y = 0; y < image.height; ++y)  // OpenGL's row 0 is the bottom one
+    glTextureSubImage2D(target.color.id(), 0, 0, image.height - 1 - y, image.width, 1, GL_RGBA,
+                        GL_UNSIGNED_BYTE, image.rgba.data() + y * row);
 }
 
 void checkGl(const char* where) {

@@ -71,6 +71,9 @@ struct RenderTarget {
 // Reads the colour attachment of the bound framebuffer; row 0 of the image is the top row.
 Image readPixels(int width, int height, GLenum attachment = GL_COLOR_ATTACHMENT0);
 
+// The inverse: an image (row 0 at the top) of the target's size into its colour.
+void writePixels(const RenderTarget& target, const Image& image);
+
 // Throws std::runtime_error naming `where` if OpenGL reported an error.
 void checkGl(const char* where);
 

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/frames.hpp"
+#include "core/thread_priority.hpp"
 #include "render/scene/camera_controller.hpp"
 #include "render/scene/culling.hpp"
 #include "render/scene/impostor.hpp"
@@ -211,6 +212,7 @@ bool PreviewBuilder::busy() const {
 }
 
 void PreviewBuilder::work() {
+  lowerThisThreadsPriority();
   for (;;) {
     Request request;
     {

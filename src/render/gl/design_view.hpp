@@ -34,9 +34,10 @@ class DesignView {
 };
 
 // The sun, sky and wind of the preview: a June morning at 46 degrees north (the paper's
-// Slovenia), the species' own sway while the wind plays, the level the designer shows.
-RenderOptions previewRenderOptions(const Species& edited, const PreviewSettings& settings,
-                                   bool windPlaying, double windTime);
+// Slovenia), the edited species' own sway w_s (0 while the wind is paused) at `windTime`,
+// the level the designer shows.
+RenderOptions previewRenderOptions(const PreviewSettings& settings, double sway_ws,
+                                   double windTime);
 inline constexpr double kPreviewLatitude_deg = 46.0;
 
 }  // namespace eco

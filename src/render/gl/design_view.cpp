@@ -1,4 +1,4 @@
-#include "app/design_view.hpp"
+#include "render/gl/design_view.hpp"
 
 #include <algorithm>
 
@@ -40,12 +40,12 @@ FrameStats DesignView::render(const OrbitCamera& camera, const RenderOptions& op
   return renderer_->render(&forest, camera.camera(), options, target);
 }
 
-RenderOptions previewRenderOptions(const Species& edited, const PreviewSettings& settings,
-                                   bool windPlaying, double windTime) {
+RenderOptions previewRenderOptions(const PreviewSettings& settings, double sway_ws,
+                                   double windTime) {
   RenderOptions options;
   options.lod.forcedLevel = settings.level;
   options.shadowRange_m = 60.0f;
-  options.wind.sway_ws = windPlaying ? edited.wind.undirected_ws : 0.0;
+  options.wind.sway_ws = sway_ws;
   options.wind.time = windTime;
   return options;
 }

@@ -17,8 +17,10 @@ class OffscreenUi {
   OffscreenUi(const OffscreenUi&) = delete;
   OffscreenUi& operator=(const OffscreenUi&) = delete;
 
-  // Starts a frame of `size` with the pointer at `mouse` (outside: off the panels).
-  void beginFrame(FrameSize size, glm::vec2 mouse = {-1.0f, -1.0f});
+  // Starts a frame of `size` with the pointer at `mouse` (the default: off the panels) and
+  // its buttons as given: scripted input for tests.
+  void beginFrame(FrameSize size, glm::vec2 mouse = {-1.0f, -1.0f}, bool leftDown = false,
+                  bool rightDown = false);
   // Draws the frame's panels over what the target holds.
   void drawOnto(const RenderTarget& target);
 };

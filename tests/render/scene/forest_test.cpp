@@ -90,5 +90,19 @@ TEST(Forest, TheDemoPlantingIsDeterministicAndOnTheGround) {
   }
 }
 
+TEST(Forest, ATreeAsBuiltIsNeitherTurnedNorScaledNorTinted) {
+  Forest forest;
+  forest.addAsBuilt(2, {1.0f, 2.0f, 3.0f});
+  ASSERT_EQ(forest.size(), 1u);
+  EXPECT_EQ(forest.type[0], 2);
+  EXPECT_EQ(forest.position[0], glm::vec3(1.0f, 2.0f, 3.0f));
+  EXPECT_EQ(forest.yaw[0], 0.0f);
+  EXPECT_EQ(forest.scaleXZ[0], 1.0f);
+  EXPECT_EQ(forest.scaleY[0], 1.0f);
+  EXPECT_EQ(forest.tint[0], glm::vec3(1.0f));
+  EXPECT_EQ(forest.presence[0], 1.0f);
+  EXPECT_EQ(forest.blendType[0], -1);
+}
+
 }  // namespace
 }  // namespace eco

@@ -63,5 +63,26 @@ TEST(TreeLibrary, BlendsMoveSmoothlyFromOneAgeClassToTheNext) {
   EXPECT_GT(previous, 0.9f);  // the last step stops 5 % short of the mature class
 }
 
+TEST(TreeLibrary, GridTypesShareTheirAgeClassesImpostor) {
+  const TreeLibrary& library = test::smallLibrary();
+  for (std::size_t t = 0; t < library.types().size(); ++t) {
+    const TreeType& type = library.types()[t];
+    EXPECT_EQ(type.impostorSource, library.typeIndex(type.species, 0, type.ageClass));
+  }
+}
+
+TEST(TreeLibrary, GivenTypesAreEachTheirOwnAndCanBeReplaced) {
+  const TreeLibrary& grid = test::smallLibrary();
+  std::vector<TreeType> types = {grid.types()[grid.typeIndex(0, 0, 1)],
+                                 grid.types()[grid.typeIndex(1, 0, 0)]};
+  TreeLibrary library(grid.species(), types);
+  ASSERT_EQ(library.types().size(), 2u);
+  EXPECT_EQ(library.types()[1].impostorSource, 1);
+  EXPECT_EQ(library.maxHeight_m(0), types[0].height_m);  // the tallest of its types
+  library.setType(0, grid.types()[grid.typeIndex(0, 0, 0)]);
+  EXPECT_EQ(library.types()[0].height_m, grid.types()[grid.typeIndex(0, 0, 0)].height_m);
+  EXPECT_EQ(library.types()[0].impostorSource, 0);
+}
+
 }  // namespace
 }  // namespace eco

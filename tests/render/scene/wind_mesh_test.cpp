@@ -30,6 +30,35 @@ TEST(WindMesh, WithoutWindTheRestPoseIsTheModelsTree) {
   for (std::size_t i = 0; i < exact.size(); ++i) EXPECT_EQ(predicted[i], exact[i]);
 }
 
+TEST(WindMesh, AnyMeshersShareTheFivePosesAndTheRestPoseAloneHasNoBases) {
+  const Species maple = test::loadNamedSpecies("maple");
+  const WindLods lods = buildWindLods(maple, 3, 0.4);
+  const std::vector<SkeletonMesher> lod1 = {[&](const TreeSkeleton& skeleton, TreeMesh& mesh) {
+    buildLodInto(skeleton, maple, 1, mesh);
+  }};
+  TreeSkeleton rest;
+  const std::vector<WindMesh> withBases = buildWindMeshes(maple, 3, 0.4, lod1, nullptr, &rest);
+  const std::vector<WindMesh> restOnly = buildWindMeshes(maple, 3, 0.4, lod1, nullptr, nullptr, false);
+  ASSERT_EQ(withBases.size(), 1u);
+  EXPECT_EQ(rest.segments.size(), buildTree(maple, windBuildOptions(maple, 3, 0.4, {}, 0.0)).segments.size());
+  const WindPart& a = lods.lods[1].parts[0];
+  const WindPart& b = withBases[0].parts[0];
+  const WindPart& c = restOnly[0].parts[0];
+  ASSERT_EQ(a.vertices.size(), b.vertices.size());
+  ASSERT_EQ(a.vertices.size(), c.vertices.size());
+  bool anyBasis = false;
+  for (std::size_t v = 0; v < a.vertices.size(); ++v) {
+    EXPECT_EQ(a.vertices[v].position, b.vertices[v].position);
+    EXPECT_EQ(a.vertices[v].swaySin, b.vertices[v].swaySin);
+    EXPECT_EQ(a.vertices[v].bendEast, b.vertices[v].bendEast);
+    EXPECT_EQ(c.vertices[v].position, a.vertices[v].position);
+    EXPECT_EQ(c.vertices[v].bendEast, glm::vec3(0.0f));
+    EXPECT_EQ(c.vertices[v].swayCos, glm::vec3(0.0f));
+    anyBasis = anyBasis || glm::length(a.vertices[v].bendEast) > 0.0f;
+  }
+  EXPECT_TRUE(anyBasis);
+}
+
 // The linearised sway against the CPU model at several times: exact at t = 0 and pi / 2 by
 // construction; in between the error is second order in the branch angles, a few per cent
 // of the displacement for winds of this strength.

@@ -33,6 +33,7 @@ struct DesignArgs {
   std::string species;
   std::vector<std::string> compare;
   std::string apply;
+  std::string name;  // the saved species' new name
   std::string save, exportFile, screenshot;
   FrameSize size{1600, 900};
   std::uint64_t seed = 1;
@@ -112,6 +113,13 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
     state.pinned = GraphFocus{h.graph, h.point.value_or(-1), h.segment.value_or(-1)};
     state.preview.hint = hintOf(*state.pinned, session.species());
   }
+  if (!args.name.empty()) {
+    try {
+      session.apply(SetName{args.name});
+    } catch (const EditRefused& refused) {
+      throw InputError(SourceLocation("--name"), refused.what());
+    }
+  }
   std::cout << session.species().name << ": " << script.edits.size() << " edits applied\n";
   if (!args.save.empty()) {
     saveSpecies(session.species(), args.save);
@@ -159,14 +167,15 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
   std::optional<PreviewFrame> lastAsked;
   double windTime = 0.0, lastTime = window.seconds();
   for (int frame = 1; !window.shouldClose(); ++frame) {
-    window.beginFrame();
+    const ViewInput& input = window.beginFrame();
     const double now = window.seconds();
     const double dt = std::min(now - lastTime, 0.1);
     lastTime = now;
     const FrameSize size = window.framebufferSize();
-    const DesignPanelRequests asked =
+    DesignPanelRequests asked =
         drawDesignPanels(session, state, stats, comparedNames,
                          {static_cast<float>(size.width), static_cast<float>(size.height)});
+    if (!input.keyboardTaken) applyShortcuts(input.shortcuts, session, asked);
     state.preview.hint = asked.hint;
 
     // The orbit camera: drag anywhere off the panels, wheel to zoom.
@@ -261,6 +270,8 @@ void addDesignCommand(CLI::App& app) {
   command->add_option("--apply", args->apply,
                       "Apply a file of edits without a window (docs/designer.md), then save, "
                       "export and screenshot as asked");
+  command->add_option("--name", args->name,
+                      "With --apply: the saved species' name (a variety beside the original)");
   command->add_option("--save", args->save, "Species .toml the edited species is saved to");
   command->add_option("--export", args->exportFile, "Write the edited tree: .obj, .gltf, .glb, .pov or .wrl");
   command->add_option("--screenshot", args->screenshot, "PNG of the designer (with --apply: made headless)");

@@ -189,7 +189,20 @@ void globalsWindow(DesignSession& session, DesignPanelState& state, DesignPanelR
   const Species& s = session.species();
   ImGui::SetNextWindowPos({8, 8}, ImGuiCond_FirstUseEver);
   ImGui::Begin("global parameters", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::Text("%s%s%s", s.name.c_str(), s.latinName.empty() ? "" : "  ", s.latinName.c_str());
+  char name[65];
+  std::snprintf(name, sizeof name, "%s", s.name.c_str());
+  ImGui::PushItemWidth(190);
+  // The name is applied when the field is left, so each letter is not an undo step.
+  ImGui::InputText("name", name, sizeof name);
+  if (ImGui::IsItemDeactivatedAfterEdit()) {
+    try {
+      session.apply(SetName{name});
+    } catch (const EditRefused& refused) {
+      state.status = refused.what();
+    }
+  }
+  ImGui::PopItemWidth();
+  if (!s.latinName.empty()) ImGui::TextUnformatted(s.latinName.c_str());
   ImGui::PushItemWidth(190);
   for (const GlobalParameterInfo& info : globalParameters()) {
     const std::string label = fmt::format("{}##{}", info.symbol, info.key);
@@ -281,18 +294,20 @@ HintInterval hintOf(const GraphFocus& focus, const Species& species) {
   return wholeGraph(focus.graph);
 }
 
+void applyShortcuts(const std::vector<Shortcut>& shortcuts, DesignSession& session,
+                    DesignPanelRequests& requests) {
+  for (const Shortcut& s : shortcuts) {
+    if (s.letter == 'Z' && !s.shift) session.undo();
+    if ((s.letter == 'Z' && s.shift) || s.letter == 'Y') session.redo();
+    if (s.letter == 'S') requests.save = true;
+  }
+}
+
 DesignPanelRequests drawDesignPanels(DesignSession& session, DesignPanelState& state,
                                      const PreviewStats& stats, const std::vector<std::string>& compared,
                                      glm::vec2 display) {
   DesignPanelRequests requests;
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.KeyCtrl && !io.WantTextInput) {
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z)))
-      io.KeyShift ? session.redo() : session.undo();
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y))) session.redo();
-  }
   globalsWindow(session, state, requests, stats, compared);
-  if (io.KeyCtrl && !io.WantTextInput && ImGui::IsKeyPressed('S')) requests.save = true;
 
   const float width = 2 * kCanvas.x + kHeatmapWidth + 4 * ImGui::GetStyle().ItemSpacing.x + 16;
   ImGui::SetNextWindowPos({display.x - width - 8, 8}, ImGuiCond_FirstUseEver);

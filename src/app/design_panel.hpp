@@ -15,6 +15,7 @@
 
 #include "model/design/design_session.hpp"
 #include "model/design/hint.hpp"
+#include "render/scene/camera_controller.hpp"
 #include "render/scene/design_preview.hpp"
 
 namespace eco {
@@ -49,6 +50,11 @@ struct DesignPanelRequests {
   bool save = false, exportTree = false, screenshot = false;
   std::optional<HintInterval> hint;  // what the preview colours this frame
 };
+
+// Ctrl+Z undo, Ctrl+Y and Ctrl+Shift+Z redo, Ctrl+S save (into `requests`), from the
+// window's key events.
+void applyShortcuts(const std::vector<Shortcut>& shortcuts, DesignSession& session,
+                    DesignPanelRequests& requests);
 
 DesignPanelRequests drawDesignPanels(DesignSession& session, DesignPanelState& state,
                                      const PreviewStats& stats, const std::vector<std::string>& compared,

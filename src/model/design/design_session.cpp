@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.hpp"
+#include "core/names.hpp"
 
 namespace eco {
 namespace {
@@ -70,6 +71,10 @@ void applyEdit(Species& species, const EditAction& edit) {
         using E = std::decay_t<decltype(e)>;
         if constexpr (std::is_same_v<E, SetGlobal>) {
           setValue(species, e.parameter, e.value);
+        } else if constexpr (std::is_same_v<E, SetName>) {
+          if (const std::string why = whyNotAPlainName(e.name); !why.empty())
+            throw EditRefused("'" + e.name + "' cannot name a species: " + why);
+          species.name = e.name;
         } else if constexpr (std::is_same_v<E, SetLeafDistribution>) {
           species.strand.leafDistribution = e.distribution;
         } else if constexpr (std::is_same_v<E, SetWindDirection>) {

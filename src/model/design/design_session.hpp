@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -21,6 +22,11 @@ namespace eco {
 struct SetGlobal {
   GlobalParameter parameter;
   double value;  // clamped to the parameter's valid range
+};
+// A new name for the species (a designed variety beside the original in one scenario);
+// refused unless it is a plain name (core/names.hpp).
+struct SetName {
+  std::string name;
 };
 struct SetLeafDistribution {
   LeafDistribution distribution;
@@ -49,7 +55,8 @@ struct RemovePoint {
   int index;
 };
 using EditAction =
-    std::variant<SetGlobal, SetLeafDistribution, SetWindDirection, MovePoint, AddPoint, RemovePoint>;
+    std::variant<SetGlobal, SetName, SetLeafDistribution, SetWindDirection, MovePoint, AddPoint,
+                 RemovePoint>;
 
 // An edit that does not fit the species as it is (no such point, the last point).
 class EditRefused : public std::runtime_error {

@@ -11,6 +11,7 @@ namespace {
 std::vector<std::string> globalKeys() {
   std::vector<std::string> keys;
   for (const GlobalParameterInfo& info : globalParameters()) keys.emplace_back(info.key);
+  keys.emplace_back("name");
   keys.emplace_back("leaf_distribution");
   keys.emplace_back("wind_direction");
   return keys;
@@ -37,6 +38,7 @@ EditAction setEdit(TomlTable& entry) {
     entry.fail("value", "unknown leaf distribution '" + value +
                             "' (expected spiral, stacked, staggered, bunched or coniferous)");
   }
+  if (name == "name") return SetName{entry.string("value")};
   if (name == "wind_direction") {
     const std::vector<double> w = entry.numbers("value", 3);
     return SetWindDirection{{w[0], w[1], w[2]}};

@@ -3,7 +3,8 @@
 // screenshots. docs/designer.md describes the format:
 //
 //   [[edit]]
-//   set = "kc"                     # a global parameter, or leaf_distribution, wind_direction
+//   set = "kc"                     # a global parameter, or name, leaf_distribution,
+//                                  # wind_direction
 //   value = 0.5
 //
 //   [[edit]]

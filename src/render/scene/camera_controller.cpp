@@ -17,6 +17,7 @@ void ViewInput::key(ViewKey key, bool down) {
 
 void ViewInput::nextFrame() {
   pressed.clear();
+  shortcuts.clear();
   lookDelta = glm::dvec2(0.0);
 }
 

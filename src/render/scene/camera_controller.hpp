@@ -17,12 +17,20 @@ namespace eco {
 enum class ViewKey { Forward, Back, Left, Right, Down, Up, Fast, Walk, Screenshot, Play, Count };
 inline constexpr int kViewKeyCount = static_cast<int>(ViewKey::Count);
 
+// A letter key pressed with Ctrl (a command such as Ctrl+Z), as an event.
+struct Shortcut {
+  char letter = 'A';  // 'A'..'Z'
+  bool shift = false;
+  bool operator==(const Shortcut&) const = default;
+};
+
 // What the user did since the previous frame.
 struct ViewInput {
   std::array<bool, kViewKeyCount> held{};  // down at the end of the frame
   std::vector<ViewKey> pressed;            // went down during it, in order (taps included)
   glm::dvec2 lookDelta{0.0};               // pixels the pointer moved with the look button held
   bool keyboardTaken = false;              // the panel has the keyboard (a text field)
+  std::vector<Shortcut> shortcuts;         // Ctrl+letter presses during it, in order
 
   bool isHeld(ViewKey key) const { return held[static_cast<int>(key)]; }
   int presses(ViewKey key) const;

@@ -30,6 +30,15 @@ TEST(DesignSession, SetGlobalChangesTheParameterAndClampsToThePapersBounds) {
   EXPECT_THROW(session.apply(SetWindDirection{{0.0, 0.0, 0.0}}), EditRefused);
 }
 
+TEST(DesignSession, SetNameTakesOnlyAPlainName) {
+  DesignSession session(test::loadNamed("beech"));
+  session.apply(SetName{"broad_beech"});
+  EXPECT_EQ(session.species().name, "broad_beech");
+  EXPECT_THROW(session.apply(SetName{"broad beech"}), EditRefused);
+  EXPECT_THROW(session.apply(SetName{""}), EditRefused);
+  EXPECT_EQ(session.species().name, "broad_beech");
+}
+
 TEST(DesignSession, MovePointKeepsItBetweenItsNeighboursAndInsideTheGraph) {
   DesignSession session(test::loadNamed("beech"));  // m^g = (0, 1), (7.5, 0.45), (15, 1)
   session.apply(MovePoint{LocalGraph::MinLenG, 1, 9.25, 0.8});

@@ -38,6 +38,15 @@ TEST(CameraController, ATapShorterThanAFrameStillCounts) {
   EXPECT_TRUE(held.isHeld(ViewKey::Forward));
 }
 
+TEST(CameraController, ShortcutsAreEventsOfOneFrame) {
+  ViewInput input;
+  input.shortcuts.push_back({'S', false});
+  input.shortcuts.push_back({'Z', true});
+  EXPECT_EQ(input.shortcuts[1], (Shortcut{'Z', true}));
+  input.nextFrame();
+  EXPECT_TRUE(input.shortcuts.empty());
+}
+
 TEST(CameraController, HeldKeysMoveAtTheSpeedAndWalkersStayAtEyeHeight) {
   const Terrain terrain = test::flatTerrain(33, 10.0);
   Camera start;

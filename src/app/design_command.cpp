@@ -40,6 +40,8 @@ struct DesignArgs {
   double age = 1.0;
   int level = 0;
   bool noRow = false;
+  bool noPanels = false;  // a screenshot of the preview alone
+  std::string frame = "tree";  // what the camera frames first: the edited tree or the row
   int frames = 0;  // > 0: the window closes after this many frames (automation, tests)
 };
 
@@ -140,9 +142,11 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
   // ImGui sizes auto-resizing panels over its first frames: draw a few, keep the last.
   for (int frame = 0; frame < 3; ++frame) {
     ui.beginFrame(args.size);
-    drawDesignPanels(session, state, view.shown().stats, namesOf(compared),
-                     {static_cast<float>(args.size.width), static_cast<float>(args.size.height)});
-    view.render(view.framingCamera(), options, state.row, target);
+    if (!args.noPanels)
+      drawDesignPanels(session, state, view.shown().stats, namesOf(compared),
+                       {static_cast<float>(args.size.width), static_cast<float>(args.size.height)});
+    view.render(args.frame == "row" ? view.rowCamera() : view.framingCamera(), options, state.row,
+                target);
     ui.drawOnto(target);
   }
   saveScreenshotOf(target, args.screenshot);
@@ -151,13 +155,14 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
 
 void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState& state,
                const std::vector<Species>& compared) {
-  Window window("ecoforest design — " + session.species().name, args.size);
+  Window window("ecoforest design — " + session.species().name, args.size, "`design`",
+                "`ecoforest design --apply EDITS.toml` edits, saves and screenshots without one");
   // The trees are built on one thread and drawn on another (background_preview.hpp): this
   // one only draws the panels and shows the newest picture.
   BackgroundPreview preview(session.species(), compared,
                             completeScene(session.species(), compared, state.preview,
                                           session.version()));
-  OrbitCamera camera = preview.framingCamera();
+  OrbitCamera camera = args.frame == "row" ? preview.rowCamera() : preview.framingCamera();
   PreviewBuilder builder(compared);
   std::uint64_t requestedVersion = session.version();
   PreviewSettings requested = state.preview;
@@ -170,6 +175,7 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
     const ViewInput& input = window.beginFrame();
     const double now = window.seconds();
     const double dt = std::min(now - lastTime, 0.1);
+    if (now > lastTime) state.windowFps = 0.9 * state.windowFps + 0.1 / (now - lastTime);
     lastTime = now;
     const FrameSize size = window.framebufferSize();
     DesignPanelRequests asked =
@@ -178,6 +184,8 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
     if (!input.keyboardTaken) applyShortcuts(input.shortcuts, session, asked);
     state.preview.hint = asked.hint;
 
+    if (asked.frameTree) camera = preview.framingCamera();
+    if (asked.frameRow) camera = preview.rowCamera();
     // The orbit camera: drag anywhere off the panels, wheel to zoom.
     const ImGuiIO& io = ImGui::GetIO();
     if (!io.WantCaptureMouse) {
@@ -215,6 +223,7 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
         shown = RenderTarget::create(picture->image.width, picture->image.height);
       writePixels(shown, picture->image);
       stats = picture->stats;
+      state.previewMs = picture->frameMs;
     }
 
     try {
@@ -284,6 +293,10 @@ void addDesignCommand(CLI::App& app) {
       ->check(CLI::Range(0, kLevelCount - 1))
       ->capture_default_str();
   command->add_flag("--no-row", args->noRow, "Show the edited tree alone");
+  command->add_flag("--no-panels", args->noPanels, "With --apply: a screenshot of the preview alone");
+  command->add_option("--frame", args->frame, "What the camera frames first: tree or row")
+      ->check(CLI::IsMember({"tree", "row"}))
+      ->capture_default_str();
   command->add_option("--frames", args->frames, "Close the window after this many frames (automation)");
   command->callback([args] { runDesign(*args); });
 }

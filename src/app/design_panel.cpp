@@ -268,6 +268,10 @@ void globalsWindow(DesignSession& session, DesignPanelState& state, DesignPanelR
     if (level > 0) ImGui::SameLine();
     ImGui::RadioButton(levels[level], &state.preview.level, level);
   }
+  requests.frameTree = ImGui::Button("frame tree");
+  ImGui::SameLine();
+  requests.frameRow = ImGui::Button("frame row");
+  ImGui::SameLine();
   ImGui::Checkbox("wind", &state.windPlaying);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("the species' own sway, w_s (1 - k_f): with k_f = 1 a tree stands still");
@@ -281,6 +285,8 @@ void globalsWindow(DesignSession& session, DesignPanelState& state, DesignPanelR
   ImGui::Text("%zu segments, %zu leaves, %zu triangles", stats.segments, stats.leaves, stats.triangles);
   ImGui::Text("height %.2f m, crown radius %.2f m, built in %.1f ms", stats.height_m,
               stats.crownRadius_m, stats.buildMs);
+  if (state.windowFps > 0.0)
+    ImGui::Text("window %.0f frames/s, preview %.0f ms a picture", state.windowFps, state.previewMs);
   ImGui::End();
 }
 

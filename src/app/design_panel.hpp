@@ -38,6 +38,7 @@ struct DesignPanelState {
   // layout report of the window test.
   std::vector<std::vector<glm::vec2>> pointPixels = std::vector<std::vector<glm::vec2>>(kLocalGraphCount);
   std::string status;  // the last save or export, or what went wrong
+  double windowFps = 0.0, previewMs = 0.0;  // how fast the window and its preview draw
   // The combined values of the six pairs over (g, w), computed once per species version.
   std::uint64_t combinedVersion = ~std::uint64_t{0};
   std::vector<std::vector<double>> combined;
@@ -48,6 +49,7 @@ struct DesignPanelState {
 
 struct DesignPanelRequests {
   bool save = false, exportTree = false, screenshot = false;
+  bool frameTree = false, frameRow = false;  // the camera buttons
   std::optional<HintInterval> hint;  // what the preview colours this frame
 };
 

@@ -82,7 +82,8 @@ void runView(const ViewArgs& args) {
     for (const Species& s : source.library->species()) speciesNames.push_back(s.name);
   state.shown.assign(speciesNames.size(), 1);
 
-  Window window("ecoforest — " + source.scenario.name, args.view.size);
+  Window window("ecoforest — " + source.scenario.name, args.view.size, "`view`",
+                "`ecoforest render` draws stills without one");
   SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
                          source.library.get());
   if (overlay) renderer.terrain().setOverlay(args.view.overlay, *overlay);

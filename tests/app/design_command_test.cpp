@@ -139,6 +139,14 @@ snapshot_every_years = 4
   EXPECT_NE(trees.find("broad_beech"), std::string::npos) << trees.substr(0, 400);
 }
 
+TEST(DesignCommand, WithoutADisplayTheWindowSaysSoAndExitsThree) {
+  const CommandResult r = eco::test::runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " +
+                                                std::string(ECOFOREST_EXE) + " design beech");
+  EXPECT_EQ(r.exitCode, 3) << r.output;
+  EXPECT_NE(r.output.find("`design` needs a display"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--apply"), std::string::npos) << r.output;
+}
+
 // The window under Xvfb: a real pointer drag on the m^g graph's middle point and Ctrl+S.
 TEST(DesignCommand, AWindowDragOnAGraphChangesTheSavedSpecies) {
   for (const char* tool : {"xvfb-run", "xdotool"})

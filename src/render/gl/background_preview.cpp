@@ -36,7 +36,7 @@ std::optional<RenderedPreview> BackgroundPreview::take() {
   return picture;
 }
 
-OrbitCamera BackgroundPreview::framingCamera() {
+BackgroundPreview::Framing BackgroundPreview::framing() {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [this] { return framing_.has_value() || failure_; });
   if (failure_) std::rethrow_exception(failure_);
@@ -55,7 +55,7 @@ void BackgroundPreview::work(Species edited, std::vector<Species> compared, Prev
     DesignView view(edited, compared, std::move(first));
     {
       std::lock_guard lock(mutex_);
-      framing_ = view.framingCamera();
+      framing_ = Framing{view.framingCamera(), view.rowCamera()};
     }
     changed_.notify_all();
     RenderTarget target;

@@ -48,12 +48,18 @@ class BackgroundPreview {
   void request(const PreviewFrame& frame, std::optional<PreviewScene> scene = std::nullopt);
   // The newest finished picture since the last call.
   std::optional<RenderedPreview> take();
-  // The framing camera of the first scene (known once the thread has built its view).
-  OrbitCamera framingCamera();
+  // The cameras that frame the first scene's edited tree and its whole row (known once the
+  // thread has built its view).
+  OrbitCamera framingCamera() { return framing().tree; }
+  OrbitCamera rowCamera() { return framing().row; }
   // Rethrows on the caller's thread what failed on the preview's.
   void rethrowFailure();
 
  private:
+  struct Framing {
+    OrbitCamera tree, row;
+  };
+  Framing framing();
   void work(Species edited, std::vector<Species> compared, PreviewScene first);
 
   std::mutex mutex_;
@@ -61,7 +67,7 @@ class BackgroundPreview {
   std::optional<PreviewFrame> frame_;
   std::deque<PreviewScene> scenes_;
   std::optional<RenderedPreview> finished_;
-  std::optional<OrbitCamera> framing_;
+  std::optional<Framing> framing_;
   std::exception_ptr failure_;
   bool stopping_ = false;
   std::thread worker_;

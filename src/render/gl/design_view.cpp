@@ -34,6 +34,22 @@ OrbitCamera DesignView::framingCamera() const {
   return camera;
 }
 
+OrbitCamera DesignView::rowCamera() const {
+  float west = bases_.front().x, east = west, tallest = 0.0f;
+  for (std::size_t t = 0; t < bases_.size(); ++t) {
+    const TreeType& type = library_->types()[t];
+    west = std::min(west, bases_[t].x - type.crownRadius_m);
+    east = std::max(east, bases_[t].x + type.crownRadius_m);
+    tallest = std::max(tallest, type.height_m);
+  }
+  OrbitCamera camera;
+  camera.target = glm::vec3(0.5f * (west + east), 0.45f * tallest, bases_.front().z);
+  // The row's width fills about two thirds of a 50-degree wide view.
+  camera.distance_m = std::max(0.8f * (east - west), 1.5f * tallest);
+  camera.pitch_deg = 10.0f;
+  return camera;
+}
+
 FrameStats DesignView::render(const OrbitCamera& camera, const RenderOptions& options, bool row,
                               const RenderTarget& target) {
   const Forest forest = previewForest(bases_, shown_.settings.hint.has_value(), row);

@@ -19,8 +19,9 @@ class DesignView {
 
   void show(PreviewScene scene);
   const PreviewScene& shown() const { return shown_; }
-  // The orbit camera that frames the edited tree of the first scene.
+  // The orbit camera that frames the edited tree (of the first scene), or the whole row.
   OrbitCamera framingCamera() const;
+  OrbitCamera rowCamera() const;
 
   FrameStats render(const OrbitCamera& camera, const RenderOptions& options, bool row,
                     const RenderTarget& target);

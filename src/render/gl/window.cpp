@@ -33,11 +33,11 @@ std::optional<ViewKey> viewKeyOf(int key) {
 
 }  // namespace
 
-Window::Window(const std::string& title, FrameSize size) {
+Window::Window(const std::string& title, FrameSize size, const std::string& command,
+               const std::string& withoutDisplay) {
   if (!glfwInit())
-    throw EnvironmentError(
-        "`view` needs a display and none could be opened; `ecoforest render` draws stills "
-        "without one");
+    throw EnvironmentError(command + " needs a display and none could be opened; " +
+                           withoutDisplay);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, kGlMajor);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kGlMinor);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -45,7 +45,7 @@ Window::Window(const std::string& title, FrameSize size) {
   window_ = glfwCreateWindow(size.width, size.height, title.c_str(), nullptr, nullptr);
   if (!window_) {
     glfwTerminate();
-    throw EnvironmentError("`view` could not open an OpenGL 4.5 window on this display");
+    throw EnvironmentError(command + " could not open an OpenGL 4.5 window on this display");
   }
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(1);

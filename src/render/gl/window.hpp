@@ -16,8 +16,10 @@ namespace eco {
 
 class Window {
  public:
-  // EnvironmentError when there is no display or no OpenGL 4.5 on it.
-  Window(const std::string& title, FrameSize size);
+  // EnvironmentError when there is no display or no OpenGL 4.5 on it; its message names
+  // `command` and ends with `withoutDisplay` (what to use instead).
+  Window(const std::string& title, FrameSize size, const std::string& command,
+         const std::string& withoutDisplay);
   ~Window();
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;

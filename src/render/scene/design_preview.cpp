@@ -15,9 +15,11 @@
 namespace eco {
 namespace {
 
-constexpr double kEditedEast_m = 60.0, kRowNorth_m = 60.0;  // the edited tree on the patch
-constexpr double kGap_m = 3.0;                               // between neighbouring crowns
-constexpr double kCell_m = 2.0;
+// The patch of ground reaches to the horizon the cameras see: 2 km square, the edited tree
+// at its centre and the row to the east.
+constexpr double kGround_m = 2000.0, kCell_m = 8.0;
+constexpr double kEditedEast_m = 1000.0, kRowNorth_m = 1000.0;
+constexpr double kGap_m = 3.0;  // between neighbouring crowns
 
 struct BuiltTree {
   TreeType type;
@@ -148,11 +150,11 @@ Forest previewForest(const std::vector<glm::vec3>& bases, bool hint, bool row) {
 }
 
 Terrain previewGround(const std::vector<glm::vec3>& bases) {
-  double east = 2.0 * kEditedEast_m;
+  double east = kGround_m;
   for (const glm::vec3& base : bases) east = std::max(east, mapFromWorld(base).x + kEditedEast_m);
   Terrain ground;
   ground.grid.width = static_cast<int>(std::ceil(east / kCell_m)) + 1;
-  ground.grid.height = static_cast<int>(std::ceil(2.0 * kRowNorth_m / kCell_m)) + 1;
+  ground.grid.height = static_cast<int>(std::ceil(kGround_m / kCell_m)) + 1;
   ground.grid.dx_m = ground.grid.dy_m = kCell_m;
   ground.height_m.assign(ground.grid.cellCount(), 0.0f);
   return ground;

@@ -30,14 +30,14 @@ class WithoutVariable {
 
 TEST(Window, WithoutADisplayItIsTheEnvironmentsError) {
   const WithoutVariable display("DISPLAY"), wayland("WAYLAND_DISPLAY");
-  EXPECT_THROW(Window("test", {64, 48}), EnvironmentError);
+  EXPECT_THROW(Window("test", {64, 48}, "`test`", "no display needed"), EnvironmentError);
 }
 
 // Needs a display: ctest runs it under xvfb-run (tests/render/CMakeLists.txt).
 TEST(Window, OpensDrawsAFrameAndClosesItself) {
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY (ctest runs this under xvfb-run)";
   for (int round = 0; round < 2; ++round) {  // a second window after the first is gone
-    Window window("test", {96, 64});
+    Window window("test", {96, 64}, "`test`", "no display needed");
     EXPECT_FALSE(window.shouldClose());
     const ViewInput& input = window.beginFrame();
     EXPECT_TRUE(input.pressed.empty());

@@ -5,10 +5,10 @@
 //   rebuild   the edited tree's skeleton and LOD0 mesh as the preview builds it (median);
 //   frame     one preview picture (sky, ground, the tree and its row, shadows) at SIZE;
 //   window    the window thread's frames per second while a control point moves every
-//             frame: the designer's panels (design_panel.hpp), the tree rebuilt on the builder's thread and
-//             drawn on the preview's (background_preview.hpp), the newest picture uploaded;
-//             and how many new pictures (with a newer tree) came back meanwhile. The
-//             loop waits for a 60 Hz refresh as the window's swap does.
+//             frame: the designer's panels (design_panel.hpp), the tree rebuilt on the builder's
+//             thread and drawn on the preview's (background_preview.hpp), the newest picture
+//             uploaded; and how many new pictures (with a newer tree) came back meanwhile. The loop
+//             waits for a 60 Hz refresh as the window's swap does.
 // Usage: design_bench [SIZE = 1280x720] [FRAMES = 60]
 #include <algorithm>
 #include <chrono>
@@ -56,7 +56,8 @@ int main(int argc, char** argv) {
   // pictures come from the preview's own thread and context.
   std::vector<eco::Species> trees;
   for (const char* name : {"beech", "pine"})
-    trees.push_back(eco::loadSpecies(std::string(ECOFOREST_DATA_DIR) + "/species/" + name + ".toml"));
+    trees.push_back(
+        eco::loadSpecies(std::string(ECOFOREST_DATA_DIR) + "/species/" + name + ".toml"));
   const eco::PreviewSettings settings;
   auto complete = [&](const eco::Species& species) {
     eco::PreviewScene scene = eco::buildPreview(species, settings);
@@ -114,8 +115,8 @@ int main(int argc, char** argv) {
       std::this_thread::sleep_until(frameStart + std::chrono::microseconds(16667));
     }
     const double fps = 1000.0 * frames / millisecondsSince(start);
-    std::printf("%-6s %11.1f %10.1f %12.1f %9d in %d frames\n", species.name.c_str(),
-                rebuildMs[t], frameMs[t], fps, pictures, frames);
+    std::printf("%-6s %11.1f %10.1f %12.1f %9d in %d frames\n", species.name.c_str(), rebuildMs[t],
+                frameMs[t], fps, pictures, frames);
   }
   return 0;
 }

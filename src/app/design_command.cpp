@@ -12,7 +12,6 @@
 
 #include "app/data_paths.hpp"
 #include "app/design_panel.hpp"
-#include "render/gl/design_view.hpp"
 #include "app/view_options.hpp"
 #include "core/atomic_file.hpp"
 #include "model/design/edit_script.hpp"
@@ -21,6 +20,7 @@
 #include "model/species_writer.hpp"
 #include "model/tree_generator.hpp"
 #include "render/gl/background_preview.hpp"
+#include "render/gl/design_view.hpp"
 #include "render/gl/gl_context.hpp"
 #include "render/gl/offscreen_ui.hpp"
 #include "render/gl/window.hpp"
@@ -40,9 +40,9 @@ struct DesignArgs {
   double age = 1.0;
   int level = 0;
   bool noRow = false;
-  bool noPanels = false;  // a screenshot of the preview alone
+  bool noPanels = false;       // a screenshot of the preview alone
   std::string frame = "tree";  // what the camera frames first: the edited tree or the row
-  int frames = 0;  // > 0: the window closes after this many frames (automation, tests)
+  int frames = 0;              // > 0: the window closes after this many frames (automation, tests)
 };
 
 std::vector<Species> loadCompared(const std::vector<std::string>& names) {
@@ -88,11 +88,13 @@ void reportLayout(const DesignPanelState& state, FrameSize size) {
   nlohmann::ordered_json graphs;
   for (const LocalGraphInfo& info : localGraphs()) {
     nlohmann::json points = nlohmann::json::array();
-    for (glm::vec2 p : state.pointPixels[static_cast<int>(info.graph)]) points.push_back({p.x, p.y});
+    for (glm::vec2 p : state.pointPixels[static_cast<int>(info.graph)])
+      points.push_back({p.x, p.y});
     graphs[std::string(info.key)] = points;
   }
   AtomicFile out(file);
-  out.write(nlohmann::ordered_json{{"window", {size.width, size.height}}, {"graphs", graphs}}.dump(1));
+  out.write(
+      nlohmann::ordered_json{{"window", {size.width, size.height}}, {"graphs", graphs}}.dump(1));
   out.commit();
 }
 
@@ -101,13 +103,24 @@ void saveScreenshotOf(const RenderTarget& target, const std::string& file) {
   writeRgb8Image(file, readPixels(target.width, target.height));
 }
 
+// --name: the designed species' new name.
+void rename(const DesignArgs& args, DesignSession& session) {
+  if (args.name.empty()) return;
+  try {
+    session.apply(SetName{args.name});
+  } catch (const EditRefused& refused) {
+    throw InputError(SourceLocation("--name"), refused.what());
+  }
+}
+
 void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelState& state,
                  const std::vector<Species>& compared) {
   const EditScript script = loadEditScript(args.apply);
   applyEditScript(script, session);
   if (script.hint) {
     const HintRequest& h = script.hint.value();
-    const int points = static_cast<int>(graphOf(session.species().strand.graphs, h.graph).points().size());
+    const int points =
+        static_cast<int>(graphOf(session.species().strand.graphs, h.graph).points().size());
     if (h.point && *h.point >= points)
       throw InputError(h.where, "the graph has no point " + std::to_string(*h.point));
     if (h.segment && *h.segment + 1 >= points)
@@ -115,13 +128,7 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
     state.pinned = GraphFocus{h.graph, h.point.value_or(-1), h.segment.value_or(-1)};
     state.preview.hint = hintOf(*state.pinned, session.species());
   }
-  if (!args.name.empty()) {
-    try {
-      session.apply(SetName{args.name});
-    } catch (const EditRefused& refused) {
-      throw InputError(SourceLocation("--name"), refused.what());
-    }
-  }
+  rename(args, session);
   std::cout << session.species().name << ": " << script.edits.size() << " edits applied\n";
   if (!args.save.empty()) {
     saveSpecies(session.species(), args.save);
@@ -155,13 +162,14 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
 
 void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState& state,
                const std::vector<Species>& compared) {
+  rename(args, session);
   Window window("ecoforest design — " + session.species().name, args.size, "`design`",
                 "`ecoforest design --apply EDITS.toml` edits, saves and screenshots without one");
   // The trees are built on one thread and drawn on another (background_preview.hpp): this
   // one only draws the panels and shows the newest picture.
-  BackgroundPreview preview(session.species(), compared,
-                            completeScene(session.species(), compared, state.preview,
-                                          session.version()));
+  BackgroundPreview preview(
+      session.species(), compared,
+      completeScene(session.species(), compared, state.preview, session.version()));
   OrbitCamera camera = args.frame == "row" ? preview.rowCamera() : preview.framingCamera();
   PreviewBuilder builder(compared);
   std::uint64_t requestedVersion = session.version();
@@ -273,17 +281,21 @@ void addDesignCommand(CLI::App& app) {
   auto args = std::make_shared<DesignArgs>();
   CLI::App* command = app.add_subcommand(
       "design", "Design a species' tree: the EcoMod dialogs with an immediate 3D preview");
-  command->add_option("species", args->species, "Species name (beech, pine, ...) or a species .toml")
+  command
+      ->add_option("species", args->species, "Species name (beech, pine, ...) or a species .toml")
       ->required();
-  command->add_option("--compare", args->compare, "Other species to shape it against, side by side");
+  command->add_option("--compare", args->compare,
+                      "Other species to shape it against, side by side");
   command->add_option("--apply", args->apply,
                       "Apply a file of edits without a window (docs/designer.md), then save, "
                       "export and screenshot as asked");
   command->add_option("--name", args->name,
-                      "With --apply: the saved species' name (a variety beside the original)");
+                      "A new name for the designed species (a variety beside the original)");
   command->add_option("--save", args->save, "Species .toml the edited species is saved to");
-  command->add_option("--export", args->exportFile, "Write the edited tree: .obj, .gltf, .glb, .pov or .wrl");
-  command->add_option("--screenshot", args->screenshot, "PNG of the designer (with --apply: made headless)");
+  command->add_option("--export", args->exportFile,
+                      "Write the edited tree: .obj, .gltf, .glb, .pov or .wrl");
+  command->add_option("--screenshot", args->screenshot,
+                      "PNG of the designer (with --apply: made headless)");
   addSizeOption(*command, args->size);
   command->add_option("--seed", args->seed, "The individual shown")->capture_default_str();
   command->add_option("--age", args->age, "Age shown, 0 seedling .. 1 mature")
@@ -293,11 +305,13 @@ void addDesignCommand(CLI::App& app) {
       ->check(CLI::Range(0, kLevelCount - 1))
       ->capture_default_str();
   command->add_flag("--no-row", args->noRow, "Show the edited tree alone");
-  command->add_flag("--no-panels", args->noPanels, "With --apply: a screenshot of the preview alone");
+  command->add_flag("--no-panels", args->noPanels,
+                    "With --apply: a screenshot of the preview alone");
   command->add_option("--frame", args->frame, "What the camera frames first: tree or row")
       ->check(CLI::IsMember({"tree", "row"}))
       ->capture_default_str();
-  command->add_option("--frames", args->frames, "Close the window after this many frames (automation)");
+  command->add_option("--frames", args->frames,
+                      "Close the window after this many frames (automation)");
   command->callback([args] { runDesign(*args); });
 }
 

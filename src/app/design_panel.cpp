@@ -34,7 +34,8 @@ struct CanvasFrame {
 float distanceToSegment(ImVec2 p, ImVec2 a, ImVec2 b) {
   const ImVec2 ab{b.x - a.x, b.y - a.y}, ap{p.x - a.x, p.y - a.y};
   const float length2 = ab.x * ab.x + ab.y * ab.y;
-  const float t = length2 > 0.0f ? std::clamp((ap.x * ab.x + ap.y * ab.y) / length2, 0.0f, 1.0f) : 0.0f;
+  const float t =
+      length2 > 0.0f ? std::clamp((ap.x * ab.x + ap.y * ab.y) / length2, 0.0f, 1.0f) : 0.0f;
   const float dx = ap.x - t * ab.x, dy = ap.y - t * ab.y;
   return std::sqrt(dx * dx + dy * dy);
 }
@@ -113,14 +114,16 @@ std::optional<GraphFocus> graphCanvas(DesignSession& session, DesignPanelState& 
   const int step = info.over == BranchOrder::Gravelius ? 1 : 5;
   for (int o = 0; o <= static_cast<int>(frame.xs.max); o += step)
     draw->AddLine(frame.pixel(o, frame.ys.min), frame.pixel(o, frame.ys.max), kGrid);
-  if (frame.ys.min < 0.0) draw->AddLine(frame.pixel(frame.xs.min, 0), frame.pixel(frame.xs.max, 0), kGrid);
+  if (frame.ys.min < 0.0)
+    draw->AddLine(frame.pixel(frame.xs.min, 0), frame.pixel(frame.xs.max, 0), kGrid);
   const GraphFocus* focus = state.pinned && state.pinned->graph == graph ? &*state.pinned
                             : over                                       ? &*over
                                                                          : nullptr;
   std::vector<ImVec2> pixels;
   pixels.push_back(frame.pixel(frame.xs.min, line(frame.xs.min)));
   for (const ControlPoint& p : now) pixels.push_back(frame.pixel(p.x, p.y));
-  pixels.push_back(frame.pixel(frame.xs.max, graphOf(session.species().strand.graphs, graph)(frame.xs.max)));
+  pixels.push_back(
+      frame.pixel(frame.xs.max, graphOf(session.species().strand.graphs, graph)(frame.xs.max)));
   draw->PushClipRect(frame.origin, end, true);
   for (std::size_t i = 0; i + 1 < pixels.size(); ++i) {
     const bool hot = focus && focus->segment >= 0 && static_cast<int>(i) == focus->segment + 1;
@@ -238,7 +241,8 @@ void globalsWindow(DesignSession& session, DesignPanelState& state, DesignPanelR
   if (ImGui::IsItemActivated()) ++state.gesture;
   if (turned && (w[0] != 0 || w[1] != 0 || w[2] != 0))
     session.apply(SetWindDirection{{w[0], w[1], w[2]}}, state.gesture);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("w, toward which the directed wind bends growth (x east, y up, z south)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("w, toward which the directed wind bends growth (x east, y up, z south)");
   ImGui::PopItemWidth();
 
   ImGui::Separator();
@@ -259,7 +263,8 @@ void globalsWindow(DesignSession& session, DesignPanelState& state, DesignPanelR
   ImGui::Separator();
   ImGui::PushItemWidth(190);
   int seed = static_cast<int>(state.preview.seed);
-  if (ImGui::InputInt("seed", &seed) && seed >= 1) state.preview.seed = static_cast<std::uint64_t>(seed);
+  if (ImGui::InputInt("seed", &seed) && seed >= 1)
+    state.preview.seed = static_cast<std::uint64_t>(seed);
   float age = static_cast<float>(state.preview.age);
   if (ImGui::SliderFloat("age", &age, 0.0f, 1.0f, "%.2f")) state.preview.age = age;
   ImGui::PopItemWidth();
@@ -276,17 +281,20 @@ void globalsWindow(DesignSession& session, DesignPanelState& state, DesignPanelR
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("the species' own sway, w_s (1 - k_f): with k_f = 1 a tree stands still");
   ImGui::SameLine();
-  ImGui::Checkbox(compared.empty() ? "variants and ages" : "variants, ages and compared", &state.row);
+  ImGui::Checkbox(compared.empty() ? "variants and ages" : "variants, ages and compared",
+                  &state.row);
   if (!compared.empty()) {
     std::string names = "compared:";
     for (const std::string& name : compared) names += " " + name;
     ImGui::TextUnformatted(names.c_str());
   }
-  ImGui::Text("%zu segments, %zu leaves, %zu triangles", stats.segments, stats.leaves, stats.triangles);
+  ImGui::Text("%zu segments, %zu leaves, %zu triangles", stats.segments, stats.leaves,
+              stats.triangles);
   ImGui::Text("height %.2f m, crown radius %.2f m, built in %.1f ms", stats.height_m,
               stats.crownRadius_m, stats.buildMs);
   if (state.windowFps > 0.0)
-    ImGui::Text("window %.0f frames/s, preview %.0f ms a picture", state.windowFps, state.previewMs);
+    ImGui::Text("window %.0f frames/s, preview %.0f ms a picture", state.windowFps,
+                state.previewMs);
   ImGui::End();
 }
 
@@ -295,8 +303,10 @@ void globalsWindow(DesignSession& session, DesignPanelState& state, DesignPanelR
 HintInterval hintOf(const GraphFocus& focus, const Species& species) {
   const Polyline& line = graphOf(species.strand.graphs, focus.graph);
   const int count = static_cast<int>(line.points().size());
-  if (focus.point >= 0 && focus.point < count) return pointInfluence(focus.graph, line, focus.point);
-  if (focus.segment >= 0 && focus.segment + 1 < count) return segmentSpan(focus.graph, line, focus.segment);
+  if (focus.point >= 0 && focus.point < count)
+    return pointInfluence(focus.graph, line, focus.point);
+  if (focus.segment >= 0 && focus.segment + 1 < count)
+    return segmentSpan(focus.graph, line, focus.segment);
   return wholeGraph(focus.graph);
 }
 
@@ -310,8 +320,8 @@ void applyShortcuts(const std::vector<Shortcut>& shortcuts, DesignSession& sessi
 }
 
 DesignPanelRequests drawDesignPanels(DesignSession& session, DesignPanelState& state,
-                                     const PreviewStats& stats, const std::vector<std::string>& compared,
-                                     glm::vec2 display) {
+                                     const PreviewStats& stats,
+                                     const std::vector<std::string>& compared, glm::vec2 display) {
   DesignPanelRequests requests;
   globalsWindow(session, state, requests, stats, compared);
 

@@ -31,13 +31,14 @@ HintInterval hintOf(const GraphFocus& focus, const Species& species);
 
 struct DesignPanelState {
   PreviewSettings preview;
-  bool row = true;          // the variants, ages and compared species beside the tree
-  bool windPlaying = true;  // the species' own sway (w_s, k_f)
+  bool row = true;                   // the variants, ages and compared species beside the tree
+  bool windPlaying = true;           // the species' own sway (w_s, k_f)
   std::optional<GraphFocus> pinned;  // a hint that stays whatever the pointer does
   // Where each graph's control points were drawn last frame (window pixels): for the
   // layout report of the window test.
-  std::vector<std::vector<glm::vec2>> pointPixels = std::vector<std::vector<glm::vec2>>(kLocalGraphCount);
-  std::string status;  // the last save or export, or what went wrong
+  std::vector<std::vector<glm::vec2>> pointPixels =
+      std::vector<std::vector<glm::vec2>>(kLocalGraphCount);
+  std::string status;                       // the last save or export, or what went wrong
   double windowFps = 0.0, previewMs = 0.0;  // how fast the window and its preview draw
   // The combined values of the six pairs over (g, w), computed once per species version.
   std::uint64_t combinedVersion = ~std::uint64_t{0};
@@ -50,7 +51,7 @@ struct DesignPanelState {
 struct DesignPanelRequests {
   bool save = false, exportTree = false, screenshot = false;
   bool frameTree = false, frameRow = false;  // the camera buttons
-  std::optional<HintInterval> hint;  // what the preview colours this frame
+  std::optional<HintInterval> hint;          // what the preview colours this frame
 };
 
 // Ctrl+Z undo, Ctrl+Y and Ctrl+Shift+Z redo, Ctrl+S save (into `requests`), from the
@@ -59,7 +60,7 @@ void applyShortcuts(const std::vector<Shortcut>& shortcuts, DesignSession& sessi
                     DesignPanelRequests& requests);
 
 DesignPanelRequests drawDesignPanels(DesignSession& session, DesignPanelState& state,
-                                     const PreviewStats& stats, const std::vector<std::string>& compared,
-                                     glm::vec2 display);
+                                     const PreviewStats& stats,
+                                     const std::vector<std::string>& compared, glm::vec2 display);
 
 }  // namespace eco

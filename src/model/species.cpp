@@ -40,9 +40,8 @@ void parseGlobal(TomlTable& table, GlobalParameter parameter, Species& species,
                  std::optional<double> fallback = {}) {
   const GlobalParameterInfo& info = infoOf(parameter);
   ECO_ASSERT(!(info.integer && fallback), info.key << ": integers here are required keys");
-  const double value = info.integer
-                           ? static_cast<double>(table.integer(info.key, {}, info.valid))
-                           : table.number(info.key, fallback, info.valid);
+  const double value = info.integer ? static_cast<double>(table.integer(info.key, {}, info.valid))
+                                    : table.number(info.key, fallback, info.valid);
   setValue(species, parameter, value);
 }
 

@@ -52,7 +52,20 @@ enum class BranchOrder { Gravelius, Weibull };
 Range orderAxis(BranchOrder order);
 
 // The twelve auxiliary graphs of eqs. (1)-(6).
-enum class LocalGraph { KsG, KsW, AlphaG, AlphaW, AlphaMG, AlphaMW, MaxLenG, MaxLenW, KlG, KlW, MinLenG, MinLenW };
+enum class LocalGraph {
+  KsG,
+  KsW,
+  AlphaG,
+  AlphaW,
+  AlphaMG,
+  AlphaMW,
+  MaxLenG,
+  MaxLenW,
+  KlG,
+  KlW,
+  MinLenG,
+  MinLenW
+};
 inline constexpr int kLocalGraphCount = 12;
 
 struct LocalGraphInfo {
@@ -73,8 +86,8 @@ const Polyline& graphOf(const LocalGraphs& graphs, LocalGraph graph);
 struct GraphPair {
   std::string_view name;  // what it controls
   LocalGraph overG, overW;
-  Range combined;                       // the bounds of the combined value
-  double LocalParams::* value = nullptr;  // the combined value in evaluateLocal()'s result
+  Range combined;                        // the bounds of the combined value
+  double LocalParams::*value = nullptr;  // the combined value in evaluateLocal()'s result
 };
 // The six pairs in the order of the paper's Fig. 3 dialogs.
 std::span<const GraphPair> graphPairs();

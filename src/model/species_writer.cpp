@@ -101,8 +101,8 @@ std::string speciesToml(const Species& species, const std::string& ecology) {
   const WindParams& w = species.wind;
   for (const GlobalParameterInfo& info : globalParameters()) {
     const double value = valueOf(species, info.parameter);
-    line(out, info.key, info.integer ? std::to_string(static_cast<long long>(value)) : number(value),
-         info.symbol);
+    line(out, info.key,
+         info.integer ? std::to_string(static_cast<long long>(value)) : number(value), info.symbol);
     if (info.parameter == GlobalParameter::LeafDensity)
       line(out, "leaf_distribution", quoted(toString(p.leafDistribution)), "l_type");
     if (info.parameter == GlobalParameter::WindUndirected)
@@ -156,9 +156,9 @@ std::string ecologyTablesOf(const std::filesystem::path& speciesFile) {
 
 void saveSpecies(const Species& species, const std::filesystem::path& file) {
   if (species.generator != TreeGenerator::Strand)
-    throw InputError(SourceLocation(species.file.string(), 0, "generator"),
-                     species.name +
-                         " grows from an RL-system grammar; only strand species can be saved");
+    throw InputError(
+        SourceLocation(species.file.string(), 0, "generator"),
+        species.name + " grows from an RL-system grammar; only strand species can be saved");
   const std::string text =
       speciesToml(species, species.file.empty() ? std::string() : ecologyTablesOf(species.file));
   AtomicFile out(file);

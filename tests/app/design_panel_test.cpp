@@ -41,7 +41,7 @@ class DesignPanel : public ::testing::Test {
 };
 
 TEST_F(DesignPanel, DraggingAPointMovesItAsOneUndoStep) {
-  for (int i = 0; i < 3; ++i) frame({-1, -1});  // panels laid out
+  for (int i = 0; i < 3; ++i) frame({-1, -1});        // panels laid out
   const glm::vec2 p = point(LocalGraph::MinLenG, 1);  // (7.5, 0.45) of m^g in [0, 10]
   frame(p);
   frame(p, true);

@@ -103,7 +103,8 @@ b = 2
 [ecology.life]
 c = 3
 )");
-  EXPECT_EQ(ecologyTablesOf(file), "# about the ecology\n[ecology]\na = 1\n[ecology.life]\nc = 3\n");
+  EXPECT_EQ(ecologyTablesOf(file),
+            "# about the ecology\n[ecology]\na = 1\n[ecology.life]\nc = 3\n");
 }
 
 TEST(SpeciesWriter, RefusesAnLSystemSpecies) {

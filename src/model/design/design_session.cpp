@@ -57,8 +57,7 @@ void removePoint(Species& species, const RemovePoint& remove) {
   std::vector<ControlPoint> points = pointsOf(line);
   requirePoint(points, remove.graph, remove.index);
   if (points.size() == 1)
-    throw EditRefused(std::string(infoOf(remove.graph).key) +
-                      ": a graph keeps at least one point");
+    throw EditRefused(std::string(infoOf(remove.graph).key) + ": a graph keeps at least one point");
   points.erase(points.begin() + remove.index);
   line = Polyline(std::move(points));
 }
@@ -95,9 +94,9 @@ void applyEdit(Species& species, const EditAction& edit) {
 
 DesignSession::DesignSession(Species species) : species_(std::move(species)) {
   if (species_.generator != TreeGenerator::Strand)
-    throw InputError(SourceLocation(species_.file.string(), 0, "generator"),
-                     species_.name +
-                         " grows from an RL-system grammar; the designer edits strand species");
+    throw InputError(
+        SourceLocation(species_.file.string(), 0, "generator"),
+        species_.name + " grows from an RL-system grammar; the designer edits strand species");
 }
 
 void DesignSession::apply(const EditAction& edit, std::uint64_t gesture) {

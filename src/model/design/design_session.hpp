@@ -54,9 +54,8 @@ struct RemovePoint {
   LocalGraph graph;
   int index;
 };
-using EditAction =
-    std::variant<SetGlobal, SetName, SetLeafDistribution, SetWindDirection, MovePoint, AddPoint,
-                 RemovePoint>;
+using EditAction = std::variant<SetGlobal, SetName, SetLeafDistribution, SetWindDirection,
+                                MovePoint, AddPoint, RemovePoint>;
 
 // An edit that does not fit the species as it is (no such point, the last point).
 class EditRefused : public std::runtime_error {

@@ -7,9 +7,10 @@ namespace eco {
 
 BackgroundPreview::BackgroundPreview(Species edited, std::vector<Species> compared,
                                      PreviewScene first)
-    : worker_([this, e = std::move(edited), c = std::move(compared), f = std::move(first)]() mutable {
-        work(std::move(e), std::move(c), std::move(f));
-      }) {}
+    : worker_(
+          [this, e = std::move(edited), c = std::move(compared), f = std::move(first)]() mutable {
+            work(std::move(e), std::move(c), std::move(f));
+          }) {}
 
 BackgroundPreview::~BackgroundPreview() {
   {
@@ -76,8 +77,7 @@ void BackgroundPreview::work(Species edited, std::vector<Species> compared, Prev
       const PreviewSettings& shown = view.shown().settings;
       RenderedPreview picture;
       picture.frameMs =
-          view.render(frame.camera,
-                      previewRenderOptions(shown, frame.sway_ws, frame.windTime),
+          view.render(frame.camera, previewRenderOptions(shown, frame.sway_ws, frame.windTime),
                       frame.row, target)
               .frameMs;
       target.bind();

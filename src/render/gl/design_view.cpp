@@ -11,7 +11,8 @@ DesignView::DesignView(const Species& edited, const std::vector<Species>& compar
   ECO_ASSERT(first.complete, "the first preview must place every tree");
   bases_ = first.bases;
   ground_ = previewGround(bases_);
-  library_ = std::make_unique<TreeLibrary>(previewSpecies(edited, compared), std::move(first.types));
+  library_ =
+      std::make_unique<TreeLibrary>(previewSpecies(edited, compared), std::move(first.types));
   renderer_ = std::make_unique<SceneRenderer>(ground_, kPreviewLatitude_deg, library_.get());
   first.types.clear();
   shown_ = std::move(first);

@@ -113,8 +113,9 @@ Image readPixels(int width, int height, GLenum attachment) {
 }
 
 void writePixels(const RenderTarget& target, const Image& image) {
-  ECO_ASSERT(image.width == target.width && image.height == target.height,
-             image.width << "x" << image.height << " into " << target.width << "x" << target.height);
+  ECO_ASSERT(
+      image.width == target.width && image.height == target.height,
+      image.width << "x" << image.height << " into " << target.width << "x" << target.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   const std::size_t row = static_cast<std::size_t>(image.width) * 4;
   for (int y = 0; y < image.height; ++y)  // OpenGL's row 0 is the bottom one

@@ -75,8 +75,8 @@ void Window::onKey(GLFWwindow* window, int key, int, int action, int mods) {
   // Ctrl+letter: a command, kept as an event so that a quick chord (shorter than a frame
   // at a few frames per second) is not lost between two polls.
   if (action == GLFW_PRESS && (mods & GLFW_MOD_CONTROL) && key >= GLFW_KEY_A && key <= GLFW_KEY_Z) {
-    self->input_.shortcuts.push_back({static_cast<char>('A' + (key - GLFW_KEY_A)),
-                                      (mods & GLFW_MOD_SHIFT) != 0});
+    self->input_.shortcuts.push_back(
+        {static_cast<char>('A' + (key - GLFW_KEY_A)), (mods & GLFW_MOD_SHIFT) != 0});
     return;
   }
   const std::optional<ViewKey> viewKey = viewKeyOf(key);

@@ -32,10 +32,9 @@ BuiltTree buildTree(const Species& species, int speciesIndex, std::uint64_t seed
                     int level, const std::optional<HintInterval>& hint) {
   // An impostor is baked from a mesh level (impostor.hpp); the hint is for meshes only.
   const int meshLevel = level == kLevelImpostor ? ImpostorSettings{}.bakeLod : level;
-  std::vector<SkeletonMesher> meshers{
-      [&](const TreeSkeleton& skeleton, TreeMesh& mesh) {
-        buildLodInto(skeleton, species, meshLevel, mesh);
-      }};
+  std::vector<SkeletonMesher> meshers{[&](const TreeSkeleton& skeleton, TreeMesh& mesh) {
+    buildLodInto(skeleton, species, meshLevel, mesh);
+  }};
   const bool sleeves = hint && level != kLevelImpostor;
   if (sleeves)
     meshers.push_back([&](const TreeSkeleton& skeleton, TreeMesh& mesh) {
@@ -83,15 +82,16 @@ PreviewScene buildPreview(const Species& edited, const PreviewSettings& settings
   PreviewScene scene;
   scene.settings = settings;
   const auto start = Clock::now();
-  BuiltTree main = buildTree(edited, kPreviewEdited, settings.seed, settings.age, settings.level,
-                             settings.hint);
+  BuiltTree main =
+      buildTree(edited, kPreviewEdited, settings.seed, settings.age, settings.level, settings.hint);
   scene.stats.buildMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   const SkeletonMeasures m = measure(main.rest);
   scene.stats.segments = m.segments;
   scene.stats.leaves = main.rest.leaves.size();
   scene.stats.height_m = m.height_m;
   scene.stats.crownRadius_m = m.crownRadius_m;
-  const int meshLevel = settings.level == kLevelImpostor ? ImpostorSettings{}.bakeLod : settings.level;
+  const int meshLevel =
+      settings.level == kLevelImpostor ? ImpostorSettings{}.bakeLod : settings.level;
   scene.stats.triangles = main.type.meshes.lods[meshLevel].triangleCount();
   scene.types.push_back(std::move(main.type));
   scene.types.push_back(std::move(main.hint));
@@ -116,7 +116,8 @@ void addPreviewRow(PreviewScene& scene, const Species& edited,
   for (double age : kPreviewRowAges)
     row.push_back({&edited, kPreviewEdited, settings.seed, age * settings.age});
   for (int v = 1; v <= kPreviewRowVariants; ++v)
-    row.push_back({&edited, kPreviewEdited, settings.seed + static_cast<std::uint64_t>(v), settings.age});
+    row.push_back(
+        {&edited, kPreviewEdited, settings.seed + static_cast<std::uint64_t>(v), settings.age});
   for (std::size_t c = 0; c < compared.size(); ++c)
     row.push_back({&compared[c], kPreviewComparedSpeciesFirst + static_cast<int>(c), settings.seed,
                    settings.age});
@@ -143,9 +144,11 @@ void addPreviewRow(PreviewScene& scene, const Species& edited,
 
 Forest previewForest(const std::vector<glm::vec3>& bases, bool hint, bool row) {
   Forest forest;
-  const std::size_t count = row ? bases.size() : std::min<std::size_t>(bases.size(), kPreviewRowFirst);
+  const std::size_t count =
+      row ? bases.size() : std::min<std::size_t>(bases.size(), kPreviewRowFirst);
   for (std::size_t t = 0; t < count; ++t)
-    if (hint || static_cast<int>(t) != kPreviewHint) forest.addAsBuilt(static_cast<int>(t), bases[t]);
+    if (hint || static_cast<int>(t) != kPreviewHint)
+      forest.addAsBuilt(static_cast<int>(t), bases[t]);
   return forest;
 }
 
@@ -202,7 +205,8 @@ void PreviewBuilder::request(const Species& edited, std::uint64_t version,
 std::optional<PreviewScene> PreviewBuilder::take(std::chrono::milliseconds wait) {
   std::unique_lock lock(mutex_);
   if (wait.count() > 0)
-    changed_.wait_for(lock, wait, [this] { return finished_.has_value() || (!pending_ && !working_); });
+    changed_.wait_for(lock, wait,
+                      [this] { return finished_.has_value() || (!pending_ && !working_); });
   std::optional<PreviewScene> scene = std::move(finished_);
   finished_.reset();
   return scene;

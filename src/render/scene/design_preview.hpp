@@ -65,7 +65,8 @@ struct PreviewScene {
 // Builds the edited tree and its hint; addPreviewRow() then completes the scene with the
 // row and the compared trees and places every tree.
 PreviewScene buildPreview(const Species& edited, const PreviewSettings& settings);
-void addPreviewRow(PreviewScene& scene, const Species& edited, const std::vector<Species>& compared);
+void addPreviewRow(PreviewScene& scene, const Species& edited,
+                   const std::vector<Species>& compared);
 
 // The trees of a preview as a Forest, each type at its base as built: the edited tree, its
 // hint sleeves when there is a hint, the row when asked for.

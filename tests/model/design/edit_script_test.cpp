@@ -87,13 +87,16 @@ TEST(EditScript, TheSameScriptGivesTheSameSavedFileEveryTime) {
 }
 
 TEST(EditScript, BadEntriesNameTheirLineAndKey) {
-  EXPECT_NE(errorOf("[[edit]]\nset = \"kcc\"\nvalue = 1\n").find("edits.toml:2: edit[0].set: unknown "
-                                                                 "parameter 'kcc': did you mean 'kc'?"),
+  EXPECT_NE(errorOf("[[edit]]\nset = \"kcc\"\nvalue = 1\n")
+                .find("edits.toml:2: edit[0].set: unknown "
+                      "parameter 'kcc': did you mean 'kc'?"),
             std::string::npos)
       << errorOf("[[edit]]\nset = \"kcc\"\nvalue = 1\n");
-  EXPECT_NE(errorOf("[[edit]]\ngraph = \"ks_q\"\nremove = 0\n").find(":2: edit[0].graph: unknown graph"),
-            std::string::npos);
-  EXPECT_NE(errorOf("[[edit]]\ngraph = \"ks_g\"\nremove = 5\n").find(":2: edit[0].graph: ks_g has no point 5"),
+  EXPECT_NE(
+      errorOf("[[edit]]\ngraph = \"ks_q\"\nremove = 0\n").find(":2: edit[0].graph: unknown graph"),
+      std::string::npos);
+  EXPECT_NE(errorOf("[[edit]]\ngraph = \"ks_g\"\nremove = 5\n")
+                .find(":2: edit[0].graph: ks_g has no point 5"),
             std::string::npos);
   EXPECT_NE(errorOf("[[edit]]\ngraph = \"ks_g\"\n").find("exactly one of move"), std::string::npos);
   EXPECT_NE(errorOf("[[edit]]\nundo = true\n").find(":2: edit[0].undo: there is no edit to undo"),

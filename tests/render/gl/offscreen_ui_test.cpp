@@ -14,7 +14,8 @@ TEST(OffscreenUi, DrawsPanelsOverATargetAndTakesScriptedClicks) {
   bool clicked = false;
   // A click is a press in one frame and a release in the next.
   for (int frame = 0; frame < 4; ++frame) {
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, std::array<float, 4>{0, 0, 0, 1}.data());
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0,
+                              std::array<float, 4>{0, 0, 0, 1}.data());
     ui.beginFrame({320, 200}, {40.0f, 40.0f}, frame == 2);
     ImGui::SetNextWindowPos({10, 10});
     ImGui::SetNextWindowSize({200, 100});

@@ -77,8 +77,7 @@ TEST(DesignPreview, TheRowStandsEastOfTheTreeWithoutTouchingCrowns) {
     const glm::vec3 a = scene.bases[row[i - 1]], b = scene.bases[row[i]];
     EXPECT_GT(b.x, a.x);
     EXPECT_EQ(b.z, a.z);
-    EXPECT_GE(b.x - a.x,
-              scene.types[row[i - 1]].crownRadius_m + scene.types[row[i]].crownRadius_m);
+    EXPECT_GE(b.x - a.x, scene.types[row[i - 1]].crownRadius_m + scene.types[row[i]].crownRadius_m);
   }
   const Terrain ground = previewGround(scene.bases);
   for (const glm::vec3& base : scene.bases)
@@ -96,7 +95,8 @@ TEST(DesignPreview, TheOrbitCameraLooksAtItsTarget) {
   orbit.pitch_deg = 25.0f;
   const Camera camera = orbit.camera();
   EXPECT_NEAR(glm::distance(camera.position, orbit.target), 20.0f, 1e-4f);
-  EXPECT_NEAR(glm::dot(glm::normalize(orbit.target - camera.position), camera.forward()), 1.0f, 1e-5f);
+  EXPECT_NEAR(glm::dot(glm::normalize(orbit.target - camera.position), camera.forward()), 1.0f,
+              1e-5f);
   EXPECT_GT(camera.position.y, orbit.target.y);  // above, looking down
   orbit.zoom(1.0f);
   EXPECT_LT(orbit.distance_m, 20.0f);
@@ -114,7 +114,8 @@ TEST(DesignPreview, TheBuilderDeliversTheNewestRequestComplete) {
   }
   std::optional<PreviewScene> last;
   for (int i = 0; i < 500 && (!last || !last->complete || last->version != 3); ++i)
-    if (std::optional<PreviewScene> scene = builder.take(std::chrono::milliseconds(20))) last = std::move(scene);
+    if (std::optional<PreviewScene> scene = builder.take(std::chrono::milliseconds(20)))
+      last = std::move(scene);
   ASSERT_TRUE(last.has_value());
   EXPECT_EQ(last->version, 3u);
   EXPECT_TRUE(last->complete);

@@ -38,9 +38,11 @@ TEST(WindMesh, AnyMeshersShareTheFivePosesAndTheRestPoseAloneHasNoBases) {
   }};
   TreeSkeleton rest;
   const std::vector<WindMesh> withBases = buildWindMeshes(maple, 3, 0.4, lod1, nullptr, &rest);
-  const std::vector<WindMesh> restOnly = buildWindMeshes(maple, 3, 0.4, lod1, nullptr, nullptr, false);
+  const std::vector<WindMesh> restOnly =
+      buildWindMeshes(maple, 3, 0.4, lod1, nullptr, nullptr, false);
   ASSERT_EQ(withBases.size(), 1u);
-  EXPECT_EQ(rest.segments.size(), buildTree(maple, windBuildOptions(maple, 3, 0.4, {}, 0.0)).segments.size());
+  EXPECT_EQ(rest.segments.size(),
+            buildTree(maple, windBuildOptions(maple, 3, 0.4, {}, 0.0)).segments.size());
   const WindPart& a = lods.lods[1].parts[0];
   const WindPart& b = withBases[0].parts[0];
   const WindPart& c = restOnly[0].parts[0];

@@ -64,7 +64,7 @@ TEST(DesignCommand, AppliesEditsSavesTheSpeciesAndScreenshotsTheDesigner) {
   ASSERT_EQ(in->spec().width, 1280);
   ASSERT_EQ(in->spec().height, 720);
   std::vector<unsigned char> pixels(1280 * 720 * in->spec().nchannels);
-  ASSERT_TRUE(in->read_image(OIIO::TypeDesc::UINT8, pixels.data()));
+  ASSERT_TRUE(in->read_image(0, 0, 0, -1, OIIO::TypeDesc::UINT8, pixels.data()));
   int orange = 0;  // the hint: the trunk and limbs of g = 0..2 in the hint colour
   for (std::size_t p = 0; p < pixels.size(); p += in->spec().nchannels)
     orange += pixels[p] > 90 && pixels[p] > 2 * pixels[p + 1] && pixels[p + 1] > 2 * pixels[p + 2];

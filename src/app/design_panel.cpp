@@ -81,6 +81,9 @@ std::optional<GraphFocus> graphCanvas(DesignSession& session, DesignPanelState& 
   if (over && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     if (over->point >= 0) {
       state.dragging = GraphFocus{graph, over->point};
+      // The point keeps its place under the pointer instead of jumping to it.
+      const ImVec2 p = frame.pixel(points[over->point].x, points[over->point].y);
+      state.grabOffset = {p.x - mouse.x, p.y - mouse.y};
       ++state.gesture;
     } else if (over->segment >= 0) {
       const double x = frame.x(mouse.x);
@@ -90,6 +93,7 @@ std::optional<GraphFocus> graphCanvas(DesignSession& session, DesignPanelState& 
       int index = 0;
       while (index + 1 < static_cast<int>(now.size()) && now[index + 1].x <= x) ++index;
       state.dragging = GraphFocus{graph, index};
+      state.grabOffset = {0.0f, 0.0f};
     }
   }
   if (over && over->point >= 0 && points.size() > 1 &&
@@ -99,7 +103,8 @@ std::optional<GraphFocus> graphCanvas(DesignSession& session, DesignPanelState& 
   }
   if (state.dragging && state.dragging->graph == graph) {
     if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-      session.apply(MovePoint{graph, state.dragging->point, frame.x(mouse.x), frame.y(mouse.y)},
+      session.apply(MovePoint{graph, state.dragging->point, frame.x(mouse.x + state.grabOffset.x),
+                              frame.y(mouse.y + state.grabOffset.y)},
                     state.gesture);
       over = state.dragging;
     } else {

@@ -45,6 +45,7 @@ struct DesignPanelState {
   std::vector<std::vector<double>> combined;
   // The drag in progress.
   std::optional<GraphFocus> dragging;
+  glm::vec2 grabOffset{0.0f};  // from the pointer to the point it grabbed, pixels
   std::uint64_t gesture = 0;
 };
 

@@ -61,6 +61,18 @@ TEST_F(DesignPanel, DraggingAPointMovesItAsOneUndoStep) {
   EXPECT_FALSE(session_.canUndo());
 }
 
+TEST_F(DesignPanel, AGrabbedPointKeepsItsOffsetFromThePointer) {
+  for (int i = 0; i < 3; ++i) frame({-1, -1});
+  const glm::vec2 grab = point(LocalGraph::MinLenG, 1) - glm::vec2(0, 4);  // 4 px above it
+  frame(grab);
+  frame(grab, true);
+  frame(grab, true);  // pressed, not moved: the point stays where it was
+  EXPECT_NEAR(graph(LocalGraph::MinLenG).points()[1].y, 0.45, 1e-6);
+  frame(grab - glm::vec2(0, 8), true);
+  frame(grab - glm::vec2(0, 8));
+  EXPECT_NEAR(graph(LocalGraph::MinLenG).points()[1].y, 0.45 + 8.0 / 84.0 * 10.0, 1e-3);
+}
+
 TEST_F(DesignPanel, ClickingASegmentAddsAPointThereAndRightClickRemovesIt) {
   for (int i = 0; i < 3; ++i) frame({-1, -1});
   const glm::vec2 a = point(LocalGraph::KsG, 0), b = point(LocalGraph::KsG, 1);

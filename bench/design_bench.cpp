@@ -5,10 +5,10 @@
 //   rebuild   the edited tree's skeleton and LOD0 mesh as the preview builds it (median);
 //   frame     one preview picture (sky, ground, the tree and its row, shadows) at SIZE;
 //   window    the window thread's frames per second while a control point moves every
-//             frame: the designer's panels (design_panel.hpp), the tree rebuilt on the builder's
-//             thread and drawn on the preview's (background_preview.hpp), the newest picture
-//             uploaded; and how many new pictures (with a newer tree) came back meanwhile. The loop
-//             waits for a 60 Hz refresh as the window's swap does.
+//             frame: the designer's panels (design_panel.hpp), the wait for a quick tree, the tree
+//             rebuilt on the builder's thread and drawn on the preview's (background_preview.hpp),
+//             the newest picture uploaded; and how many new pictures (with a newer tree) came back
+//             meanwhile. The loop waits for a 60 Hz refresh as the window's swap does.
 // Usage: design_bench [SIZE = 1280x720] [FRAMES = 60]
 #include <algorithm>
 #include <chrono>
@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
                        {static_cast<float>(size.width), static_cast<float>(size.height)});
       session.apply(eco::MovePoint{eco::LocalGraph::MinLenG, 1, 7.5, 0.45 + 0.3 * f / frames}, 1);
       builder.request(session.species(), session.version(), settings);
-      std::optional<eco::PreviewScene> scene = builder.take(std::chrono::milliseconds(12));
+      std::optional<eco::PreviewScene> scene = builder.take(builder.worthWaiting());
       if (scene) preview.request(asked, std::move(scene));
       if (std::optional<eco::RenderedPreview> picture = preview.take()) {
         eco::writePixels(shown, picture->image);

@@ -203,13 +203,13 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
     }
 
     // A change asks the builder for a new tree; the frame that asked waits for it up to
-    // 12 ms, so a tree that builds that fast (the beech) goes to the preview at once.
+    // 12 ms when the tree builds that fast (the beech), so it goes to the preview at once.
     std::chrono::milliseconds wait{0};
     if (session.version() != requestedVersion || !(state.preview == requested)) {
       requestedVersion = session.version();
       requested = state.preview;
       builder.request(session.species(), requestedVersion, requested);
-      wait = std::chrono::milliseconds(12);
+      wait = builder.worthWaiting();
     }
     std::optional<PreviewScene> scene = builder.take(wait);
     if (state.windPlaying) windTime += 2.0 * dt;

@@ -17,7 +17,7 @@ namespace {
 
 // The patch of ground reaches to the horizon the cameras see: 2 km square, the edited tree
 // at its centre and the row to the east.
-constexpr double kGround_m = 2000.0, kCell_m = 8.0;
+constexpr double kGround_m = 2000.0, kCell_m = 50.0;  // flat: big cells cost nothing
 constexpr double kEditedEast_m = 1000.0, kRowNorth_m = 1000.0;
 constexpr double kGap_m = 3.0;  // between neighbouring crowns
 
@@ -212,6 +212,15 @@ std::optional<PreviewScene> PreviewBuilder::take(std::chrono::milliseconds wait)
   return scene;
 }
 
+double PreviewBuilder::lastBuildMs() const {
+  std::lock_guard lock(mutex_);
+  return lastBuildMs_;
+}
+
+std::chrono::milliseconds PreviewBuilder::worthWaiting() const {
+  return std::chrono::milliseconds(lastBuildMs() < 10.0 ? 12 : 0);
+}
+
 bool PreviewBuilder::busy() const {
   std::lock_guard lock(mutex_);
   return working_ || pending_.has_value();
@@ -233,6 +242,10 @@ void PreviewBuilder::work() {
     // whole scene with the row.
     PreviewScene scene = buildPreview(request.edited, request.settings);
     scene.version = request.version;
+    {
+      std::lock_guard lock(mutex_);
+      lastBuildMs_ = scene.stats.buildMs;
+    }
     auto publish = [&](bool last) {
       {
         std::lock_guard lock(mutex_);

@@ -101,6 +101,12 @@ class PreviewBuilder {
   // beech is built within a frame, so the frame that asked can show it).
   std::optional<PreviewScene> take(std::chrono::milliseconds wait = {});
   bool busy() const;
+  // How long the edited tree of the last request took: whether waiting for the next one is
+  // worth a frame's time (0 before the first).
+  double lastBuildMs() const;
+  // What the window waits after a request: up to 12 ms when the tree builds in less than
+  // that (a frame of 60 Hz holds it), nothing for a larger tree.
+  std::chrono::milliseconds worthWaiting() const;
 
  private:
   struct Request {
@@ -117,6 +123,7 @@ class PreviewBuilder {
   std::optional<PreviewScene> finished_;
   bool working_ = false;
   bool stopping_ = false;
+  double lastBuildMs_ = 0.0;
   std::thread worker_;
 };
 

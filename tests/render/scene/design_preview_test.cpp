@@ -127,6 +127,10 @@ TEST(DesignPreview, TheBuilderDeliversTheNewestRequestComplete) {
   EXPECT_EQ(last->types[kPreviewEdited].meshes.lods[0].triangleCount(),
             here.types[kPreviewEdited].meshes.lods[0].triangleCount());
   EXPECT_FALSE(builder.busy());
+  // A tree built within 10 ms is worth waiting for within a frame, a slower one not.
+  EXPECT_GT(builder.lastBuildMs(), 0.0);
+  EXPECT_EQ(builder.worthWaiting(),
+            std::chrono::milliseconds(builder.lastBuildMs() < 10.0 ? 12 : 0));
 }
 
 }  // namespace eco

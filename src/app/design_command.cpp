@@ -98,11 +98,6 @@ void reportLayout(const DesignPanelState& state, FrameSize size) {
   out.commit();
 }
 
-void saveScreenshotOf(const RenderTarget& target, const std::string& file) {
-  target.bind();
-  writeRgb8Image(file, readPixels(target.width, target.height));
-}
-
 // --name: the designed species' new name.
 void rename(const DesignArgs& args, DesignSession& session) {
   if (args.name.empty()) return;
@@ -156,7 +151,7 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
                 target);
     ui.drawOnto(target);
   }
-  saveScreenshotOf(target, args.screenshot);
+  writeRgb8Image(args.screenshot, readPixels(target));
   std::cout << "screenshot " << args.screenshot << "\n";
 }
 
@@ -247,7 +242,7 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
       }
       if (asked.screenshot && shown.width > 0) {
         const std::string file = orDefault(args.screenshot, session.species(), ".png");
-        saveScreenshotOf(shown, file);
+        writeRgb8Image(file, readPixels(shown));
         state.status = "screenshot " + file;
       }
     } catch (const std::exception& error) {

@@ -90,7 +90,7 @@ Image drawStill(const SceneSource& source, const Forest& forest, const Camera& c
   const FrameStats frame =
       renderer.render(&forest, camera, renderOptionsFrom(view, source.scenario), target);
   if (stats) *stats = {frame, setupMs, glDescription()};
-  return readPixels(target.width, target.height);
+  return readPixels(target);
 }
 
 void addRenderCommand(CLI::App& app) {

@@ -37,8 +37,7 @@ Forest visibleTrees(const Forest& all, const TreeLibrary& library, const std::ve
 
 void saveScreenshot(const RenderTarget& target, const std::string& file) {
   if (target.width == 0) return;  // nothing drawn yet
-  target.bind();
-  writeRgb8Image(file, readPixels(target.width, target.height));
+  writeRgb8Image(file, readPixels(target));
   std::cerr << "ecoforest view: saved " << file << "\n";
 }
 

@@ -80,8 +80,7 @@ void BackgroundPreview::work(Species edited, std::vector<Species> compared, Prev
           view.render(frame.camera, previewRenderOptions(shown, frame.sway_ws, frame.windTime),
                       frame.row, target)
               .frameMs;
-      target.bind();
-      picture.image = readPixels(target.width, target.height);
+      picture.image = readPixels(target);
       picture.settings = shown;
       picture.stats = view.shown().stats;
       std::lock_guard lock(mutex_);

@@ -112,6 +112,11 @@ Image readPixels(int width, int height, GLenum attachment) {
   return image;
 }
 
+Image readPixels(const RenderTarget& target) {
+  target.bind();
+  return readPixels(target.width, target.height);
+}
+
 void writePixels(const RenderTarget& target, const Image& image) {
   ECO_ASSERT(
       image.width == target.width && image.height == target.height,

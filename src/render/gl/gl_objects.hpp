@@ -71,6 +71,8 @@ struct RenderTarget {
 // Reads the colour attachment of the bound framebuffer; row 0 of the image is the top row.
 Image readPixels(int width, int height, GLenum attachment = GL_COLOR_ATTACHMENT0);
 
+// The colour of a target (bound for it): what it shows, row 0 at the top.
+Image readPixels(const RenderTarget& target);
 // The inverse: an image (row 0 at the top) of the target's size into its colour.
 void writePixels(const RenderTarget& target, const Image& image);
 

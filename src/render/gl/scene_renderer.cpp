@@ -137,7 +137,7 @@ DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size) {
   return [&renderer, target](const Forest& forest, const Camera& camera,
                              const RenderOptions& options) {
     renderer.render(&forest, camera, options, *target);
-    return readPixels(target->width, target->height);
+    return readPixels(*target);
   };
 }
 

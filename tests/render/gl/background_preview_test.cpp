@@ -40,7 +40,7 @@ TEST(BackgroundPreview, DrawsOnItsOwnThreadWhatTheViewDrawsHere) {
   DesignView view(beech, {}, completeScene(beech));
   const RenderTarget target = RenderTarget::create(200, 150);
   view.render(camera, previewRenderOptions({}, 0.0, 0.0), true, target);
-  EXPECT_EQ(readPixels(200, 150).rgba, picture.image.rgba);
+  EXPECT_EQ(readPixels(target).rgba, picture.image.rgba);
 }
 
 TEST(BackgroundPreview, ShowsEveryHandedSceneInOrderAndTheNewestFrame) {

@@ -27,7 +27,7 @@ int orangePixels(const Image& image) {
 Image draw(DesignView& view, const PreviewSettings& settings, bool row = true) {
   const RenderTarget target = RenderTarget::create(320, 240);
   view.render(view.framingCamera(), previewRenderOptions(settings, 0.0, 0.0), row, target);
-  return readPixels(target.width, target.height);
+  return readPixels(target);
 }
 
 }  // namespace

@@ -13,8 +13,7 @@ TEST(GlObjects, WritePixelsIsTheInverseOfReadPixels) {
     for (int x = 0; x < 7; ++x) image.set(x, y, {x / 7.0f, y / 5.0f, 0.5f, 1.0f});
   const RenderTarget target = RenderTarget::create(7, 5);
   writePixels(target, image);
-  target.bind();
-  EXPECT_EQ(readPixels(7, 5).rgba, image.rgba);
+  EXPECT_EQ(readPixels(target).rgba, image.rgba);
 }
 
 }  // namespace eco

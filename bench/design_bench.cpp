@@ -59,11 +59,6 @@ int main(int argc, char** argv) {
     trees.push_back(
         eco::loadSpecies(std::string(ECOFOREST_DATA_DIR) + "/species/" + name + ".toml"));
   const eco::PreviewSettings settings;
-  auto complete = [&](const eco::Species& species) {
-    eco::PreviewScene scene = eco::buildPreview(species, settings);
-    eco::addPreviewRow(scene, species, {});
-    return scene;
-  };
   std::vector<double> rebuildMs, frameMs;
   for (const eco::Species& species : trees) {
     std::vector<double> rebuild;
@@ -73,7 +68,7 @@ int main(int argc, char** argv) {
       rebuild.push_back(millisecondsSince(start));
     }
     rebuildMs.push_back(median(rebuild));
-    eco::DesignView view(species, {}, complete(species));
+    eco::DesignView view(species, {}, eco::buildCompletePreview(species, {}, settings));
     const eco::RenderTarget target = eco::RenderTarget::create(size.width, size.height);
     const eco::RenderOptions options = eco::previewRenderOptions(settings, 0.0, 0.0);
     std::vector<double> ms;
@@ -87,7 +82,7 @@ int main(int argc, char** argv) {
     const eco::Species& species = trees[t];
     eco::DesignSession session(species);
     eco::PreviewBuilder builder({});
-    eco::BackgroundPreview preview(species, {}, complete(species));
+    eco::BackgroundPreview preview(species, {}, eco::buildCompletePreview(species, {}, settings));
     const eco::PreviewFrame asked{preview.framingCamera(), true, 0.0, 0.0, size};
     eco::RenderTarget shown = eco::RenderTarget::create(size.width, size.height);
     eco::DesignPanelState state;

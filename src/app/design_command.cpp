@@ -71,12 +71,11 @@ void exportDesigned(const Species& species, const PreviewSettings& preview,
   exportTree(buildLod(buildTree(species, options), species, lod), species, file);
 }
 
-// One complete scene, built on this thread (the headless mode, the window's first frame).
-PreviewScene completeScene(const Species& edited, const std::vector<Species>& compared,
-                           const PreviewSettings& settings, std::uint64_t version) {
-  PreviewScene scene = buildPreview(edited, settings);
-  scene.version = version;
-  addPreviewRow(scene, edited, compared);
+// The whole preview of the session's species as it stands.
+PreviewScene firstScene(const DesignSession& session, const std::vector<Species>& compared,
+                        const PreviewSettings& settings) {
+  PreviewScene scene = buildCompletePreview(session.species(), compared, settings);
+  scene.version = session.version();
   return scene;
 }
 
@@ -136,8 +135,7 @@ void runHeadless(const DesignArgs& args, DesignSession& session, DesignPanelStat
   if (args.screenshot.empty()) return;
 
   HeadlessGl gl;
-  DesignView view(session.species(), compared,
-                  completeScene(session.species(), compared, state.preview, session.version()));
+  DesignView view(session.species(), compared, firstScene(session, compared, state.preview));
   OffscreenUi ui;
   const RenderTarget target = RenderTarget::create(args.size.width, args.size.height);
   const RenderOptions options = previewRenderOptions(state.preview, 0.0, 0.0);
@@ -162,9 +160,8 @@ void runWindow(const DesignArgs& args, DesignSession& session, DesignPanelState&
                 "`ecoforest design --apply EDITS.toml` edits, saves and screenshots without one");
   // The trees are built on one thread and drawn on another (background_preview.hpp): this
   // one only draws the panels and shows the newest picture.
-  BackgroundPreview preview(
-      session.species(), compared,
-      completeScene(session.species(), compared, state.preview, session.version()));
+  BackgroundPreview preview(session.species(), compared,
+                            firstScene(session, compared, state.preview));
   OrbitCamera camera = args.frame == "row" ? preview.rowCamera() : preview.framingCamera();
   PreviewBuilder builder(compared);
   std::uint64_t requestedVersion = session.version();

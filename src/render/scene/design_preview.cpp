@@ -142,6 +142,13 @@ void addPreviewRow(PreviewScene& scene, const Species& edited,
   }
 }
 
+PreviewScene buildCompletePreview(const Species& edited, const std::vector<Species>& compared,
+                                  const PreviewSettings& settings) {
+  PreviewScene scene = buildPreview(edited, settings);
+  addPreviewRow(scene, edited, compared);
+  return scene;
+}
+
 Forest previewForest(const std::vector<glm::vec3>& bases, bool hint, bool row) {
   Forest forest;
   const std::size_t count =

@@ -67,6 +67,9 @@ struct PreviewScene {
 PreviewScene buildPreview(const Species& edited, const PreviewSettings& settings);
 void addPreviewRow(PreviewScene& scene, const Species& edited,
                    const std::vector<Species>& compared);
+// Both at once on the calling thread (the headless designer, the window's first scene).
+PreviewScene buildCompletePreview(const Species& edited, const std::vector<Species>& compared,
+                                  const PreviewSettings& settings);
 
 // The trees of a preview as a Forest, each type at its base as built: the edited tree, its
 // hint sleeves when there is a hint, the row when asked for.

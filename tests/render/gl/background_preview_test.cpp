@@ -10,12 +10,6 @@
 namespace eco {
 namespace {
 
-PreviewScene completeScene(const Species& species) {
-  PreviewScene scene = buildPreview(species, {});
-  addPreviewRow(scene, species, {});
-  return scene;
-}
-
 RenderedPreview waitForPicture(BackgroundPreview& preview) {
   for (int i = 0; i < 1000; ++i) {
     if (std::optional<RenderedPreview> picture = preview.take()) return std::move(*picture);
@@ -30,14 +24,14 @@ RenderedPreview waitForPicture(BackgroundPreview& preview) {
 TEST(BackgroundPreview, DrawsOnItsOwnThreadWhatTheViewDrawsHere) {
   test::useHeadlessGl();
   const Species beech = test::loadNamedSpecies("beech");
-  BackgroundPreview preview(beech, {}, completeScene(beech));
+  BackgroundPreview preview(beech, {}, buildCompletePreview(beech, {}, {}));
   const OrbitCamera camera = preview.framingCamera();
   preview.request({camera, true, 0.0, 0.0, {200, 150}});
   const RenderedPreview picture = waitForPicture(preview);
   ASSERT_EQ(picture.image.width, 200);
   EXPECT_EQ(picture.stats.segments, 1999u);
 
-  DesignView view(beech, {}, completeScene(beech));
+  DesignView view(beech, {}, buildCompletePreview(beech, {}, {}));
   const RenderTarget target = RenderTarget::create(200, 150);
   view.render(camera, previewRenderOptions({}, 0.0, 0.0), true, target);
   EXPECT_EQ(readPixels(target).rgba, picture.image.rgba);
@@ -46,7 +40,7 @@ TEST(BackgroundPreview, DrawsOnItsOwnThreadWhatTheViewDrawsHere) {
 TEST(BackgroundPreview, ShowsEveryHandedSceneInOrderAndTheNewestFrame) {
   test::useHeadlessGl();
   const Species beech = test::loadNamedSpecies("beech");
-  BackgroundPreview preview(beech, {}, completeScene(beech));
+  BackgroundPreview preview(beech, {}, buildCompletePreview(beech, {}, {}));
   OrbitCamera camera = preview.framingCamera();
   PreviewSettings halfGrown;
   halfGrown.age = 0.5;

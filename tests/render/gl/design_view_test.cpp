@@ -8,12 +8,6 @@
 namespace eco {
 namespace {
 
-PreviewScene completeScene(const Species& species, const PreviewSettings& settings) {
-  PreviewScene scene = buildPreview(species, settings);
-  addPreviewRow(scene, species, {});
-  return scene;
-}
-
 // Pixels close to the hint's orange (in sRGB, lit anywhere from shade to sun).
 int orangePixels(const Image& image) {
   int n = 0;
@@ -35,7 +29,7 @@ Image draw(DesignView& view, const PreviewSettings& settings, bool row = true) {
 TEST(DesignView, ShowsTheTreeAndColoursTheHintedBranches) {
   test::useHeadlessGl();
   const Species beech = test::loadNamedSpecies("beech");
-  DesignView view(beech, {}, completeScene(beech, {}));
+  DesignView view(beech, {}, buildCompletePreview(beech, {}, {}));
   const Image plain = draw(view, {});
   EXPECT_EQ(orangePixels(plain), 0);
   // The tree stands in the middle of the picture: its centre is not sky.
@@ -55,7 +49,7 @@ TEST(DesignView, ShowsTheTreeAndColoursTheHintedBranches) {
 TEST(DesignView, ANewerSceneReplacesTheTreeAndTheRowCanBeHidden) {
   test::useHeadlessGl();
   const Species beech = test::loadNamedSpecies("beech");
-  DesignView view(beech, {}, completeScene(beech, {}));
+  DesignView view(beech, {}, buildCompletePreview(beech, {}, {}));
   const Image before = draw(view, {}, false);
   Species wider = beech;
   wider.strand.graphs.alphaG = Polyline::constant(80.0);
@@ -67,12 +61,12 @@ TEST(DesignView, ANewerSceneReplacesTheTreeAndTheRowCanBeHidden) {
 TEST(DesignView, ShowsEachLevelIncludingTheImpostor) {
   test::useHeadlessGl();
   const Species beech = test::loadNamedSpecies("beech");
-  DesignView view(beech, {}, completeScene(beech, {}));
+  DesignView view(beech, {}, buildCompletePreview(beech, {}, {}));
   std::vector<std::vector<std::uint8_t>> pictures;
   for (int level = 0; level < kLevelCount; ++level) {
     PreviewSettings settings;
     settings.level = level;
-    view.show(completeScene(beech, settings));
+    view.show(buildCompletePreview(beech, {}, settings));
     const Image image = draw(view, settings, false);
     const glm::vec4 centre = image.get(160, 120);
     EXPECT_LT(centre.b, centre.g + 0.05f) << "level " << level;  // a tree, not sky

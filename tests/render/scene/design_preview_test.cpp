@@ -120,8 +120,7 @@ TEST(DesignPreview, TheBuilderDeliversTheNewestRequestComplete) {
   EXPECT_EQ(last->version, 3u);
   EXPECT_TRUE(last->complete);
   // The same as building it here: the worker is deterministic.
-  PreviewScene here = buildPreview(edited, {});
-  addPreviewRow(here, edited, {});
+  const PreviewScene here = buildCompletePreview(edited, {}, {});
   EXPECT_EQ(last->stats.segments, here.stats.segments);
   EXPECT_EQ(last->bases, here.bases);
   EXPECT_EQ(last->types[kPreviewEdited].meshes.lods[0].triangleCount(),

@@ -24,18 +24,23 @@ constexpr double kGap_m = 3.0;  // between neighbouring crowns
 struct BuiltTree {
   TreeType type;
   TreeType hint;
-  TreeSkeleton rest;
+  std::size_t leaves = 0;  // of its rest pose
+  SkeletonMeasures measures;
 };
+
+// The mesh a level shows: an impostor is baked from a mesh level (impostor.hpp).
+int meshLevelOf(int level) {
+  return level == kLevelImpostor ? ImpostorSettings{}.bakeLod : level;
+}
 
 // One tree of the preview; its hint sleeves too when a hint is asked for.
 BuiltTree buildTree(const Species& species, int speciesIndex, std::uint64_t seed, double age,
                     int level, const std::optional<HintInterval>& hint) {
-  // An impostor is baked from a mesh level (impostor.hpp); the hint is for meshes only.
-  const int meshLevel = level == kLevelImpostor ? ImpostorSettings{}.bakeLod : level;
+  const int meshLevel = meshLevelOf(level);
   std::vector<SkeletonMesher> meshers{[&](const TreeSkeleton& skeleton, TreeMesh& mesh) {
     buildLodInto(skeleton, species, meshLevel, mesh);
   }};
-  const bool sleeves = hint && level != kLevelImpostor;
+  const bool sleeves = hint && level != kLevelImpostor;  // the hint is for meshes only
   if (sleeves)
     meshers.push_back([&](const TreeSkeleton& skeleton, TreeMesh& mesh) {
       mesh.parts.clear();
@@ -43,22 +48,24 @@ BuiltTree buildTree(const Species& species, int speciesIndex, std::uint64_t seed
       mesh.dropEmptyParts();
     });
   BuiltTree tree;
+  TreeSkeleton rest;
   // The preview's wind is the species' own sway; the scene adds no directed wind. A tree
   // that does not sway (the paper's beech and pine: k_f = 1) needs only its rest pose.
   const bool sways = species.wind.undirected_ws * (1.0 - species.wind.flexibility) > 0.0;
   std::vector<WindMesh> meshes =
-      buildWindMeshes(species, seed, age, meshers, nullptr, &tree.rest, sways);
-  const SkeletonMeasures measures = measure(tree.rest);
+      buildWindMeshes(species, seed, age, meshers, nullptr, &rest, sways);
+  tree.measures = measure(rest);
+  tree.leaves = rest.leaves.size();
   tree.type.species = speciesIndex;
   tree.type.seed = seed;
   tree.type.age = age;
   tree.type.meshes.lods[meshLevel] = std::move(meshes[0]);
-  measureType(tree.type, measures);
+  measureType(tree.type, tree.measures);
   tree.hint.species = kPreviewHint;
   tree.hint.seed = seed;
   tree.hint.age = age;
   if (sleeves) tree.hint.meshes.lods[meshLevel] = std::move(meshes[1]);
-  measureType(tree.hint, measures);
+  measureType(tree.hint, tree.measures);
   return tree;
 }
 
@@ -85,14 +92,11 @@ PreviewScene buildPreview(const Species& edited, const PreviewSettings& settings
   BuiltTree main =
       buildTree(edited, kPreviewEdited, settings.seed, settings.age, settings.level, settings.hint);
   scene.stats.buildMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-  const SkeletonMeasures m = measure(main.rest);
-  scene.stats.segments = m.segments;
-  scene.stats.leaves = main.rest.leaves.size();
-  scene.stats.height_m = m.height_m;
-  scene.stats.crownRadius_m = m.crownRadius_m;
-  const int meshLevel =
-      settings.level == kLevelImpostor ? ImpostorSettings{}.bakeLod : settings.level;
-  scene.stats.triangles = main.type.meshes.lods[meshLevel].triangleCount();
+  scene.stats.segments = main.measures.segments;
+  scene.stats.leaves = main.leaves;
+  scene.stats.height_m = main.measures.height_m;
+  scene.stats.crownRadius_m = main.measures.crownRadius_m;
+  scene.stats.triangles = main.type.meshes.lods[meshLevelOf(settings.level)].triangleCount();
   scene.types.push_back(std::move(main.type));
   scene.types.push_back(std::move(main.hint));
   return scene;

@@ -59,9 +59,10 @@ TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySetti
   tbb::parallel_for(std::size_t{0}, types_.size(), [&](std::size_t i) {
     TreeType& type = types_[i];
     const Species& s = species_[type.species];
-    type.meshes = buildWindLods(s, type.seed, type.age);
+    TreeSkeleton rest;
+    type.meshes = buildWindLods(s, type.seed, type.age, &rest);
     type.impostorSource = typeIndex(type.species, 0, type.ageClass);
-    measureType(type, measure(buildTree(s, windBuildOptions(s, type.seed, type.age, {}, 0.0))));
+    measureType(type, measure(rest));
   });
   const int classes = static_cast<int>(settings.ageClasses.size());
   for (int s = 0; s < static_cast<int>(species.size()); ++s) {

@@ -87,14 +87,15 @@ std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed
   return result;
 }
 
-WindLods buildWindLods(const Species& species, std::uint64_t seed, double age) {
+WindLods buildWindLods(const Species& species, std::uint64_t seed, double age, TreeSkeleton* rest) {
   std::array<SkeletonMesher, kLodCount> levels;
   for (int lod = 0; lod < kLodCount; ++lod)
     levels[lod] = [&species, lod](const TreeSkeleton& skeleton, TreeMesh& mesh) {
       buildLodInto(skeleton, species, lod, mesh);
     };
   WindLods result;
-  std::vector<WindMesh> meshes = buildWindMeshes(species, seed, age, levels, &result.windless);
+  std::vector<WindMesh> meshes =
+      buildWindMeshes(species, seed, age, levels, &result.windless, rest);
   for (int lod = 0; lod < kLodCount; ++lod) result.lods[lod] = std::move(meshes[lod]);
   return result;
 }

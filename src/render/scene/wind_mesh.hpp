@@ -70,7 +70,9 @@ struct WindLods {
   std::array<WindMesh, kLodCount> lods;
   int windless = 0;
 };
-WindLods buildWindLods(const Species& species, std::uint64_t seed, double age);
+// `rest` receives the rest pose's skeleton (the tree library measures it).
+WindLods buildWindLods(const Species& species, std::uint64_t seed, double age,
+                       TreeSkeleton* rest = nullptr);
 
 // The same for any meshes of the tree: each mesher turns a posed skeleton into a mesh, and
 // every mesh gets its wind bases from the same five skeletons (the designer's preview

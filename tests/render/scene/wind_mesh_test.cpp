@@ -32,7 +32,8 @@ TEST(WindMesh, WithoutWindTheRestPoseIsTheModelsTree) {
 
 TEST(WindMesh, AnyMeshersShareTheFivePosesAndTheRestPoseAloneHasNoBases) {
   const Species maple = test::loadNamedSpecies("maple");
-  const WindLods lods = buildWindLods(maple, 3, 0.4);
+  TreeSkeleton lodsRest;
+  const WindLods lods = buildWindLods(maple, 3, 0.4, &lodsRest);
   const std::vector<SkeletonMesher> lod1 = {[&](const TreeSkeleton& skeleton, TreeMesh& mesh) {
     buildLodInto(skeleton, maple, 1, mesh);
   }};
@@ -41,6 +42,9 @@ TEST(WindMesh, AnyMeshersShareTheFivePosesAndTheRestPoseAloneHasNoBases) {
   const std::vector<WindMesh> restOnly =
       buildWindMeshes(maple, 3, 0.4, lod1, nullptr, nullptr, false);
   ASSERT_EQ(withBases.size(), 1u);
+  ASSERT_EQ(lodsRest.segments.size(), rest.segments.size());
+  for (std::size_t i = 0; i < rest.segments.size(); ++i)
+    EXPECT_EQ(lodsRest.segments[i].end(), rest.segments[i].end());
   EXPECT_EQ(rest.segments.size(),
             buildTree(maple, windBuildOptions(maple, 3, 0.4, {}, 0.0)).segments.size());
   const WindPart& a = lods.lods[1].parts[0];

@@ -112,20 +112,18 @@ void DesignSession::apply(const EditAction& edit, std::uint64_t gesture) {
 }
 
 bool DesignSession::undo() {
-  if (undo_.empty()) return false;
-  redo_.push_back(std::move(species_));
-  species_ = std::move(undo_.back());
-  undo_.pop_back();
-  lastGesture_ = 0;
-  ++version_;
-  return true;
+  return stepBack(undo_, redo_);
 }
 
 bool DesignSession::redo() {
-  if (redo_.empty()) return false;
-  undo_.push_back(std::move(species_));
-  species_ = std::move(redo_.back());
-  redo_.pop_back();
+  return stepBack(redo_, undo_);
+}
+
+bool DesignSession::stepBack(std::vector<Species>& from, std::vector<Species>& to) {
+  if (from.empty()) return false;
+  to.push_back(std::move(species_));
+  species_ = std::move(from.back());
+  from.pop_back();
   lastGesture_ = 0;
   ++version_;
   return true;

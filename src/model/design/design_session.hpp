@@ -81,6 +81,10 @@ class DesignSession {
   bool redo();
 
  private:
+  // Takes the newest state of `from` back, keeping the current one on `to` (undo: from the
+  // undo stack to the redo stack; redo the other way).
+  bool stepBack(std::vector<Species>& from, std::vector<Species>& to);
+
   Species species_;
   std::vector<Species> undo_, redo_;
   std::uint64_t version_ = 0;

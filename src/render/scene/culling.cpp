@@ -26,20 +26,57 @@ float projectedPixels(float height_m, float distance_m, float pixelsPerRadian) {
   return height_m * pixelsPerRadian / std::max(distance_m, 1e-3f);
 }
 
+std::optional<RenderQuality> parseRenderQuality(std::string_view text) {
+  for (RenderQuality q : {RenderQuality::Draft, RenderQuality::Balanced, RenderQuality::High})
+    if (text == toString(q)) return q;
+  return std::nullopt;
+}
+
+std::string_view toString(RenderQuality quality) {
+  switch (quality) {
+    case RenderQuality::Draft:
+      return "draft";
+    case RenderQuality::Balanced:
+      return "balanced";
+    case RenderQuality::High:
+      return "high";
+  }
+  return "balanced";
+}
+
+std::array<float, 3> switchPixelsFor(RenderQuality quality) {
+  switch (quality) {
+    // LOD1's leaf clusters are the costliest part of a frame on llvmpipe: draft keeps them
+    // for the nearest trees only.
+    case RenderQuality::Draft:
+      return {1200.0f, 450.0f, 160.0f};
+    case RenderQuality::Balanced:
+      return LodSettings{}.switchPixels;
+    // LOD0 for every tree taller than 150 pixels, LOD1 down to the impostors, no crown hull.
+    case RenderQuality::High:
+      return {150.0f, 60.0f, 60.0f};
+  }
+  return LodSettings{}.switchPixels;
+}
+
 LodChoice chooseLevel(float pixels, const LodSettings& s) {
   if (s.forcedLevel >= 0) return {static_cast<std::int8_t>(s.forcedLevel), -1, 0.0f};
   if (pixels < s.minPixels) return {};
   const int coarsest = s.impostors ? kLevelImpostor : 2;
-  for (int level = 0; level < 3; ++level) {
+  int level = 0;
+  while (level < coarsest) {
+    // The next level drawn: mesh levels whose range below this one is empty are skipped.
+    int next = level + 1;
+    while (next < coarsest && s.switchPixels[next] >= s.switchPixels[level]) ++next;
     const float upper = s.switchPixels[level] * (1.0f + s.fadeBand);
     const float lower = s.switchPixels[level] * (1.0f - s.fadeBand);
     if (pixels >= upper) return {static_cast<std::int8_t>(level), -1, 0.0f};
-    if (pixels > lower && level + 1 <= coarsest) {
+    if (pixels > lower) {
       // Linear in pixels across the band: 0 at its top, 1 at its bottom.
       const float fade = (upper - pixels) / (upper - lower);
-      return {static_cast<std::int8_t>(level), static_cast<std::int8_t>(level + 1), fade};
+      return {static_cast<std::int8_t>(level), static_cast<std::int8_t>(next), fade};
     }
-    if (level + 1 > coarsest) return {static_cast<std::int8_t>(level), -1, 0.0f};
+    level = next;
   }
   return {static_cast<std::int8_t>(coarsest), -1, 0.0f};
 }

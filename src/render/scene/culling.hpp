@@ -7,6 +7,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -27,8 +29,10 @@ struct Frustum {
 
 struct LodSettings {
   // Projected tree height (pixels) above which each level is used: LOD0, LOD1, LOD2;
-  // smaller trees are impostors, and trees under minPixels are not drawn.
-  // Impostor frames are 64 pixels (ImpostorSettings), so impostors are never magnified.
+  // smaller trees are impostors, and trees under minPixels are not drawn. A mesh level whose
+  // size is not below the finer one's is skipped (high quality skips LOD2). Impostor frames
+  // are 64 pixels (ImpostorSettings), so impostors are never magnified. The defaults are
+  // the balanced quality.
   std::array<float, 3> switchPixels{600.0f, 220.0f, 100.0f};
   float minPixels = 1.0f;
   float fadeBand = 0.15f;  // cross-fade over switch * (1 +- fadeBand)
@@ -41,6 +45,14 @@ struct LodChoice {
   std::int8_t fadeTo = -1;  // the coarser level it fades into, or -1
   float fade = 0.0f;        // share of the pixels the coarser level takes, 0..1
 };
+
+// How much of the forest is drawn at full detail: the switching sizes of each quality,
+// chosen by measurement (docs/rendering.md, "Quality levels").
+enum class RenderQuality { Draft, Balanced, High };
+// "draft", "balanced" or "high"; nullopt for anything else.
+std::optional<RenderQuality> parseRenderQuality(std::string_view text);
+std::string_view toString(RenderQuality quality);
+std::array<float, 3> switchPixelsFor(RenderQuality quality);
 
 // Height in pixels of an object of height `height_m` at `distance_m` (perspective).
 float projectedPixels(float height_m, float distance_m, float pixelsPerRadian);

@@ -36,6 +36,50 @@ TEST(LodChoice, FollowsProjectedSizeThroughEveryLevel) {
   EXPECT_EQ(chooseLevel(3.0f, s).level, 0);
 }
 
+TEST(RenderQuality, NamesRoundTripAndUnknownOnesAreRefused) {
+  for (RenderQuality q : {RenderQuality::Draft, RenderQuality::Balanced, RenderQuality::High})
+    EXPECT_EQ(parseRenderQuality(toString(q)), q);
+  EXPECT_FALSE(parseRenderQuality("ultra"));
+  EXPECT_FALSE(parseRenderQuality(""));
+}
+
+TEST(RenderQuality, HigherQualityDrawsEveryLevelFromSmallerSizesOn) {
+  const auto draft = switchPixelsFor(RenderQuality::Draft);
+  const auto balanced = switchPixelsFor(RenderQuality::Balanced);
+  const auto high = switchPixelsFor(RenderQuality::High);
+  EXPECT_EQ(balanced, LodSettings{}.switchPixels);
+  for (int level = 0; level < 3; ++level) {
+    EXPECT_GT(draft[level], balanced[level]);
+    EXPECT_GT(balanced[level], high[level]);
+  }
+  // High keeps LOD0 for every tree taller than about 150 pixels (the promise for
+  // stills): fully above the fade band, and at no size below it.
+  LodSettings s;
+  s.switchPixels = high;
+  EXPECT_EQ(chooseLevel(150.0f * (1.0f + s.fadeBand), s).level, 0);
+  EXPECT_EQ(chooseLevel(150.0f * (1.0f + s.fadeBand), s).fadeTo, -1);
+  EXPECT_EQ(chooseLevel(120.0f, s).level, 1);
+}
+
+TEST(LodChoice, AnEmptyLevelIsSkippedAndItsNeighboursFadeIntoEachOther) {
+  LodSettings s;
+  s.switchPixels = {150.0f, 60.0f, 60.0f};  // LOD2 has no range of its own
+  for (float px = 200.0f; px > 0.5f; px *= 0.97f) {
+    const LodChoice c = chooseLevel(px, s);
+    ASSERT_NE(c.level, 2) << px;
+    ASSERT_NE(c.fadeTo, 2) << px;
+  }
+  const LodChoice middle = chooseLevel(60.0f, s);
+  EXPECT_EQ(middle.level, 1);
+  EXPECT_EQ(middle.fadeTo, kLevelImpostor);
+  EXPECT_NEAR(middle.fade, 0.5f, 1e-5f);
+  EXPECT_EQ(chooseLevel(40.0f, s).level, kLevelImpostor);
+  // Without impostors the coarsest mesh is never skipped: it takes every size below LOD1.
+  s.impostors = false;
+  EXPECT_EQ(chooseLevel(60.0f, s).fadeTo, 2);
+  EXPECT_EQ(chooseLevel(20.0f, s).level, 2);
+}
+
 TEST(LodChoice, CrossFadesContinuouslyAcrossEachSwitch) {
   const LodSettings s;
   for (int level = 0; level < 3; ++level) {

@@ -27,16 +27,20 @@ struct Shortcut {
 // What the user did since the previous frame.
 struct ViewInput {
   std::array<bool, kViewKeyCount> held{};  // down at the end of the frame
-  std::vector<ViewKey> pressed;            // went down during it, in order (taps included)
-  glm::dvec2 lookDelta{0.0};               // pixels the pointer moved with the look button held
-  bool keyboardTaken = false;              // the panel has the keyboard (a text field)
-  std::vector<Shortcut> shortcuts;         // Ctrl+letter presses during it, in order
+  // Down at any moment of the frame: held when it began, or pressed during it. Movement
+  // follows this, so a tap between two polls moves the camera for one frame.
+  std::array<bool, kViewKeyCount> down{};
+  std::vector<ViewKey> pressed;     // went down during it, in order (taps included)
+  glm::dvec2 lookDelta{0.0};        // pixels the pointer moved with the look button held
+  bool keyboardTaken = false;       // the panel has the keyboard (a text field)
+  std::vector<Shortcut> shortcuts;  // Ctrl+letter presses during it, in order
 
   bool isHeld(ViewKey key) const { return held[static_cast<int>(key)]; }
+  bool wasDown(ViewKey key) const { return down[static_cast<int>(key)]; }
   int presses(ViewKey key) const;
   // Feeds one key event: down (press) or up (release).
   void key(ViewKey key, bool down);
-  // Clears the events of a frame, keeping which keys are held.
+  // Clears the events of a frame, keeping which keys are held (and so down in the next).
   void nextFrame();
 };
 
@@ -44,9 +48,9 @@ class CameraController {
  public:
   CameraController(Camera camera, bool walking) : camera_(camera), walking_(walking) {}
 
-  // Turns with the look delta, moves with the keys held for dt seconds (W A S D, Q E down
-  // and up, Shift five times faster) and toggles walking on each tap of G; a walker's eyes
-  // stay kEyeHeight_m above the ground.
+  // Turns with the look delta, moves dt seconds along each key that was down during the
+  // frame (W A S D, Q E down and up, Shift five times faster) and toggles walking on each
+  // tap of G; a walker's eyes stay kEyeHeight_m above the ground.
   void update(const ViewInput& input, float dt_s, const Terrain& terrain);
 
   const Camera& camera() const { return camera_; }

@@ -38,6 +38,39 @@ TEST(CameraController, ATapShorterThanAFrameStillCounts) {
   EXPECT_TRUE(held.isHeld(ViewKey::Forward));
 }
 
+TEST(CameraController, MovementKeysTappedAtFiveFramesPerSecondAllMoveTheCamera) {
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  Camera start;
+  start.yaw_deg = 90.0f;  // looking east
+  CameraController controller(start, false);
+  ViewInput input;
+  const float frame_s = 0.2f;
+  // Ten taps of W, each down and up between two polls of the window: every one moves the
+  // camera by a frame's step (20 m/s for 0.2 s), none is lost.
+  for (int i = 0; i < 10; ++i) {
+    input.nextFrame();
+    input.key(ViewKey::Forward, true);
+    input.key(ViewKey::Forward, false);
+    controller.update(input, frame_s, terrain);
+  }
+  EXPECT_NEAR(controller.camera().position.x - start.position.x, 40.0f, 1e-3f);
+  // Frames without a key do not move it.
+  input.nextFrame();
+  controller.update(input, frame_s, terrain);
+  EXPECT_NEAR(controller.camera().position.x - start.position.x, 40.0f, 1e-3f);
+  // A key held from an earlier frame and let go during this one still moves it this frame,
+  // and not the next.
+  input.nextFrame();
+  input.key(ViewKey::Back, true);
+  controller.update(input, frame_s, terrain);
+  input.nextFrame();
+  input.key(ViewKey::Back, false);
+  controller.update(input, frame_s, terrain);
+  input.nextFrame();
+  controller.update(input, frame_s, terrain);
+  EXPECT_NEAR(controller.camera().position.x - start.position.x, 32.0f, 1e-3f);
+}
+
 TEST(CameraController, ShortcutsAreEventsOfOneFrame) {
   ViewInput input;
   input.shortcuts.push_back({'S', false});

@@ -65,9 +65,10 @@ void runRender(const RenderArgs& args) {
   checkWritable(args.out);
   std::optional<Field> overlay;
   if (!args.view.overlay.empty()) overlay = source.overlay(args.view.overlay);
-  const Camera camera = cameraFrom(args.view, source.terrain);
+  checkCameraOption(args.view);
   if (source.run || args.demoTrees > 0) source.buildLibrary();
   const Forest forest = source.forestOf(year, args.demoTrees);
+  const Camera camera = cameraFrom(args.view, source.terrain, &forest, source.library.get());
 
   const double loadMs = millisecondsSince(start);
   StillStats stats;

@@ -10,6 +10,7 @@
 #include "app/view_panel.hpp"
 #include "render/gl/window.hpp"
 #include "render/scene/camera_controller.hpp"
+#include "render/scene/lod_budget.hpp"
 #include "sim/image_io.hpp"
 
 namespace eco {
@@ -21,6 +22,7 @@ struct ViewArgs {
   std::size_t demoTrees = 0;
   int frames = 0;  // > 0: quit after this many frames (automation, tests)
   std::string screenshot = "ecoforest_view.png";
+  double targetFps = 30.0;  // 0: the quality's switching sizes, fixed
   ViewOptions view;
 };
 
@@ -61,6 +63,7 @@ class SnapshotForests {
 void runView(const ViewArgs& args) {
   SceneSource source = openSceneSource(args.source);
   if (args.year) source.requireSnapshot(*args.year);
+  checkCameraOption(args.view);
   ViewState state;
   state.hasRun = source.run.has_value();
   state.years = source.run ? source.run->snapshotYears : std::vector<int>{};
@@ -86,8 +89,10 @@ void runView(const ViewArgs& args) {
   SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
                          source.library.get());
   if (overlay) renderer.terrain().setOverlay(args.view.overlay, *overlay);
-  CameraController controller(cameraFrom(args.view, source.terrain), args.view.view == "ground");
   RenderOptions options = renderOptionsFrom(args.view, source.scenario);
+  std::optional<LodBudget> budget;
+  if (args.targetFps > 0.0 && args.view.forceLevel < 0)
+    budget.emplace(options.lod.switchPixels, 1000.0 / args.targetFps);
   SnapshotForests snapshots(source, args.demoTrees);
   auto shownForest = [&] {
     return source.library ? visibleTrees(snapshots.of(state.years[state.yearIndex]),
@@ -95,13 +100,21 @@ void runView(const ViewArgs& args) {
                           : Forest{};
   };
   Forest forest = shownForest();
+  CameraController controller(cameraFrom(args.view, source.terrain, &forest, source.library.get()),
+                              args.view.view == "ground");
   RenderTarget target;
   FrameStats stats;
   double lastTime = window.seconds();
   for (int frame = 1; !window.shouldClose(); ++frame) {
     const ViewInput& input = window.beginFrame();
     const double now = window.seconds();
-    const float dt = static_cast<float>(std::min(now - lastTime, 0.1));
+    if (budget && frame > 2) {  // the first frames build the renderer's caches
+      budget->update(1000.0 * (now - lastTime));
+      options.lod.switchPixels = budget->switchPixels();
+    }
+    // Capped so that a stall (a snapshot loading) does not fling the camera, but above the
+    // frame time of llvmpipe at a few frames per second.
+    const float dt = static_cast<float>(std::min(now - lastTime, 0.5));
     lastTime = now;
     controller.update(input, dt, source.terrain);
     bool screenshot = !input.keyboardTaken && input.presses(ViewKey::Screenshot) > 0;
@@ -110,7 +123,8 @@ void runView(const ViewArgs& args) {
     const bool yearStepped = state.advance(dt);
     options.wind.time += dt * 2.0;
 
-    const PanelChanges changed = drawViewPanel(state, speciesNames, options, controller, stats);
+    const PanelChanges changed =
+        drawViewPanel(state, speciesNames, options, controller, stats, budget ? &*budget : nullptr);
     screenshot = screenshot || changed.screenshot;
     if (changed.overlay) {
       if (state.showOverlay)
@@ -151,6 +165,14 @@ void addViewCommand(CLI::App& app) {
   command->add_option("--frames", args->frames,
                       "Quit after this many frames, saving a screenshot (automation)");
   command->add_option("--screenshot", args->screenshot, "PNG file the screenshot key writes");
+  command
+      ->add_option("--target-fps", args->targetFps,
+                   "Frame rate to hold by moving the levels of detail (0: the quality's fixed "
+                   "switching sizes)")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
+  // The window starts from balanced and adapts; stills and time-lapses default to high.
+  args->view.quality = RenderQuality::Balanced;
   addFrameOptions(*command, args->view);
   addCameraOptions(*command, args->view);
   command->callback([args] { runView(*args); });

@@ -1,6 +1,7 @@
 #include "app/view_options.hpp"
 
 #include "core/error.hpp"
+#include "render/scene/tree_clearance.hpp"
 
 namespace eco {
 
@@ -39,6 +40,18 @@ void addFrameOptions(CLI::App& command, ViewOptions& o) {
       ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str();
   command
+      .add_option_function<std::string>(
+          "--quality",
+          [&o](const std::string& text) {
+            const std::optional<RenderQuality> parsed = parseRenderQuality(text);
+            if (!parsed)
+              throw CLI::ValidationError("--quality",
+                                         "expected draft, balanced or high, got '" + text + "'");
+            o.quality = *parsed;
+          },
+          "How much is drawn at full detail: draft, balanced or high")
+      ->default_str(std::string(toString(o.quality)));
+  command
       .add_option("--level", o.forceLevel, "Draw every tree at one level: 0-2 meshes, 3 impostors")
       ->check(CLI::Range(0, 3));
   command.add_flag("--no-impostors", o.noImpostors,
@@ -59,18 +72,22 @@ void addCameraOptions(CLI::App& command, ViewOptions& o) {
       "Colour the terrain by a map: a condition, suitability_<species> or canopy_height");
 }
 
-Camera cameraFrom(const ViewOptions& o, const Terrain& terrain) {
-  if (!o.camera.empty()) {
-    std::optional<Camera> camera = parseCamera(o.camera);
-    if (!camera)
-      throw InputError(
-          {"--camera", 0, ""},
-          "expected five numbers X,Y,Z,YAW,PITCH with PITCH in -90..90, got '" + o.camera + "'");
-    return *camera;
-  }
+void checkCameraOption(const ViewOptions& o) {
+  if (!o.camera.empty() && !parseCamera(o.camera))
+    throw InputError(
+        {"--camera", 0, ""},
+        "expected five numbers X,Y,Z,YAW,PITCH with PITCH in -90..90, got '" + o.camera + "'");
+}
+
+Camera cameraFrom(const ViewOptions& o, const Terrain& terrain, const Forest* trees,
+                  const TreeLibrary* library) {
+  checkCameraOption(o);
+  if (!o.camera.empty()) return *parseCamera(o.camera);
   const CameraPreset preset = o.view == "ground" ? CameraPreset::Ground
                               : o.view == "low"  ? CameraPreset::Low
                                                  : CameraPreset::Overview;
+  if (preset == CameraPreset::Ground && trees && library && trees->size() > 0)
+    return groundCamera(terrain, *trees, *library);
   return presetCamera(preset, terrain);
 }
 
@@ -81,6 +98,7 @@ RenderOptions renderOptionsFrom(const ViewOptions& o, const Scenario& scenario) 
   r.wind.directed_wg = o.windDirected_wg;
   r.wind.sway_ws = o.windSway_ws;
   r.wind.time = o.windTime;
+  r.lod.switchPixels = switchPixelsFor(o.quality);
   r.lod.forcedLevel = o.forceLevel;
   r.lod.impostors = !o.noImpostors;
   r.shadows = !o.noShadows;

@@ -10,6 +10,7 @@
 
 #include "render/gl/scene_renderer.hpp"
 #include "render/scene/camera.hpp"
+#include "render/scene/forest.hpp"
 #include "render/scene/frame_size.hpp"
 #include "sim/scenario.hpp"
 
@@ -23,6 +24,9 @@ struct ViewOptions {
   // is calm).
   double windDirected_wg = 1.0, windSway_ws = 1.0;
   double windTime = 0.0;
+  // Stills and time-lapses are offline work and draw at high quality; `view` starts at
+  // balanced and adapts to its frame-time target.
+  RenderQuality quality = RenderQuality::High;
   int forceLevel = -1;  // -1: by size on screen
   bool noImpostors = false, noShadows = false;
   // render and view only:
@@ -33,14 +37,18 @@ struct ViewOptions {
 
 // --size WIDTHxHEIGHT alone (the designer's window).
 void addSizeOption(CLI::App& command, FrameSize& size);
-// --size, --day, --hour, --wind-from, --wind-wg, --wind-ws, --level, --no-impostors,
-// --no-shadows: what every command that draws frames takes.
+// --size, --day, --hour, --wind-from, --wind-wg, --wind-ws, --quality, --level,
+// --no-impostors, --no-shadows: what every command that draws frames takes.
 void addFrameOptions(CLI::App& command, ViewOptions& options);
 // --camera, --view, --wind-time, --overlay: the still and the window.
 void addCameraOptions(CLI::App& command, ViewOptions& options);
 
-// The camera the options ask for; an InputError names a malformed --camera.
-Camera cameraFrom(const ViewOptions& options, const Terrain& terrain);
+// An InputError names a malformed --camera (before any slow work).
+void checkCameraOption(const ViewOptions& options);
+// The camera the options ask for. The ground preset among trees stands clear of them
+// (groundCamera); without trees it stands at the map's centre.
+Camera cameraFrom(const ViewOptions& options, const Terrain& terrain, const Forest* trees = nullptr,
+                  const TreeLibrary* library = nullptr);
 RenderOptions renderOptionsFrom(const ViewOptions& options, const Scenario& scenario);
 
 }  // namespace eco

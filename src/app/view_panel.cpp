@@ -14,7 +14,7 @@ bool ViewState::advance(double dt_s) {
 
 PanelChanges drawViewPanel(ViewState& state, const std::vector<std::string>& speciesNames,
                            RenderOptions& options, CameraController& controller,
-                           const FrameStats& stats) {
+                           const FrameStats& stats, const LodBudget* budget) {
   PanelChanges changed;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::Begin("ecoforest", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -51,6 +51,11 @@ PanelChanges drawViewPanel(ViewState& state, const std::vector<std::string>& spe
   ImGui::Text("triangles %.2f M (all LOD0: %.1f M)", stats.triangles() / 1e6,
               stats.forest.lod0Triangles / 1e6);
   ImGui::Text("frame %.1f ms, prepare %.1f ms", stats.frameMs, stats.prepareMs);
+  if (budget) {
+    ImGui::Text("target %.0f fps: LOD sizes x%.2f", 1000.0 / budget->target_ms(), budget->scale());
+    if (budget->cannotReach())
+      ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "not reachable: coarsest levels");
+  }
   changed.screenshot = ImGui::Button("screenshot (P)");
   ImGui::End();
   return changed;

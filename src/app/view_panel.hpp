@@ -1,6 +1,6 @@
 // The panel of `ecoforest view` (Dear ImGui): the snapshot year and play button, species
-// toggles, wind, sun, speed and LOD statistics. It edits the view's state; the window and
-// the camera are not its business.
+// toggles, wind, sun, speed, LOD statistics and the frame-time target. It edits the view's state;
+// the window and the camera are not its business.
 #pragma once
 
 #include <string>
@@ -8,6 +8,7 @@
 
 #include "render/gl/scene_renderer.hpp"
 #include "render/scene/camera_controller.hpp"
+#include "render/scene/lod_budget.hpp"
 
 namespace eco {
 
@@ -32,6 +33,6 @@ struct PanelChanges {
 
 PanelChanges drawViewPanel(ViewState& state, const std::vector<std::string>& speciesNames,
                            RenderOptions& options, CameraController& controller,
-                           const FrameStats& stats);
+                           const FrameStats& stats, const LodBudget* budget);
 
 }  // namespace eco

@@ -29,6 +29,28 @@ glm::vec4 boundingSphere(const WindLods& meshes) {
   return {centre, radius};
 }
 
+// Each triangle of LOD0 widens every slice its height spans to its farthest vertex (a
+// triangle is no wider than its corners), so the envelope holds the whole surface.
+std::array<float, TreeType::kEnvelopeBins> envelopeOf(const WindMesh& lod0, float height_m) {
+  std::array<float, TreeType::kEnvelopeBins> envelope{};
+  const float binsPerMetre = TreeType::kEnvelopeBins / height_m;
+  auto bin = [&](float y) {
+    return std::clamp(static_cast<int>(std::floor(y * binsPerMetre)), 0,
+                      TreeType::kEnvelopeBins - 1);
+  };
+  for (const WindPart& part : lod0.parts)
+    for (std::size_t t = 0; t + 2 < part.indices.size(); t += 3) {
+      float low = std::numeric_limits<float>::max(), high = -low, reach = 0.0f;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const glm::vec3 p = part.vertices[part.indices[t + k]].position;
+        low = std::min(low, p.y), high = std::max(high, p.y);
+        reach = std::max(reach, std::hypot(p.x, p.z));
+      }
+      for (int b = bin(low); b <= bin(high); ++b) envelope[b] = std::max(envelope[b], reach);
+    }
+  return envelope;
+}
+
 }  // namespace
 
 LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file) {
@@ -79,6 +101,7 @@ void measureType(TreeType& type, const SkeletonMeasures& rest) {
   type.height_m = std::max(static_cast<float>(rest.height_m), 1e-3f);
   type.crownRadius_m = static_cast<float>(rest.crownRadius_m);
   type.bounds = boundingSphere(type.meshes);
+  type.envelope_m = envelopeOf(type.meshes.lods[0], type.height_m);
 }
 
 TreeLibrary::TreeLibrary(std::vector<Species> species, std::vector<TreeType> types)

@@ -4,6 +4,7 @@
 // scaled to its height and crown.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -43,12 +44,18 @@ struct TreeType {
   float height_m = 0.0f;  // of the rest mesh
   float crownRadius_m = 0.0f;
   glm::vec4 bounds{0.0f};  // centre (tree frame) and radius of a sphere around every LOD
+  // The largest horizontal reach of LOD0 from the stem axis in each of kEnvelopeBins equal
+  // slices of the height (metres, tree frame): the trunk near the ground, the crown above,
+  // for keeping a camera clear of the tree as drawn.
+  static constexpr int kEnvelopeBins = 16;
+  std::array<float, kEnvelopeBins> envelope_m{};
   WindLods meshes;
   // The type whose impostor frames this one shows (ForestRenderer bakes that type's only).
   int impostorSource = 0;
 };
 
-// Height, crown and bounds of a type from its rest skeleton's measures and its meshes.
+// Height, crown, bounds and envelope of a type from its rest skeleton's measures and its
+// meshes.
 void measureType(TreeType& type, const SkeletonMeasures& rest);
 
 class TreeLibrary {

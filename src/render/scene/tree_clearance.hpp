@@ -1,0 +1,53 @@
+// How far a point is from the trees as they are drawn: each tree's envelope (its type's
+// LOD0 reach from the stem axis per slice of height, scaled like the instance) against a
+// camera. The ground preset stands where no trunk or crown is within 2 m and looks along
+// the most open direction; the trees are bucketed on a grid so that a query looks at the
+// trees near it only.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/scene/camera.hpp"
+#include "render/scene/forest.hpp"
+
+namespace eco {
+
+class TreeClearance {
+ public:
+  TreeClearance(const Forest& forest, const TreeLibrary& library);
+
+  // Distance from a world point to the nearest tree's surface as drawn, or `beyond` when no
+  // tree is nearer than that.
+  float at(glm::vec3 point, float beyond) const;
+  // How far a point can move along a unit direction, in steps of `step_m`, before it comes
+  // within `margin_m` of a tree; at most `max_m`.
+  float freeAlong(glm::vec3 point, glm::vec3 direction, float margin_m, float max_m,
+                  float step_m = 0.5f) const;
+
+  static constexpr float kCell_m = 8.0f;
+
+ private:
+  // Distance from a point to tree i's envelope, a stack of upright cylinders.
+  float distanceTo(std::size_t i, glm::vec3 point) const;
+
+  const Forest& forest_;
+  const TreeLibrary& library_;
+  float maxReach_m_ = 0.0f;  // the widest tree's reach: how far beyond a cell to look
+  glm::vec2 origin_{0.0f};   // world (x, z) of cell (0, 0)
+  int columns_ = 0, rows_ = 0;
+  std::vector<std::uint32_t> cellStart_;  // trees of cell c: order_[cellStart_[c] .. [c + 1])
+  std::vector<std::uint32_t> order_;
+};
+
+// The ground preset among trees: eyes 1.7 m above the ground at the point nearest the map's
+// centre (on a 2 m lattice, out to 300 m) where no tree is within kGroundClearance_m and
+// some bearing is open for kGroundView_m, looking along the most open bearing (the one
+// nearest north among equally open ones). Without a point that clear, the clearest one.
+inline constexpr float kGroundClearance_m = 2.0f;
+inline constexpr float kGroundView_m = 30.0f;
+Camera groundCamera(const Terrain& terrain, const Forest& forest, const TreeLibrary& library);
+
+}  // namespace eco

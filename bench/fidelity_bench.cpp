@@ -1,0 +1,151 @@
+// How close ecoforest's pictures are to its own full-detail picture, in a viewer's terms:
+// fixed views of a run's last snapshot (the valley at year 150) and of 10,000 trees planted
+// on its terrain, drawn at each quality (draft, balanced, high) and with every tree at LOD0,
+// compared as the mean difference per channel (0..255) and the SSIM of the luma after 4x
+// downsampling (core/image_metrics), with every picture saved. Goals (issue 16): at high a
+// mean difference of at most 6 and an SSIM of at least 0.85 in every view; at balanced at
+// most 10 and 0.7. The frame time of each quality is printed as well (llvmpipe here).
+//
+// The all-LOD0 reference of a whole run takes tens of minutes on llvmpipe, so the
+// reference draws every tree at LOD0 down to REFERENCE_MIN_PIXELS of height (impostors
+// below, cross-faded); 0 draws truly every tree at LOD0. For the planted scene both are
+// drawn and their difference is printed: the cost of the approximation.
+//
+// Usage: fidelity_bench [RUN_DIR | SCENARIO.toml = valley.toml] [SIZE = 1280x720]
+//                       [REFERENCE_MIN_PIXELS = 8] [OUT_DIR = fidelity] [PLANTED_TREES = 10000]
+// (a scenario: the planted scene only, on its terrain)
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/frames.hpp"
+#include "core/image_metrics.hpp"
+#include "render/gl/gl_context.hpp"
+#include "render/gl/scene_renderer.hpp"
+#include "render/scene/camera.hpp"
+#include "render/scene/frame_size.hpp"
+#include "render/scene/tree_clearance.hpp"
+#include "sim/image_io.hpp"
+#include "sim/run/run_folder.hpp"
+#include "sim/scenario.hpp"
+#include "sim/terrain.hpp"
+
+namespace {
+
+struct View {
+  std::string name;
+  eco::Camera camera;
+};
+
+// The benchmark's three views: the low preset, the ground preset among the trees, and a
+// view from 300 m above the ground a sixth of the way up the map, looking north 25 degrees
+// down.
+std::vector<View> viewsOf(const eco::Terrain& terrain, const eco::Forest& forest,
+                          const eco::TreeLibrary& library) {
+  const eco::Grid& g = terrain.grid;
+  const double east = 0.5 * g.eastOf(g.width - 1), north = g.northOf(0) / 6.0;
+  eco::Camera high;
+  high.position = eco::worldFromMap(east, north, terrain.altitudeAt(east, north) + 300.0);
+  high.pitch_deg = -25.0f;
+  return {{"low", eco::presetCamera(eco::CameraPreset::Low, terrain)},
+          {"ground", eco::groundCamera(terrain, forest, library)},
+          {"300m", high}};
+}
+
+struct Picture {
+  eco::Image image;
+  eco::FrameStats stats;
+};
+
+Picture draw(eco::SceneRenderer& renderer, const eco::Forest& forest, const eco::Camera& camera,
+             const eco::RenderOptions& options, const eco::RenderTarget& target) {
+  const eco::FrameStats stats = renderer.render(&forest, camera, options, target);
+  return {eco::readPixels(target), stats};
+}
+
+eco::RenderOptions referenceOptions(float minPixels) {
+  eco::RenderOptions options;
+  if (minPixels <= 0.0f)
+    options.lod.forcedLevel = 0;
+  else
+    options.lod.switchPixels = {minPixels, minPixels, minPixels};
+  return options;
+}
+
+void compareScene(const std::string& scene, const eco::Terrain& terrain, const eco::Forest& forest,
+                  const eco::TreeLibrary& library, eco::SceneRenderer& renderer,
+                  const eco::RenderTarget& target, float referenceMinPixels,
+                  const std::filesystem::path& out, bool checkReference) {
+  for (const View& view : viewsOf(terrain, forest, library)) {
+    const std::string stem = (out / (scene + "_" + view.name + "_")).string();
+    const glm::dvec3 at = eco::mapFromWorld(view.camera.position);
+    std::printf("%s, %s view from (%.0f, %.0f, %.0f) m, bearing %.0f, pitch %.0f\n", scene.c_str(),
+                view.name.c_str(), at.x, at.y, at.z, view.camera.yaw_deg, view.camera.pitch_deg);
+    renderer.render(&forest, view.camera, eco::RenderOptions{}, target);  // warm-up
+    const Picture reference =
+        draw(renderer, forest, view.camera, referenceOptions(referenceMinPixels), target);
+    eco::writeRgb8Image(stem + "reference.png", reference.image);
+    const eco::Image referenceSmall = eco::downsampled(reference.image, 4);
+    auto row = [&](const char* label, const Picture& p) {
+      std::printf("  %-10s %10.0f ms %14zu triangles   mean diff %6.2f   SSIM %.3f (4x: %.3f)\n",
+                  label, p.stats.frameMs, p.stats.triangles(),
+                  eco::meanAbsoluteDifference(p.image, reference.image),
+                  eco::structuralSimilarity(p.image, reference.image),
+                  eco::structuralSimilarity(eco::downsampled(p.image, 4), referenceSmall));
+    };
+    row("reference", reference);
+    if (checkReference && referenceMinPixels > 0.0f) {
+      const Picture all = draw(renderer, forest, view.camera, referenceOptions(0.0f), target);
+      eco::writeRgb8Image(stem + "all_lod0.png", all.image);
+      row("all LOD0", all);
+    }
+    for (eco::RenderQuality quality :
+         {eco::RenderQuality::Draft, eco::RenderQuality::Balanced, eco::RenderQuality::High}) {
+      eco::RenderOptions options;
+      options.lod.switchPixels = eco::switchPixelsFor(quality);
+      const Picture p = draw(renderer, forest, view.camera, options, target);
+      const std::string name(eco::toString(quality));
+      eco::writeRgb8Image(stem + name + ".png", p.image);
+      row(name.c_str(), p);
+    }
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::filesystem::path source =
+      argc > 1 ? std::filesystem::path(argv[1])
+               : std::filesystem::path(ECOFOREST_DATA_DIR) / "valley.toml";
+  const eco::FrameSize size = argc > 2 ? eco::parseFrameSize(argv[2]).value_or(eco::FrameSize{})
+                                       : eco::FrameSize{};
+  const float referenceMinPixels = argc > 3 ? std::stof(argv[3]) : 8.0f;
+  const std::filesystem::path out = argc > 4 ? argv[4] : "fidelity";
+  const std::size_t planted = argc > 5 ? std::stoul(argv[5]) : 10000;
+  std::filesystem::create_directories(out);
+
+  std::optional<eco::RunFolder> run;
+  if (source.extension() != ".toml") run = eco::openRunFolder(source);
+  const eco::Scenario scenario = run ? run->scenario : eco::loadScenario(source);
+  const eco::Terrain terrain = eco::loadTerrain(scenario);
+  const eco::TreeLibrary library(eco::loadLibrarySpecies(scenario), {});
+  eco::HeadlessGl gl;
+  eco::SceneRenderer renderer(terrain, scenario.climate.latitude_deg, &library);
+  const eco::RenderTarget target = eco::RenderTarget::create(size.width, size.height);
+  std::printf("%s, %dx%d, reference: LOD0 down to %.0f px\n", eco::glDescription().c_str(),
+              size.width, size.height, referenceMinPixels);
+
+  const eco::Forest plantedForest = eco::demoForest(terrain, library, planted, scenario.seed);
+  compareScene("planted", terrain, plantedForest, library, renderer, target, referenceMinPixels,
+               out, true);
+  if (run) {
+    const int year = run->snapshotYears.back();
+    const eco::Forest forest =
+        eco::forestFromSnapshot(eco::readSnapshot(*run, year), library, source.string());
+    compareScene("run_year" + std::to_string(year), terrain, forest, library, renderer, target,
+                 referenceMinPixels, out, false);
+  }
+  return 0;
+}

@@ -68,7 +68,10 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
                          {"SHADOW_PASS"}),
       bakeProgram_({{GL_VERTEX_SHADER, "tree.vert"}, {GL_FRAGMENT_SHADER, "tree.frag"}}, {"BAKE"}),
       impostorProgram_(
-          {{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}}) {
+          {{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}}),
+      impostorShadowProgram_(
+          {{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}},
+          {"SHADOW_PASS"}) {
   uploadMeshes();
 
   // Materials of each species, textures generated as the exporters do (in parallel: the
@@ -192,7 +195,7 @@ Image ForestRenderer::impostorFrameImage(int type, glm::ivec2 frame) const {
 void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;
-  RenderTarget target = RenderTarget::create(size, size, true);
+  RenderTarget target = RenderTarget::create(size, size, 2);
   const Instance identity{glm::vec4(0.0f), glm::vec4(1.0f, 1.0f, 0.0f, 0.0f), glm::vec4(1.0f)};
   glNamedBufferData(instances_.id(), sizeof(Instance), &identity, GL_DYNAMIC_DRAW);
   instanceCapacity_ = 1;
@@ -213,10 +216,11 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
     // Transparent texels carry the leaf colour so that filtering at the edges stays green.
     const Species& species = library_.species()[type.species];
     const glm::vec4 edge(linearFromSrgb(species.appearance.leafColor), 0.0f);
-    const glm::vec4 flatNormal(0.5f, 1.0f, 0.5f, 0.0f);
+    const glm::vec4 flatNormal(0.5f, 1.0f, 0.5f, 0.0f), centrePlane(0.5f);
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &edge.x);
     glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 1, &flatNormal.x);
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 2, &centrePlane.x);
     glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
     for (int row = 0; row < frames; ++row)
       for (int column = 0; column < frames; ++column) {
@@ -233,17 +237,18 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
         drawRanges(ranges_[t][impostorSettings_.bakeLod], type.species, {0, 1}, bakeProgram_);
       }
     Atlas& atlas = atlases_[t];
-    // Copy the two attachments into mipmapped textures of their own.
+    // Copy the attachments into mipmapped textures of their own.
     const int levels = 1 + static_cast<int>(std::log2(tile));  // mip down to 1 texel per tile
-    for (int attachment = 0; attachment < 2; ++attachment) {
-      GlName texture =
-          makeTextureStorage(attachment == 0 ? GL_SRGB8_ALPHA8 : GL_RGBA8, size, size, levels);
-      glCopyImageSubData(attachment == 0 ? target.color.id() : target.extraColor.id(),
-                         GL_TEXTURE_2D, 0, 0, 0, 0, texture.id(), GL_TEXTURE_2D, 0, 0, 0, 0, size,
-                         size, 1);
+    auto copy = [&](const GlName& attachment, GLenum format) {
+      GlName texture = makeTextureStorage(format, size, size, levels);
+      glCopyImageSubData(attachment.id(), GL_TEXTURE_2D, 0, 0, 0, 0, texture.id(), GL_TEXTURE_2D, 0,
+                         0, 0, 0, size, size, 1);
       glGenerateTextureMipmap(texture.id());
-      (attachment == 0 ? atlas.albedo : atlas.normal) = std::move(texture);
-    }
+      return texture;
+    };
+    atlas.albedo = copy(target.color, GL_SRGB8_ALPHA8);
+    atlas.normal = copy(target.extraColors[0], GL_RGBA8);
+    atlas.depth = copy(target.extraColors[1], GL_RGBA8);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -256,6 +261,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       Frustum::fromMatrix(camera.projection(static_cast<float>(width) / height) * camera.view());
   const float pixelsPerRadian = camera.pixelsPerRadian(height);
   pixelsPerUnit_ = pixelsPerRadian;
+  shadowPixelsPerMetre_ = shadows.mapPixelsPerMetre;
   const std::size_t n = forest.size();
   choices_.assign(n, LodChoice{});
   casts_.assign(n, 0);
@@ -270,17 +276,23 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       const glm::vec3 centre = forest.position[i] + glm::vec3(c * local.x - s * local.z, local.y,
                                                               s * local.x + c * local.z);
       const float radius = type.bounds.w * std::max(sx, sy);
-      if (!frustum.intersectsSphere(centre, radius)) {
-        outside[i] = 1;
-        continue;
-      }
       const float distance = glm::length(centre - camera.position);
       distances_[i] = distance;
-      choices_[i] =
-          chooseLevel(projectedPixels(type.height_m * sy, distance, pixelsPerRadian), lod);
+      const float pixels = projectedPixels(type.height_m * sy, distance, pixelsPerRadian);
       const glm::vec3 d = glm::abs(centre - shadows.centre);
-      casts_[i] = choices_[i].level >= 0 && choices_[i].level < kLevelImpostor &&
-                  shadows.halfSize_m > 0.0f && std::max(d.x, d.z) < shadows.halfSize_m + radius;
+      // A tree in the shadowed square casts even when it is outside the view (its shadow
+      // may fall into it) or too far to be drawn as a mesh.
+      const bool inShadowBox = shadows.halfSize_m > 0.0f && pixels >= lod.minPixels &&
+                               std::max(d.x, d.z) < shadows.halfSize_m + radius;
+      if (!frustum.intersectsSphere(centre, radius)) {
+        outside[i] = 1;
+        casts_[i] = inShadowBox ? kSpriteCaster : kNoCaster;
+        continue;
+      }
+      choices_[i] = chooseLevel(pixels, lod);
+      casts_[i] = !inShadowBox || choices_[i].level < 0 ? kNoCaster
+                  : choices_[i].level < kLevelImpostor  ? kMeshCaster
+                                                        : kSpriteCaster;
     }
   });
 
@@ -289,7 +301,10 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   // fragments of the ones behind before they are shaded — a third of the frame at 300k
   // trees. A total order, so the frame does not depend on the thread count.
   buckets_.assign(types.size() * kLevelCount, Bucket{});
-  shadowBuckets_.assign(types.size(), Bucket{});
+  shadowBuckets_.assign(types.size() * 2, Bucket{});
+  auto shadowBucket = [&](std::size_t i) -> Bucket& {
+    return shadowBuckets_[forest.type[i] * 2 + (casts_[i] == kSpriteCaster)];
+  };
   // Every draw of tree i: its type (and the type it blends into) split its presence range,
   // and a level cross-fade splits each type's range again.
   auto forEachDraw = [&](std::size_t i, auto&& draw) {
@@ -314,11 +329,11 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       ++stats.culled;
     else if (choices_[i].level < 0)
       ++stats.tooSmall;
+    if (casts_[i]) ++shadowBucket(i).count;
     if (choices_[i].level < 0) continue;
     forEachDraw(i, [&](int type, int level, float, float, float) {
       ++buckets_[type * kLevelCount + level].count;
     });
-    if (casts_[i]) ++shadowBuckets_[forest.type[i]].count;
   }
   GLuint next = 0;
   for (Bucket& b : buckets_) b.first = next, next += b.count, b.count = 0;
@@ -326,7 +341,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   staging_.resize(next);
   order_.clear();
   for (std::size_t i = 0; i < n; ++i)
-    if (choices_[i].level >= 0) order_.push_back(static_cast<std::uint32_t>(i));
+    if (choices_[i].level >= 0 || casts_[i]) order_.push_back(static_cast<std::uint32_t>(i));
   tbb::parallel_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
     return distances_[a] < distances_[b] || (distances_[a] == distances_[b] && a < b);
   });
@@ -337,10 +352,11 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
           glm::vec4(scale * forest.scaleXZ[i], scale * forest.scaleY[i], lo, forest.phase[i]),
           glm::vec4(forest.tint[i], hi)};
     };
-    forEachDraw(i, [&](int type, int level, float scale, float lo, float hi) {
-      put(buckets_[type * kLevelCount + level], scale, lo, hi);
-    });
-    if (casts_[i]) put(shadowBuckets_[forest.type[i]], 1.0f, 0.0f, forest.presence[i]);
+    if (choices_[i].level >= 0)
+      forEachDraw(i, [&](int type, int level, float scale, float lo, float hi) {
+        put(buckets_[type * kLevelCount + level], scale, lo, hi);
+      });
+    if (casts_[i]) put(shadowBucket(i), 1.0f, 0.0f, forest.presence[i]);
   }
   if (staging_.size() > instanceCapacity_) {
     instanceCapacity_ = std::max<std::size_t>(staging_.size() + staging_.size() / 2, 1024);
@@ -356,7 +372,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       stats.triangles += count * (level < kLevelImpostor ? triangles_[t][level] : 2);
       stats.lod0Triangles += count * triangles_[t][0];
     }
-  for (std::size_t t = 0; t < types.size(); ++t) stats.shadowCasters += shadowBuckets_[t].count;
+  for (const Bucket& b : shadowBuckets_) stats.shadowCasters += b.count;
   return stats;
 }
 
@@ -383,6 +399,7 @@ void ForestRenderer::draw() const {
     impostorProgram_.set("uBounds", types[source].bounds);
     glBindTextureUnit(1, atlases_[source].albedo.id());
     glBindTextureUnit(2, atlases_[source].normal.id());
+    glBindTextureUnit(5, atlases_[source].depth.id());
     glDrawArraysInstancedBaseInstance(GL_POINTS, 0, 1, bucket.count, bucket.first);
   }
 }
@@ -394,7 +411,22 @@ void ForestRenderer::drawShadows() const {
   meshShadowProgram_.use();
   // Crown proxies cast the shadows: the shadow map is too coarse for twigs to matter.
   for (std::size_t t = 0; t < types.size(); ++t)
-    drawRanges(ranges_[t][2], types[t].species, shadowBuckets_[t], meshShadowProgram_);
+    drawRanges(ranges_[t][2], types[t].species, shadowBuckets_[2 * t], meshShadowProgram_);
+
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glBindVertexArray(impostorArray_.id());
+  glVertexArrayVertexBuffer(impostorArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
+  impostorShadowProgram_.use();
+  impostorShadowProgram_.set("uFrames", impostorSettings_.frames);
+  impostorShadowProgram_.set("uPixelsPerUnit", shadowPixelsPerMetre_);
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    const Bucket& bucket = shadowBuckets_[2 * t + 1];
+    if (bucket.count == 0) continue;
+    const int source = impostorSource(static_cast<int>(t));
+    impostorShadowProgram_.set("uBounds", types[source].bounds);
+    glBindTextureUnit(1, atlases_[source].albedo.id());
+    glDrawArraysInstancedBaseInstance(GL_POINTS, 0, 1, bucket.count, bucket.first);
+  }
 }
 
 }  // namespace eco

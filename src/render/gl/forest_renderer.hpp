@@ -28,7 +28,8 @@ namespace eco {
 // Where trees cast shadows: within `halfSize_m` of `centre`, and only trees drawn as meshes.
 struct ShadowBox {
   glm::vec3 centre{0.0f};
-  float halfSize_m = 0.0f;  // 0: no shadow pass
+  float halfSize_m = 0.0f;         // 0: no shadow pass
+  float mapPixelsPerMetre = 0.0f;  // of the shadow map's orthographic view: sprite sizes
 };
 
 // One tree instance as the shaders read it (attributes 8-10).
@@ -92,7 +93,10 @@ class ForestRenderer {
     float translucency = 0.0f;
   };
   struct Atlas {
-    GlName albedo, normal;
+    // sRGB albedo with coverage; normal (tree frame) with the translucency; depth: how far
+    // a texel lies toward the frame's camera from the plane through the centre, in
+    // [-radius, radius] stored as [0, 1], so that an impostor's pixels know where they are.
+    GlName albedo, normal, depth;
   };
   struct Bucket {  // instances of one type at one level, contiguous in the instance buffer
     GLuint first = 0;
@@ -108,7 +112,7 @@ class ForestRenderer {
 
   const TreeLibrary& library_;
   ImpostorSettings impostorSettings_;
-  Program meshProgram_, meshShadowProgram_, bakeProgram_, impostorProgram_;
+  Program meshProgram_, meshShadowProgram_, bakeProgram_, impostorProgram_, impostorShadowProgram_;
   GlName vertices_, indices_, meshArray_, impostorArray_, instances_;
   std::size_t instanceCapacity_ = 0;
   float pixelsPerUnit_ = 1.0f;  // of the prepared frame: sprite sizes
@@ -117,7 +121,11 @@ class ForestRenderer {
   std::vector<std::vector<Material>> materials_;  // [species][MaterialKind]
   std::vector<Atlas> atlases_;                    // [type]; baked for impostor sources only
   std::vector<Bucket> buckets_;                   // [type * kLevelCount + level]
-  std::vector<Bucket> shadowBuckets_;             // [type]
+  // Shadow casters: trees drawn as meshes cast with their crown proxy (LOD2); impostors
+  // and trees outside the view cast as impostor sprites seen from the sun.
+  enum Caster : std::uint8_t { kNoCaster, kMeshCaster, kSpriteCaster };
+  std::vector<Bucket> shadowBuckets_;  // [type * 2 + (caster == kSpriteCaster)]
+  float shadowPixelsPerMetre_ = 0.0f;
   // Scratch of prepare(), kept to avoid reallocating every frame.
   std::vector<LodChoice> choices_;
   std::vector<std::uint8_t> casts_;

@@ -70,7 +70,7 @@ GlName makeTexture(const Image& image, bool repeat) {
   return texture;
 }
 
-RenderTarget RenderTarget::create(int width, int height, bool extraColor) {
+RenderTarget RenderTarget::create(int width, int height, int extraColors) {
   RenderTarget t;
   t.width = width;
   t.height = height;
@@ -83,10 +83,13 @@ RenderTarget RenderTarget::create(int width, int height, bool extraColor) {
     return texture;
   };
   t.color = attach(GL_SRGB8_ALPHA8, GL_COLOR_ATTACHMENT0);
-  if (extraColor) {
-    t.extraColor = attach(GL_RGBA8, GL_COLOR_ATTACHMENT1);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(id, 2, buffers);
+  if (extraColors > 0) {
+    std::vector<GLenum> buffers{GL_COLOR_ATTACHMENT0};
+    for (int k = 1; k <= extraColors; ++k) {
+      buffers.push_back(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + k));
+      t.extraColors.push_back(attach(GL_RGBA8, buffers.back()));
+    }
+    glNamedFramebufferDrawBuffers(id, static_cast<GLsizei>(buffers.size()), buffers.data());
   }
   t.depth = attach(GL_DEPTH_COMPONENT32F, GL_DEPTH_ATTACHMENT);
   if (glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)

@@ -2,6 +2,8 @@
 // the renderer needs: immutable buffers, textures from images, render targets, read-back.
 #pragma once
 
+#include <vector>
+
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -60,11 +62,11 @@ struct RenderTarget {
   int width = 0, height = 0;
   GlName framebuffer;
   GlName color;
-  GlName extraColor;  // second colour attachment, present when asked for (impostor normals)
+  // Linear RGBA8 attachments 1, 2, ... when asked for (the impostors' normals and depths).
+  std::vector<GlName> extraColors;
   GlName depth;
 
-  // extraColor: a linear RGBA8 second attachment (the impostors' normals).
-  static RenderTarget create(int width, int height, bool extraColor = false);
+  static RenderTarget create(int width, int height, int extraColors = 0);
   void bind() const;
 };
 

@@ -88,6 +88,7 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
                     std::abs(light.toSun.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1));
     const float r = box.halfSize_m * 1.5f;  // the square seen from a slanted sun
     u.lightViewProj = glm::ortho(-r, r, -r, r, 0.0f, depth) * lightView;
+    box.mapPixelsPerMetre = static_cast<float>(options.shadowMapSize) / (2.0f * r);
   }
   u.camera = glm::vec4(camera.position, static_cast<float>(options.wind.time));
   u.toSun = glm::vec4(light.toSun, shadows ? 1.0f : 0.0f);

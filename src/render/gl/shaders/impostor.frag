@@ -1,4 +1,5 @@
-in vec3 vWorld;
+flat in vec3 vCentre;
+flat in vec3 vRight, vUp, vToward;
 flat in vec2 vCell;
 flat in vec3 vTint;
 flat in vec2 vKeep;
@@ -6,6 +7,7 @@ flat in float vYaw;
 
 layout(binding = 1) uniform sampler2D uAlbedoAtlas;
 layout(binding = 2) uniform sampler2D uNormalAtlas;
+layout(binding = 5) uniform sampler2D uDepthAtlas;
 uniform int uFrames;
 
 out vec4 outColor;
@@ -16,7 +18,16 @@ void main() {
   vec2 uv = (vCell + vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y)) / float(uFrames);
   vec4 albedo = texture(uAlbedoAtlas, uv);
   if (albedo.a < 0.5) discard;
+#ifdef SHADOW_PASS
+  return;
+#else
   vec4 packedNormal = texture(uNormalAtlas, uv);
   vec3 normal = rotateYaw(normalize(packedNormal.xyz * 2.0 - 1.0), vYaw);
-  outColor = vec4(shade(albedo.rgb * vTint, normal, vWorld, packedNormal.a), 1.0);
+  // The pixel's own place in the crown, so that it takes its own shadow and fog: inner
+  // and far-side leaves fall in the shadow of the tree and its neighbours as a mesh's do.
+  vec2 onSprite = vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y) * 2.0 - 1.0;
+  float toward = texture(uDepthAtlas, uv).r * 2.0 - 1.0;
+  vec3 world = vCentre + onSprite.x * vRight + onSprite.y * vUp + toward * vToward;
+  outColor = vec4(shade(albedo.rgb * vTint, normal, world, packedNormal.a), 1.0);
+#endif
 }

@@ -25,6 +25,7 @@ float valueNoise(vec3 p) {
 #ifdef BAKE
 layout(location = 0) out vec4 outAlbedo;
 layout(location = 1) out vec4 outNormal;
+layout(location = 2) out vec4 outDepth;
 #else
 out vec4 outColor;
 #endif
@@ -53,6 +54,10 @@ void main() {
 #ifdef BAKE
   outAlbedo = vec4(albedo.rgb * vTint, 1.0);
   outNormal = vec4(normal * 0.5 + 0.5, uTranslucency);
+  // The bake's orthographic view spans 4 radii from 2 radii in front of the centre, so the
+  // window depth z is 0.5 on the plane through the centre: toward the camera by
+  // (2 - 4z) radii, stored in [0, 1] for [-1, 1] radii.
+  outDepth = vec4(clamp(1.5 - 2.0 * gl_FragCoord.z, 0.0, 1.0));
 #else
   outColor = vec4(shade(albedo.rgb * vTint, normal, vWorld, uTranslucency), 1.0);
 #endif

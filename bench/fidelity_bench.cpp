@@ -77,6 +77,7 @@ void compareScene(const std::string& scene, const eco::Terrain& terrain, const e
                   const eco::TreeLibrary& library, eco::SceneRenderer& renderer,
                   const eco::RenderTarget& target, float referenceMinPixels,
                   const std::filesystem::path& out, bool checkReference) {
+  renderer.setForestFloor(forest);
   for (const View& view : viewsOf(terrain, forest, library)) {
     const std::string stem = (out / (scene + "_" + view.name + "_")).string();
     const glm::dvec3 at = eco::mapFromWorld(view.camera.position);
@@ -119,8 +120,8 @@ int main(int argc, char** argv) {
   const std::filesystem::path source =
       argc > 1 ? std::filesystem::path(argv[1])
                : std::filesystem::path(ECOFOREST_DATA_DIR) / "valley.toml";
-  const eco::FrameSize size = argc > 2 ? eco::parseFrameSize(argv[2]).value_or(eco::FrameSize{})
-                                       : eco::FrameSize{};
+  const eco::FrameSize size =
+      argc > 2 ? eco::parseFrameSize(argv[2]).value_or(eco::FrameSize{}) : eco::FrameSize{};
   const float referenceMinPixels = argc > 3 ? std::stof(argv[3]) : 8.0f;
   const std::filesystem::path out = argc > 4 ? argv[4] : "fidelity";
   const std::size_t planted = argc > 5 ? std::stoul(argv[5]) : 10000;

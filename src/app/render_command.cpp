@@ -86,6 +86,7 @@ Image drawStill(const SceneSource& source, const Forest& forest, const Camera& c
   SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
                          source.library.get());
   if (overlay) renderer.terrain().setOverlay(view.overlay, *overlay);
+  renderer.setForestFloor(forest);
   RenderTarget target = RenderTarget::create(view.size.width, view.size.height);
   const double setupMs = millisecondsSince(rendererStart);
   const FrameStats frame =

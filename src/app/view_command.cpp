@@ -100,6 +100,7 @@ void runView(const ViewArgs& args) {
                           : Forest{};
   };
   Forest forest = shownForest();
+  renderer.setForestFloor(forest);
   CameraController controller(cameraFrom(args.view, source.terrain, &forest, source.library.get()),
                               args.view.view == "ground");
   RenderTarget target;
@@ -132,7 +133,10 @@ void runView(const ViewArgs& args) {
       else
         renderer.terrain().clearOverlay();
     }
-    if (yearStepped || changed.year || changed.species) forest = shownForest();
+    if (yearStepped || changed.year || changed.species) {
+      forest = shownForest();
+      renderer.setForestFloor(forest);
+    }
 
     const FrameSize size = window.framebufferSize();
     if (size.width > 0 && size.height > 0) {

@@ -67,6 +67,7 @@ class ForestRenderer {
   // Culls, picks levels and fills the instance buffer for this camera.
   ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
                       const LodSettings& lod, const ShadowBox& shadows);
+  const TreeLibrary& library() const { return library_; }
   void draw() const;         // the colour pass of what prepare() chose
   void drawShadows() const;  // the shadow casters into the bound depth target
 

@@ -133,10 +133,15 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   return stats;
 }
 
+void SceneRenderer::setForestFloor(const Forest& forest) {
+  if (forest_) terrain_.setCanopyCover(canopyCover(forest, forest_->library(), terrainData_.grid));
+}
+
 DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size) {
   auto target = std::make_shared<RenderTarget>(RenderTarget::create(size.width, size.height));
   return [&renderer, target](const Forest& forest, const Camera& camera,
                              const RenderOptions& options) {
+    renderer.setForestFloor(forest);  // each frame's trees: the floor grows with them
     renderer.render(&forest, camera, options, *target);
     return readPixels(*target);
   };

@@ -14,6 +14,7 @@
 #include "render/scene/camera.hpp"
 #include "render/scene/culling.hpp"
 #include "render/scene/forest.hpp"
+#include "render/scene/forest_floor.hpp"
 #include "render/scene/impostor.hpp"
 #include "render/scene/render_options.hpp"
 #include "render/scene/sun.hpp"
@@ -31,6 +32,9 @@ class SceneRenderer {
   FrameStats render(const Forest* forest, const Camera& camera, const RenderOptions& options,
                     const RenderTarget& target);
 
+  // Lays the forest floor under these trees (leaf litter where crowns cover the ground,
+  // forest_floor.hpp); kept until called again, for the forest shown.
+  void setForestFloor(const Forest& forest);
   // The library's meshes changed (ForestRenderer::reloadMeshes).
   void reloadTrees(bool bakeImpostors);
 

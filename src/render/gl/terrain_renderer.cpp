@@ -106,6 +106,18 @@ void TerrainRenderer::setOverlay(const std::string& name, const Field& values) {
   overlay_ = makeTexture(image, false);
 }
 
+void TerrainRenderer::setCanopyCover(const Field& cover) {
+  // A linear 8-bit share (not an sRGB colour), filtered between cell centres.
+  std::vector<std::uint8_t> bytes(cover.size());
+  for (std::size_t c = 0; c < cover.size(); ++c)
+    bytes[c] = static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(cover[c], 0.0f, 1.0f)));
+  canopyCover_ = makeTextureStorage(GL_R8, grid_.width, grid_.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(canopyCover_.id(), 0, 0, 0, grid_.width, grid_.height, GL_RED,
+                      GL_UNSIGNED_BYTE, bytes.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+}
+
 std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass) const {
   counts_.clear();
   offsets_.clear();
@@ -121,6 +133,8 @@ std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass) const
   program.use();
   program.set("uHasOverlay", hasOverlay() ? 1 : 0);
   if (hasOverlay()) glBindTextureUnit(3, overlay_.id());
+  program.set("uHasCanopyCover", canopyCover_ ? 1 : 0);
+  if (canopyCover_) glBindTextureUnit(6, canopyCover_.id());
   glBindVertexArray(vertexArray_.id());
   glMultiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(),
                       static_cast<GLsizei>(counts_.size()));

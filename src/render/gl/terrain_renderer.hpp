@@ -24,6 +24,9 @@ class TerrainRenderer {
   // the field's range; `name` picks the ramp.
   void setOverlay(const std::string& name, const Field& values);
   void clearOverlay() { overlay_ = GlName(); }
+  // The share of each cell under crowns (forest_floor.hpp): leaf litter and moss there,
+  // grass in the open. Without it the ground is open everywhere.
+  void setCanopyCover(const Field& cover);
   bool hasOverlay() const { return static_cast<bool>(overlay_); }
 
   // Draws the chunks in the frustum; returns the triangles drawn.
@@ -36,7 +39,7 @@ class TerrainRenderer {
   Grid grid_;
   float lowest_m_ = 0.0f, highest_m_ = 0.0f;
   Program program_, shadowProgram_;
-  GlName vertices_, indices_, vertexArray_, overlay_;
+  GlName vertices_, indices_, vertexArray_, overlay_, canopyCover_;
   GLsizei indexCount_ = 0;
   struct Chunk {
     std::size_t firstIndex = 0;

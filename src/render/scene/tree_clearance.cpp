@@ -85,10 +85,14 @@ float TreeClearance::at(glm::vec3 point, float beyond) const {
   return nearest;
 }
 
-float TreeClearance::freeAlong(glm::vec3 point, glm::vec3 direction, float margin_m, float max_m,
-                               float step_m) const {
-  for (float s = step_m; s <= max_m; s += step_m)
-    if (at(point + s * direction, margin_m) < margin_m) return s - step_m;
+float openSight(const Terrain& terrain, const TreeClearance& trees, glm::vec3 eye,
+                glm::vec3 direction, float max_m) {
+  constexpr float kStep_m = 0.5f, kMargin_m = 0.5f;
+  for (float s = kStep_m; s <= max_m; s += kStep_m) {
+    const glm::vec3 p = eye + s * direction;
+    if (p.y < groundBelow(terrain, p) + kMargin_m || trees.at(p, kMargin_m) < kMargin_m)
+      return s - kStep_m;
+  }
   return max_m;
 }
 
@@ -114,7 +118,7 @@ Camera groundCamera(const Terrain& terrain, const Forest& forest, const TreeLibr
         if (sign < 0 && (k == 0 || k == 36)) continue;
         const float bearing = static_cast<float>(sign * 5 * k);
         const glm::vec3 direction(worldDirectionOfBearing(bearing));
-        const float free = clearance.freeAlong(position, direction, 0.5f, kGroundView_m);
+        const float free = openSight(terrain, clearance, position, direction, kGroundView_m);
         if (free > best.free_m) best = {bearing, free};
       }
     return best;

@@ -22,10 +22,6 @@ class TreeClearance {
   // Distance from a world point to the nearest tree's surface as drawn, or `beyond` when no
   // tree is nearer than that.
   float at(glm::vec3 point, float beyond) const;
-  // How far a point can move along a unit direction, in steps of `step_m`, before it comes
-  // within `margin_m` of a tree; at most `max_m`.
-  float freeAlong(glm::vec3 point, glm::vec3 direction, float margin_m, float max_m,
-                  float step_m = 0.5f) const;
 
   static constexpr float kCell_m = 8.0f;
 
@@ -42,9 +38,14 @@ class TreeClearance {
   std::vector<std::uint32_t> order_;
 };
 
+// How far a sight line from `eye` along a horizontal unit direction runs, in steps of half
+// a metre, before it comes within half a metre of a tree or of the ground; at most `max_m`.
+float openSight(const Terrain& terrain, const TreeClearance& trees, glm::vec3 eye,
+                glm::vec3 direction, float max_m);
+
 // The ground preset among trees: eyes 1.7 m above the ground at the point nearest the map's
 // centre (on a 2 m lattice, out to 300 m) where no tree is within kGroundClearance_m and
-// some bearing is open for kGroundView_m, looking along the most open bearing (the one
+// some bearing is open for kGroundView_m (openSight), looking along the most open bearing (the one
 // nearest north among equally open ones). Without a point that clear, the clearest one.
 inline constexpr float kGroundClearance_m = 2.0f;
 inline constexpr float kGroundView_m = 30.0f;

@@ -1,5 +1,7 @@
 #include "render/gl/terrain_renderer.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "gl_support.hpp"
@@ -74,6 +76,33 @@ TEST(TerrainRenderer, AnOverlayColoursTheGroundByTheMapsRamp) {
   EXPECT_LT(distance(east, 1.0), distance(west, 1.0));
   renderer.terrain().clearOverlay();
   EXPECT_EQ(test::compareImages(plain, renderFromAbove(renderer, 64)).max, 0);
+}
+
+TEST(TerrainRenderer, GroundUnderCrownsIsLeafLitterAndOpenGroundGrass) {
+  test::useHeadlessGl();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer renderer(terrain, 46.0, nullptr);
+  // Crowns cover the east half of the map, none the west.
+  Field cover(terrain.grid.cellCount(), 0.0f);
+  for (int y = 0; y < 33; ++y)
+    for (int x = 17; x < 33; ++x) cover[terrain.grid.index(x, y)] = 1.0f;
+  renderer.terrain().setCanopyCover(cover);
+  const Image image = renderFromAbove(renderer, 64);
+  auto meanOver = [&](int x0, int x1) {
+    glm::vec3 sum(0.0f);
+    for (int y = 8; y < 56; ++y)
+      for (int x = x0; x < x1; ++x) sum += glm::vec3(image.get(x, y));
+    return sum / static_cast<float>((x1 - x0) * 48);
+  };
+  const glm::vec3 open = meanOver(4, 24), forest = meanOver(40, 60);
+  // Grass is green above red; litter is brown, red above green.
+  EXPECT_GT(open.g, 1.2f * open.r);
+  EXPECT_GT(forest.r, forest.g);
+  // Detail within each: no flat colour (standard deviation of the green over the open half).
+  double variance = 0.0;
+  for (int y = 8; y < 56; ++y)
+    for (int x = 4; x < 24; ++x) variance += std::pow(image.get(x, y).g - open.g, 2.0);
+  EXPECT_GT(std::sqrt(variance / (20 * 48)), 0.01);
 }
 
 }  // namespace

@@ -99,10 +99,26 @@ TEST(GroundCamera, StandsClearOfEveryTrunkAndCrownAndLooksAlongTheRide) {
   const glm::dvec3 map = mapFromWorld(glm::dvec3(camera.position));
   EXPECT_NEAR(map.y, 140.0, 12.0);  // in the ride or at its edge: the stand is closed
   // Its sight line is open for kGroundView_m.
-  EXPECT_GE(TreeClearance(forest, library)
-                .freeAlong(camera.position, glm::vec3(camera.forward().x, 0, camera.forward().z),
-                           0.5f, kGroundView_m),
-            kGroundView_m - 1.0f);
+  EXPECT_GE(openSight(terrain, TreeClearance(forest, library), camera.position,
+                      glm::vec3(camera.forward().x, 0, camera.forward().z), kGroundView_m),
+            kGroundView_m);
+}
+
+TEST(GroundCamera, LooksAlongAHillsideRatherThanIntoIt) {
+  // A plane rising 20 % to the north: looking north the ground fills the view within a
+  // few metres. A sight line 1.7 m up stays half a metre above it for 30 m only where it
+  // rises less than 1.2 m over them, 30 m x 0.2 x cos(bearing): beyond 78.5 degrees from
+  // north (along the contour or down the slope).
+  Terrain terrain = test::flatTerrain(41, 5.0);
+  const Grid& g = terrain.grid;
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x)
+      terrain.height_m[g.index(x, y)] = static_cast<float>(100.0 + 0.2 * g.northOf(y));
+  const Camera camera = groundCamera(terrain, Forest{}, test::smallLibrary());
+  EXPECT_GE(std::abs(camera.yaw_deg), 78.0f);
+  EXPECT_GE(openSight(terrain, TreeClearance(Forest{}, test::smallLibrary()), camera.position,
+                      glm::vec3(camera.forward().x, 0, camera.forward().z), kGroundView_m),
+            kGroundView_m);
 }
 
 TEST(GroundCamera, OnBareGroundStandsAtTheCentreLookingNorth) {

@@ -1,4 +1,5 @@
-// Ground coloured by altitude and slope, or by a condition map (the overlay).
+// Ground coloured by altitude, slope and the crowns above it (grass in the open, leaf litter
+// and moss under trees, rock on steep slopes), or by a condition map (the overlay).
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vMapUv;
@@ -6,10 +7,23 @@ in vec2 vMapUv;
 layout(binding = 3) uniform sampler2D uOverlay;
 uniform int uHasOverlay;
 uniform vec2 uAltitudeRange;  // lowest and highest altitude of the map
+layout(binding = 6) uniform sampler2D uCanopyCover;  // share of each cell under crowns
+uniform int uHasCanopyCover;
 
 out vec4 outColor;
 
+// Smooth value noise in the ground plane (no blocks: each cell blends into its
+// neighbours), and a sum of octaves of it.
 float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
+float valueNoise(vec2 p) {
+  vec2 i = floor(p), f = fract(p);
+  f = f * f * (3.0 - 2.0 * f);
+  return mix(mix(hash(i), hash(i + vec2(1, 0)), f.x), mix(hash(i + vec2(0, 1)), hash(i + vec2(1, 1)), f.x),
+             f.y);
+}
+float octaves(vec2 p) {
+  return 0.5 * valueNoise(p) + 0.3 * valueNoise(2.03 * p + 17.0) + 0.2 * valueNoise(4.01 * p + 41.0);
+}
 
 void main() {
 #ifdef SHADOW_PASS
@@ -20,14 +34,27 @@ void main() {
   if (uHasOverlay != 0) {
     albedo = texture(uOverlay, vMapUv).rgb;
   } else {
+    vec2 ground = vWorld.xz;
     float height = clamp((vWorld.y - uAltitudeRange.x) / max(uAltitudeRange.y - uAltitudeRange.x, 1.0), 0.0, 1.0);
-    vec3 meadow = mix(vec3(0.045, 0.09, 0.018), vec3(0.10, 0.10, 0.035), height);
-    vec3 rock = vec3(0.13, 0.12, 0.10);
-    float steep = smoothstep(0.70, 0.55, normal.y);  // slopes steeper than about 50 degrees
-    albedo = mix(meadow, rock, steep);
-    // Two octaves of value noise break up the flat colour at ground level.
-    vec2 cell = floor(vWorld.xz * 0.5);
-    albedo *= 0.85 + 0.15 * hash(cell) + 0.1 * hash(floor(vWorld.xz * 0.05));
+    // Detail at three scales, so that no facet or cell shows from eye height to a
+    // kilometre: tufts (0.3 m), patches (3 m) and swathes (30 m).
+    float tufts = octaves(ground * 3.0), patches = octaves(ground * 0.33), swathes = octaves(ground * 0.033);
+    // Open ground: meadow grass, olive higher up, drier and lighter in patches.
+    vec3 grass = mix(vec3(0.045, 0.09, 0.018), vec3(0.10, 0.10, 0.035), height);
+    grass *= mix(vec3(0.8, 0.85, 0.8), vec3(1.2, 1.15, 1.0), patches);
+    // Forest floor: brown leaf litter with moss, the mix changing patch by patch.
+    vec3 litter = mix(vec3(0.085, 0.050, 0.022), vec3(0.060, 0.045, 0.025), tufts);
+    vec3 moss = vec3(0.035, 0.060, 0.015);
+    vec3 floorColor = mix(litter, moss, smoothstep(0.45, 0.75, patches) * 0.7);
+    float cover = uHasCanopyCover != 0 ? texture(uCanopyCover, vMapUv).r : 0.0;
+    // The edge of the litter wanders with the patches instead of following the cells.
+    float underCrowns = smoothstep(0.25, 0.65, cover + 0.3 * (patches - 0.5) + 0.2 * (swathes - 0.5));
+    albedo = mix(grass, floorColor, underCrowns);
+    // Rock on slopes steeper than about 50 degrees, its edge broken by the patches.
+    vec3 rock = vec3(0.13, 0.12, 0.10) * (0.8 + 0.4 * tufts);
+    float steep = smoothstep(0.70, 0.55, normal.y + 0.08 * (patches - 0.5));
+    albedo = mix(albedo, rock, steep);
+    albedo *= 0.8 + 0.4 * tufts;
   }
   outColor = vec4(shade(albedo, normal, vWorld, 0.0), 1.0);
 #endif

@@ -189,6 +189,12 @@ Image ForestRenderer::impostorFrameImage(int type, glm::ivec2 frame) const {
   for (int y = 0; y < tile; ++y)
     std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>((tile - 1 - y) * stride), stride,
                 image.rgba.begin() + static_cast<std::ptrdiff_t>(y * stride));
+  // Transparent texels take the frame's mean colour, so that a client filtering the
+  // picture keeps the tree's colour at its edges instead of darkening them.
+  const glm::vec4 mean = image.meanOpaqueColor();
+  for (int y = 0; y < tile; ++y)
+    for (int x = 0; x < tile; ++x)
+      if (image.get(x, y).a < 0.5f) image.set(x, y, glm::vec4(glm::vec3(mean), image.get(x, y).a));
   return image;
 }
 
@@ -213,14 +219,14 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
     const glm::vec3 centre(type.bounds);
     const float radius = type.bounds.w;
     target.bind();
-    // Transparent texels carry the leaf colour so that filtering at the edges stays green.
-    const Species& species = library_.species()[type.species];
-    const glm::vec4 edge(linearFromSrgb(species.appearance.leafColor), 0.0f);
-    const glm::vec4 flatNormal(0.5f, 1.0f, 0.5f, 0.0f), centrePlane(0.5f);
+    // Every attachment holds its value times the coverage (drawn texels cover fully, the
+    // rest are zero), so that filtering and the mip levels average each over what covers a
+    // texel only: the shader divides by the coverage (albedo's alpha). An unweighted mean
+    // would pull the colours toward a clear colour and the normals toward a clear normal.
+    const glm::vec4 none(0.0f);
     const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, &edge.x);
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 1, &flatNormal.x);
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 2, &centrePlane.x);
+    for (int attachment = 0; attachment < 3; ++attachment)
+      glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, attachment, &none.x);
     glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
     for (int row = 0; row < frames; ++row)
       for (int column = 0; column < frames; ++column) {

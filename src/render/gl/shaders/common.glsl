@@ -64,11 +64,16 @@ vec3 applyFog(vec3 color, vec3 worldPosition) {
 }
 
 // Lambert lighting from the sun (with shadow) and the sky; `translucency` lets thin leaves
-// pass light from behind.
+// pass light from behind. A normal shorter than one is the mean of the normals of several
+// leaves (an impostor's coarser mip levels): its length is the share of them facing its
+// way, the rest face every way and take on average a quarter of the beam (the mean of
+// max(cos, 0) over the sphere). Unit normals are lit as by Lambert alone.
 vec3 shade(vec3 albedo, vec3 normal, vec3 worldPosition, float translucency) {
-  float cosine = dot(normal, uToSun.xyz);
-  float direct = max(cosine, 0.0) + translucency * max(-cosine, 0.0);
-  float skyLight = 0.6 + 0.4 * normal.y;
+  float aligned = clamp(length(normal), 0.0, 1.0);
+  float cosine = dot(normal, uToSun.xyz) / max(aligned, 1e-4);
+  float direct = aligned * (max(cosine, 0.0) + translucency * max(-cosine, 0.0)) +
+                 (1.0 - aligned) * 0.25 * (1.0 + translucency);
+  float skyLight = 0.6 + 0.4 * normal.y;  // linear in the normal: a mean normal's mean
   vec3 light = uSunColor.rgb * direct * shadowAt(worldPosition) + uAmbient.rgb * skyLight;
   return applyFog(albedo * light, worldPosition);
 }
@@ -86,6 +91,18 @@ bool ditherKeeps(vec2 range) {
   h = (h ^ (h >> 12)) * 0x297a2d39u;
   float threshold = float((h ^ (h >> 15)) & 0xffffu) / 65536.0;
   return threshold >= range.x && threshold < range.y;
+}
+#endif
+
+#ifdef FRAGMENT_STAGE
+// A second per-pixel threshold in (0, 1), independent of ditherKeeps' (a fading tree's
+// pixels are not its alpha-tested ones): the hashed alpha test of far impostor texels.
+float coverageThreshold() {
+  uvec2 p = uvec2(gl_FragCoord.xy);
+  uint h = p.x * 7919u + p.y * 104729u + 0x9e3779b9u;
+  h = (h ^ (h >> 16)) * 0x7feb352du;
+  h = (h ^ (h >> 15)) * 0x846ca68bu;
+  return (float((h ^ (h >> 16)) & 0xffffu) + 0.5) / 65536.0;
 }
 #endif
 

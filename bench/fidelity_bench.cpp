@@ -14,6 +14,7 @@
 // Usage: fidelity_bench [RUN_DIR | SCENARIO.toml = valley.toml] [SIZE = 1280x720]
 //                       [REFERENCE_MIN_PIXELS = 8] [OUT_DIR = fidelity] [PLANTED_TREES = 10000]
 // (a scenario: the planted scene only, on its terrain)
+//        fidelity_bench --compare A.png B.png   (the same measures of two saved pictures)
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -117,6 +118,13 @@ void compareScene(const std::string& scene, const eco::Terrain& terrain, const e
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--compare") {  // two saved pictures
+    const eco::Image a = eco::readColorImage(argv[2]), b = eco::readColorImage(argv[3]);
+    std::printf("mean diff %.2f   SSIM %.3f (4x: %.3f)\n", eco::meanAbsoluteDifference(a, b),
+                eco::structuralSimilarity(a, b),
+                eco::structuralSimilarity(eco::downsampled(a, 4), eco::downsampled(b, 4)));
+    return 0;
+  }
   const std::filesystem::path source =
       argc > 1 ? std::filesystem::path(argv[1])
                : std::filesystem::path(ECOFOREST_DATA_DIR) / "valley.toml";

@@ -38,6 +38,31 @@ void writeAtomically(const std::filesystem::path& file, OIIO::ImageSpec spec, OI
 
 }  // namespace
 
+Image readColorImage(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw imageError(file, "no such file");
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);  // the colours as stored, not times alpha
+  auto in = OIIO::ImageInput::open(file.string(), &config);
+  if (!in) throw imageError(file, "cannot read image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width > kMaxHeightmapSide || spec.height > kMaxHeightmapSide)
+    throw imageError(file, fmt::format("the image is {} x {} pixels, more than {} on a side",
+                                       spec.width, spec.height, kMaxHeightmapSide));
+  const int channels = spec.nchannels;
+  std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * spec.height * channels);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data()))
+    throw imageError(file, "cannot read pixels: " + in->geterror());
+  const bool hasAlpha = channels == 2 || channels == 4;
+  const bool grey = (hasAlpha ? channels - 1 : channels) == 1;
+  Image image(spec.width, spec.height);
+  for (std::size_t p = 0; p < static_cast<std::size_t>(spec.width) * spec.height; ++p) {
+    const std::uint8_t* pixel = &pixels[p * channels];
+    for (int c = 0; c < 3; ++c) image.rgba[p * 4 + c] = pixel[grey ? 0 : c];
+    image.rgba[p * 4 + 3] = hasAlpha ? pixel[channels - 1] : 255;
+  }
+  return image;
+}
+
 SingleChannelImage readSingleChannel(const std::filesystem::path& file, bool nanIsNoData) {
   if (!std::filesystem::exists(file)) throw imageError(file, "no such file");
   auto in = OIIO::ImageInput::open(file.string());
@@ -113,6 +138,9 @@ void writeRgb8Image(const std::filesystem::path& file, const Image& image) {
 
 void writeRgba8Image(const std::filesystem::path& file, const Image& image) {
   OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  // The colours are not multiplied by alpha: written as they are (PNG's own convention),
+  // not divided by alpha as OpenImageIO would for premultiplied pixels.
+  spec.attribute("oiio:UnassociatedAlpha", 1);
   writeAtomically(file, spec, OIIO::TypeDesc::UINT8, image.rgba.data());
 }
 

@@ -30,6 +30,10 @@ inline constexpr int kMaxHeightmapSide = 16384;
 // InputErrors, except NaN where the file declares NaN its no-data value.
 SingleChannelImage readSingleChannel(const std::filesystem::path& file, bool nanIsNoData = false);
 
+// A colour picture (a saved frame) as RGBA8; one without alpha comes back opaque, a grey one
+// as grey. Unreadable files and pictures over kMaxHeightmapSide on a side are InputErrors.
+Image readColorImage(const std::filesystem::path& file);
+
 void writeFloatImage(const std::filesystem::path& file, int width, int height, int channels,
                      const std::vector<float>& values);
 void writeUint16Image(const std::filesystem::path& file, int width, int height,

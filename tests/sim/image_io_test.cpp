@@ -33,6 +33,25 @@ TEST(ImageIo, FloatImagesKeepTheirValues) {
   }
 }
 
+TEST(ImageIo, ColourPicturesComeBackAsRgbaWhateverTheirChannels) {
+  auto dir = test::freshDirectory("imageiocolour");
+  Image picture(2, 1);
+  picture.set(0, 0, {1.0f, 0.0f, 0.2f, 0.5f});
+  picture.set(1, 0, {0.0f, 1.0f, 0.4f, 1.0f});
+  writeRgba8Image(dir / "rgba.png", picture);
+  EXPECT_EQ(readColorImage(dir / "rgba.png").rgba, picture.rgba);
+  writeRgb8Image(dir / "rgb.png", picture);  // alpha dropped: opaque when read
+  const Image rgb = readColorImage(dir / "rgb.png");
+  EXPECT_EQ(rgb.rgba[3], 255);
+  EXPECT_EQ(rgb.rgba[4 + 1], 255);
+  writeUint16Image(dir / "grey.png", 2, 1, {0, 65535});  // grey: every channel alike
+  const Image grey = readColorImage(dir / "grey.png");
+  EXPECT_EQ(grey.rgba[4], 255);
+  EXPECT_EQ(grey.rgba[6], 255);
+  EXPECT_EQ(grey.rgba[0], 0);
+  EXPECT_THROW(readColorImage(dir / "missing.png"), InputError);
+}
+
 TEST(ImageIo, BadImagesAreInputErrors) {
   auto dir = test::freshDirectory("imageiobad");
   EXPECT_THROW(readSingleChannel(dir / "missing.png"), InputError);

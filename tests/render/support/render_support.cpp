@@ -1,5 +1,7 @@
 #include "render_support.hpp"
 
+#include "sim/image_io.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -120,17 +122,7 @@ double maxBlockDifference(const Image& a, const Image& b, int block) {
 }
 
 Image readPng(const std::filesystem::path& file) {
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) return {};
-  const OIIO::ImageSpec& spec = in->spec();
-  Image image(spec.width, spec.height);
-  std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * spec.height *
-                                   spec.nchannels);
-  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, pixels.data());
-  for (std::size_t i = 0; i < static_cast<std::size_t>(spec.width) * spec.height; ++i)
-    for (int c = 0; c < 4; ++c)
-      image.rgba[i * 4 + c] = c < spec.nchannels ? pixels[i * spec.nchannels + c] : 255;
-  return image;
+  return std::filesystem::exists(file) ? readColorImage(file) : Image{};
 }
 
 void writePng(const std::filesystem::path& file, const Image& image) {

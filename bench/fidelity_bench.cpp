@@ -13,6 +13,7 @@
 //
 // Usage: fidelity_bench [RUN_DIR | SCENARIO.toml = valley.toml] [SIZE = 1280x720]
 //                       [REFERENCE_MIN_PIXELS = 8] [OUT_DIR = fidelity] [PLANTED_TREES = 10000]
+//                       [VIEWS = low,ground,300m]
 // (a scenario: the planted scene only, on its terrain)
 //        fidelity_bench --compare A.png B.png   (the same measures of two saved pictures)
 #include <cstdio>
@@ -54,6 +55,15 @@ std::vector<View> viewsOf(const eco::Terrain& terrain, const eco::Forest& forest
           {"300m", high}};
 }
 
+// Each quality draws with the impostors it bakes (impostorSettingsFor); the reference's
+// few impostors, under REFERENCE_MIN_PIXELS, are baked from LOD0.
+struct Renderers {
+  eco::SceneRenderer lod0Baked, lod1Baked;
+  eco::SceneRenderer& of(eco::RenderQuality quality) {
+    return eco::impostorSettingsFor(quality).bakeLod == 0 ? lod0Baked : lod1Baked;
+  }
+};
+
 struct Picture {
   eco::Image image;
   eco::FrameStats stats;
@@ -75,14 +85,17 @@ eco::RenderOptions referenceOptions(float minPixels) {
 }
 
 void compareScene(const std::string& scene, const eco::Terrain& terrain, const eco::Forest& forest,
-                  const eco::TreeLibrary& library, eco::SceneRenderer& renderer,
+                  const eco::TreeLibrary& library, Renderers& renderers,
                   const eco::RenderTarget& target, float referenceMinPixels,
-                  const std::filesystem::path& out, bool checkReference) {
-  renderer.setForestFloor(forest);
+                  const std::filesystem::path& out, bool checkReference, const std::string& only) {
+  for (auto* r : {&renderers.lod0Baked, &renderers.lod1Baked}) r->setForestFloor(forest);
+  eco::SceneRenderer& renderer = renderers.lod0Baked;  // the reference's
   for (const View& view : viewsOf(terrain, forest, library)) {
     const std::string stem = (out / (scene + "_" + view.name + "_")).string();
     const glm::dvec3 at = eco::mapFromWorld(view.camera.position);
-    std::printf("%s, %s view from (%.0f, %.0f, %.0f) m, bearing %.0f, pitch %.0f\n", scene.c_str(),
+    if (!only.empty() && only.find(view.name) == std::string::npos) continue;
+    // The camera as `ecoforest render --camera` takes it, to draw the same view.
+    std::printf("%s, %s view: --camera %.9g,%.9g,%.9g,%.9g,%.9g\n", scene.c_str(),
                 view.name.c_str(), at.x, at.y, at.z, view.camera.yaw_deg, view.camera.pitch_deg);
     renderer.render(&forest, view.camera, eco::RenderOptions{}, target);  // warm-up
     const Picture reference =
@@ -106,7 +119,7 @@ void compareScene(const std::string& scene, const eco::Terrain& terrain, const e
          {eco::RenderQuality::Draft, eco::RenderQuality::Balanced, eco::RenderQuality::High}) {
       eco::RenderOptions options;
       options.lod.switchPixels = eco::switchPixelsFor(quality);
-      const Picture p = draw(renderer, forest, view.camera, options, target);
+      const Picture p = draw(renderers.of(quality), forest, view.camera, options, target);
       const std::string name(eco::toString(quality));
       eco::writeRgb8Image(stem + name + ".png", p.image);
       row(name.c_str(), p);
@@ -133,6 +146,7 @@ int main(int argc, char** argv) {
   const float referenceMinPixels = argc > 3 ? std::stof(argv[3]) : 8.0f;
   const std::filesystem::path out = argc > 4 ? argv[4] : "fidelity";
   const std::size_t planted = argc > 5 ? std::stoul(argv[5]) : 10000;
+  const std::string only = argc > 6 ? argv[6] : "";  // some of low,ground,300m: those only
   std::filesystem::create_directories(out);
 
   std::optional<eco::RunFolder> run;
@@ -141,20 +155,23 @@ int main(int argc, char** argv) {
   const eco::Terrain terrain = eco::loadTerrain(scenario);
   const eco::TreeLibrary library(eco::loadLibrarySpecies(scenario), {});
   eco::HeadlessGl gl;
-  eco::SceneRenderer renderer(terrain, scenario.climate.latitude_deg, &library);
+  Renderers renderers{{terrain, scenario.climate.latitude_deg, &library,
+                       eco::impostorSettingsFor(eco::RenderQuality::High)},
+                      {terrain, scenario.climate.latitude_deg, &library,
+                       eco::impostorSettingsFor(eco::RenderQuality::Balanced)}};
   const eco::RenderTarget target = eco::RenderTarget::create(size.width, size.height);
   std::printf("%s, %dx%d, reference: LOD0 down to %.0f px\n", eco::glDescription().c_str(),
               size.width, size.height, referenceMinPixels);
 
   const eco::Forest plantedForest = eco::demoForest(terrain, library, planted, scenario.seed);
-  compareScene("planted", terrain, plantedForest, library, renderer, target, referenceMinPixels,
-               out, true);
+  compareScene("planted", terrain, plantedForest, library, renderers, target, referenceMinPixels,
+               out, true, only);
   if (run) {
     const int year = run->snapshotYears.back();
     const eco::Forest forest =
         eco::forestFromSnapshot(eco::readSnapshot(*run, year), library, source.string());
-    compareScene("run_year" + std::to_string(year), terrain, forest, library, renderer, target,
-                 referenceMinPixels, out, false);
+    compareScene("run_year" + std::to_string(year), terrain, forest, library, renderers, target,
+                 referenceMinPixels, out, false, only);
   }
   return 0;
 }

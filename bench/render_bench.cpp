@@ -6,11 +6,12 @@
 // under 1 s a frame, at least 50x fewer triangles than LOD0-only, and a mean difference from
 // the LOD0-only frame under 8 of 255 per channel (3 %: leaf-sized detail, not trees, differs).
 // Usage: render_bench [SCENARIO = valley] [COUNTS = 10000,100000,300000] [LOD0-LIMIT = 10000]
-//                     [SIZE = 1280x720]
+//                     [SIZE = 1280x720] [QUALITY = balanced]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -69,10 +70,17 @@ int main(int argc, char** argv) {
   // Over the valley from its south end, looking down it: near trees to the horizon.
   const eco::Camera camera = eco::presetCamera(eco::CameraPreset::Low, terrain);
   eco::RenderOptions options;
+  const std::string qualityName = argc > 5 ? argv[5] : "balanced";
+  const std::optional<eco::RenderQuality> quality = eco::parseRenderQuality(qualityName);
+  if (!quality) {
+    std::fprintf(stderr, "render_bench: unknown quality '%s'\n", qualityName.c_str());
+    return 2;
+  }
+  options.lod.switchPixels = eco::switchPixelsFor(*quality);
 
-  std::printf("%s, %dx%d; tree library %.0f ms (%zu types), renderer and impostors %.0f ms\n",
-              eco::glDescription().c_str(), width, height, libraryMs, library.types().size(),
-              rendererMs);
+  std::printf("%s, %dx%d, %s; tree library %.0f ms (%zu types), renderer and impostors %.0f ms\n",
+              eco::glDescription().c_str(), width, height, qualityName.c_str(), libraryMs,
+              library.types().size(), rendererMs);
   std::printf("%8s | %9s %9s %9s %9s | %10s %12s %7s | %9s %9s | %9s %8s\n", "trees", "LOD0",
               "LOD1", "LOD2", "impostor", "triangles", "LOD0-only", "ratio", "frame ms", "prepare",
               "LOD0 ms", "mean diff");

@@ -83,8 +83,8 @@ Image drawStill(const SceneSource& source, const Forest& forest, const Camera& c
                 const ViewOptions& view, const std::optional<Field>& overlay, StillStats* stats) {
   const auto rendererStart = std::chrono::steady_clock::now();
   HeadlessGl gl;
-  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
-                         source.library.get());
+  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg, source.library.get(),
+                         impostorSettingsFor(view.quality));
   if (overlay) renderer.terrain().setOverlay(view.overlay, *overlay);
   renderer.setForestFloor(forest);
   RenderTarget target = RenderTarget::create(view.size.width, view.size.height);

@@ -88,8 +88,8 @@ void runTimelapse(const TimelapseArgs& args) {
       mp4 ? mp4Sink(out, settings.frame, settings.fps) : pngFolderSink(out);
   source.buildLibrary();
   HeadlessGl gl;
-  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
-                         source.library.get());
+  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg, source.library.get(),
+                         impostorSettingsFor(args.view.quality));
   const bool terminal = Progress::stderrIsTerminal();
   const auto start = std::chrono::steady_clock::now();
   const TimelapseTimings t = renderTimelapse(

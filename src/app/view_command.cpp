@@ -86,8 +86,8 @@ void runView(const ViewArgs& args) {
 
   Window window("ecoforest — " + source.scenario.name, args.view.size, "`view`",
                 "`ecoforest render` draws stills without one");
-  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg,
-                         source.library.get());
+  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg, source.library.get(),
+                         impostorSettingsFor(args.view.quality));
   if (overlay) renderer.terrain().setOverlay(args.view.overlay, *overlay);
   RenderOptions options = renderOptionsFrom(args.view, source.scenario);
   std::optional<LodBudget> budget;

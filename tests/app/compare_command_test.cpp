@@ -72,8 +72,10 @@ std::pair<int, int> sizeOf(const std::filesystem::path& png) {
 TEST(CompareCommand, WritesTheTableChartsAndStillsOfTheRuns) {
   const auto& [natural, planted] = twoRuns();
   const auto out = eco::test::freshDirectory("app_compare_out") / "cmp";
-  CommandResult r = ecoforest(fmt::format("compare {} {} --out {} --years 10,30 --size 160x90",
-                                          natural.string(), planted.string(), out.string()));
+  CommandResult r =
+      ecoforest(fmt::format("compare {} {} --out {} --years 10,30 --size 160x90 "
+                            "--quality draft",
+                            natural.string(), planted.string(), out.string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const std::string csv = eco::test::readFile(out / "compare.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 2) << csv;

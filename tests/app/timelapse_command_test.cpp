@@ -42,8 +42,9 @@ TEST(TimelapseCommand, PngFramesAreCountedAndIdenticalForTheSameRunAndOptions) {
 }
 
 TEST(TimelapseCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
-  const std::string frames =
-      "timelapse " + shortDefaultRun().string() + " --seconds 2 --fps 10 --size 320x180";
+  const std::string frames = "timelapse " + shortDefaultRun().string() +
+                             " --seconds 2 --fps 10 --size 320x180" +
+                             " --quality draft";  // the test is about files, not pictures
   eco::test::expectFullAndReadOnlyDisksFailCleanly(frames + " --out \"$SPACE/frames\"", 16,
                                                    "No space left on device");
   if (eco::test::runCommand("command -v ffmpeg").exitCode != 0)
@@ -56,8 +57,9 @@ TEST(TimelapseCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) 
 // video nor a partial one is left.
 TEST(TimelapseCommand, CtrlCLeavesNothingPartial) {
   const auto dir = eco::test::freshDirectory("app_timelapse_interrupt");
-  const std::string timelapse =
-      "timelapse " + shortDefaultRun().string() + " --seconds 60 --fps 10 --size 160x96";
+  const std::string timelapse = "timelapse " + shortDefaultRun().string() +
+                                " --seconds 60 --fps 10 --size 160x96" +
+                                " --quality draft";  // the test is about files, not pictures
   CommandResult frames = eco::test::interruptWhen(
       timelapse + " --out " + (dir / "frames").string(),
       "[ -e " + (dir / "frames.partial" / "frame_00002.png").string() + " ]");

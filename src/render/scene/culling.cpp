@@ -45,14 +45,16 @@ std::string_view toString(RenderQuality quality) {
 }
 
 std::array<float, 3> switchPixelsFor(RenderQuality quality) {
+  // No quality draws the crown hulls (LOD2): measured against LOD0, an impostor magnified
+  // up to 3.4 times is nearer the tree than a smooth hull (bench/fidelity_bench).
   switch (quality) {
     // LOD1's leaf clusters are the costliest part of a frame on llvmpipe: draft keeps them
     // for the nearest trees only.
     case RenderQuality::Draft:
-      return {1200.0f, 450.0f, 160.0f};
+      return {1000.0f, 300.0f, 300.0f};
     case RenderQuality::Balanced:
-      return LodSettings{}.switchPixels;
-    // LOD0 for every tree taller than 150 pixels, LOD1 down to the impostors, no crown hull.
+      return {600.0f, 220.0f, 220.0f};
+    // LOD0 for every tree taller than 150 pixels, LOD1 down to the impostors.
     case RenderQuality::High:
       return {150.0f, 60.0f, 60.0f};
   }

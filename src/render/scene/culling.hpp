@@ -31,8 +31,8 @@ struct LodSettings {
   // Projected tree height (pixels) above which each level is used: LOD0, LOD1, LOD2;
   // smaller trees are impostors, and trees under minPixels are not drawn. A mesh level whose
   // size is not below the finer one's is skipped (high quality skips LOD2). Impostor frames
-  // are 64 pixels (ImpostorSettings), so impostors are never magnified. The defaults are
-  // the balanced quality.
+  // are 64 pixels (ImpostorSettings). The defaults use every level (the glTF export's
+  // screen coverages); the qualities below skip the crown hulls.
   std::array<float, 3> switchPixels{600.0f, 220.0f, 100.0f};
   float minPixels = 1.0f;
   float fadeBand = 0.15f;  // cross-fade over switch * (1 +- fadeBand)

@@ -37,4 +37,10 @@ void frameAxes(glm::vec3 f, glm::vec3& right, glm::vec3& up) {
   up = glm::cross(f, right);
 }
 
+ImpostorSettings impostorSettingsFor(RenderQuality quality) {
+  ImpostorSettings settings;
+  settings.bakeLod = quality == RenderQuality::High ? 0 : 1;
+  return settings;
+}
+
 }  // namespace eco

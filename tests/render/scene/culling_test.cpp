@@ -47,10 +47,15 @@ TEST(RenderQuality, HigherQualityDrawsEveryLevelFromSmallerSizesOn) {
   const auto draft = switchPixelsFor(RenderQuality::Draft);
   const auto balanced = switchPixelsFor(RenderQuality::Balanced);
   const auto high = switchPixelsFor(RenderQuality::High);
-  EXPECT_EQ(balanced, LodSettings{}.switchPixels);
   for (int level = 0; level < 3; ++level) {
     EXPECT_GT(draft[level], balanced[level]);
     EXPECT_GT(balanced[level], high[level]);
+  }
+  // None draws the crown hulls: LOD2 has no range of its own at any quality.
+  for (const auto& sizes : {draft, balanced, high}) {
+    LodSettings s;
+    s.switchPixels = sizes;
+    for (float px = 2000.0f; px > 1.0f; px *= 0.98f) ASSERT_NE(chooseLevel(px, s).level, 2) << px;
   }
   // High keeps LOD0 for every tree taller than about 150 pixels (the promise for
   // stills): fully above the fade band, and at no size below it.

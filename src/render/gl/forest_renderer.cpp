@@ -392,17 +392,24 @@ void ForestRenderer::draw() const {
       drawRanges(ranges_[t][level], types[t].species, buckets_[t * kLevelCount + level],
                  meshProgram_);
 
+  drawImpostors(impostorProgram_, pixelsPerUnit_,
+                [&](std::size_t t) { return buckets_[t * kLevelCount + kLevelImpostor]; });
+}
+
+void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
+                                   const std::function<Bucket(std::size_t)>& bucketOf) const {
+  const auto& types = library_.types();
   glEnable(GL_PROGRAM_POINT_SIZE);
   glBindVertexArray(impostorArray_.id());
   glVertexArrayVertexBuffer(impostorArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
-  impostorProgram_.use();
-  impostorProgram_.set("uFrames", impostorSettings_.frames);
-  impostorProgram_.set("uPixelsPerUnit", pixelsPerUnit_);
+  program.use();
+  program.set("uFrames", impostorSettings_.frames);
+  program.set("uPixelsPerUnit", pixelsPerUnit);
   for (std::size_t t = 0; t < types.size(); ++t) {
-    const Bucket& bucket = buckets_[t * kLevelCount + kLevelImpostor];
+    const Bucket bucket = bucketOf(t);
     if (bucket.count == 0) continue;
     const int source = impostorSource(static_cast<int>(t));
-    impostorProgram_.set("uBounds", types[source].bounds);
+    program.set("uBounds", types[source].bounds);
     glBindTextureUnit(1, atlases_[source].albedo.id());
     glBindTextureUnit(2, atlases_[source].normal.id());
     glBindTextureUnit(5, atlases_[source].depth.id());
@@ -419,20 +426,8 @@ void ForestRenderer::drawShadows() const {
   for (std::size_t t = 0; t < types.size(); ++t)
     drawRanges(ranges_[t][2], types[t].species, shadowBuckets_[2 * t], meshShadowProgram_);
 
-  glEnable(GL_PROGRAM_POINT_SIZE);
-  glBindVertexArray(impostorArray_.id());
-  glVertexArrayVertexBuffer(impostorArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
-  impostorShadowProgram_.use();
-  impostorShadowProgram_.set("uFrames", impostorSettings_.frames);
-  impostorShadowProgram_.set("uPixelsPerUnit", shadowPixelsPerMetre_);
-  for (std::size_t t = 0; t < types.size(); ++t) {
-    const Bucket& bucket = shadowBuckets_[2 * t + 1];
-    if (bucket.count == 0) continue;
-    const int source = impostorSource(static_cast<int>(t));
-    impostorShadowProgram_.set("uBounds", types[source].bounds);
-    glBindTextureUnit(1, atlases_[source].albedo.id());
-    glDrawArraysInstancedBaseInstance(GL_POINTS, 0, 1, bucket.count, bucket.first);
-  }
+  drawImpostors(impostorShadowProgram_, shadowPixelsPerMetre_,
+                [&](std::size_t t) { return shadowBuckets_[2 * t + 1]; });
 }
 
 }  // namespace eco

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -107,6 +108,9 @@ class ForestRenderer {
 
   void drawRanges(const std::vector<DrawRange>& ranges, int species, Bucket bucket,
                   const Program& program) const;
+  // Each type's impostor sprites in bucketOf(type), with its atlases (colour or shadow pass).
+  void drawImpostors(const Program& program, float pixelsPerUnit,
+                     const std::function<Bucket(std::size_t)>& bucketOf) const;
   void uploadMeshes();
   void bakeImpostors(const FrameUniformBuffer& uniforms);
   void bindMaterial(const Program& program, int species, MaterialKind kind) const;

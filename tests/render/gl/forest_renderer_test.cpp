@@ -147,61 +147,64 @@ TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
 // (leaf cards flicker in and out at this size), and their mean colours over the tree differ
 // by less than 20 of 255 (RMS over the channels; the impostor shows LOD1's clustered leaves
 // from up to 11 degrees off, out of 64-pixel tiles).
-TEST(Impostor, MatchesTheMeshAtTheSwitchingDistance) {
+// At each quality's switching size to impostors (balanced 220 px, high 60 px), drawn with
+// the impostors that quality bakes, the impostor covers the mesh's pixels to within 20 %
+// and their mean colours differ by less than 20 of 255.
+TEST(Impostor, MatchesTheMeshAtEachQualitysSwitchingSize) {
   test::useHeadlessGl();
   const TreeLibrary& library = test::smallLibrary();
   const Terrain terrain = test::flatTerrain(33, 10.0);
-  SceneRenderer renderer(terrain, 46.0, &library);
   const int type = library.typeIndex(1, 0, 1);
   const float height = library.types()[type].height_m;
   Forest forest;
   forest.add(library, type, worldFromMap(160, 160, 100), height, 0.0f, 1.0f, 1);
-  Camera camera;
-  RenderOptions options;
-  options.shadows = false;
-  const int size = 128;
-  const float distance = height * camera.pixelsPerRadian(size) / LodSettings{}.switchPixels[2];
-  camera.position = worldFromMap(160, 160 - distance, 100 + 0.5 * height);
-  const RenderTarget target = RenderTarget::create(size, size);
-  Forest empty;
-  renderer.render(&empty, camera, options, target);
-  const Image background = readPixels(size, size);
-  options.lod.forcedLevel = 0;
-  renderer.render(&forest, camera, options, target);
-  const Image mesh = readPixels(size, size);
-  options.lod.forcedLevel = kLevelImpostor;
-  renderer.render(&forest, camera, options, target);
-  const Image impostor = readPixels(size, size);
+  for (RenderQuality quality : {RenderQuality::Balanced, RenderQuality::High}) {
+    SCOPED_TRACE(std::string(toString(quality)));
+    SceneRenderer renderer(terrain, 46.0, &library, impostorSettingsFor(quality));
+    const float switchPixels = switchPixelsFor(quality)[2];
+    const int size = static_cast<int>(2.0f * switchPixels);  // the tree fills half the height
+    Camera camera;
+    RenderOptions options;
+    options.shadows = false;
+    const float distance = height * camera.pixelsPerRadian(size) / switchPixels;
+    camera.position = worldFromMap(160, 160 - distance, 100 + 0.5 * height);
+    const RenderTarget target = RenderTarget::create(size, size);
+    Forest empty;
+    renderer.render(&empty, camera, options, target);
+    const Image background = readPixels(size, size);
+    options.lod.forcedLevel = 0;
+    renderer.render(&forest, camera, options, target);
+    const Image mesh = readPixels(size, size);
+    options.lod.forcedLevel = kLevelImpostor;
+    renderer.render(&forest, camera, options, target);
+    const Image impostor = readPixels(size, size);
 
-  // The tree's pixels: where the image differs from the empty scene.
-  auto treePixels = [&](const Image& image, glm::dvec3& meanColor) {
-    std::size_t count = 0;
-    meanColor = glm::dvec3(0.0);
-    for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
-      bool differs = false;
-      for (int c = 0; c < 3; ++c)
-        differs = differs || std::abs(int(image.rgba[p + c]) - int(background.rgba[p + c])) > 8;
-      if (!differs) continue;
-      ++count;
-      meanColor += glm::dvec3(image.rgba[p], image.rgba[p + 1], image.rgba[p + 2]);
-    }
-    meanColor /= std::max<double>(count, 1.0);
-    return count;
-  };
-  glm::dvec3 meshColor, impostorColor;
-  const std::size_t meshPixels = treePixels(mesh, meshColor);
-  const std::size_t impostorPixels = treePixels(impostor, impostorColor);
-  ASSERT_GT(meshPixels, 300u);  // the tree is there and about 60 pixels high
-  const double coverageDifference =
-      std::abs(double(meshPixels) - double(impostorPixels)) / double(meshPixels);
-  EXPECT_LT(coverageDifference, 0.20) << meshPixels << " vs " << impostorPixels;
-  const double colorDifference = glm::length(meshColor - impostorColor) / std::sqrt(3.0);
-  EXPECT_LT(colorDifference, 20.0)
-      << "mesh " << meshColor.r << "," << meshColor.g << "," << meshColor.b << " impostor "
-      << impostorColor.r << "," << impostorColor.g << "," << impostorColor.b;
-  if (test::updatingReferences()) {
-    test::writePng("/tmp/impostor_mesh.png", mesh);
-    test::writePng("/tmp/impostor_impostor.png", impostor);
+    // The tree's pixels: where the image differs from the empty scene.
+    auto treePixels = [&](const Image& image, glm::dvec3& meanColor) {
+      std::size_t count = 0;
+      meanColor = glm::dvec3(0.0);
+      for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
+        bool differs = false;
+        for (int c = 0; c < 3; ++c)
+          differs = differs || std::abs(int(image.rgba[p + c]) - int(background.rgba[p + c])) > 8;
+        if (!differs) continue;
+        ++count;
+        meanColor += glm::dvec3(image.rgba[p], image.rgba[p + 1], image.rgba[p + 2]);
+      }
+      meanColor /= std::max<double>(count, 1.0);
+      return count;
+    };
+    glm::dvec3 meshColor, impostorColor;
+    const std::size_t meshPixels = treePixels(mesh, meshColor);
+    const std::size_t impostorPixels = treePixels(impostor, impostorColor);
+    ASSERT_GT(meshPixels, static_cast<std::size_t>(0.05 * switchPixels * switchPixels));
+    const double coverageDifference =
+        std::abs(double(meshPixels) - double(impostorPixels)) / double(meshPixels);
+    EXPECT_LT(coverageDifference, 0.20) << meshPixels << " vs " << impostorPixels;
+    const double colorDifference = glm::length(meshColor - impostorColor) / std::sqrt(3.0);
+    EXPECT_LT(colorDifference, 20.0)
+        << "mesh " << meshColor.r << "," << meshColor.g << "," << meshColor.b << " impostor "
+        << impostorColor.r << "," << impostorColor.g << "," << impostorColor.b;
   }
 }
 

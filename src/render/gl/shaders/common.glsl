@@ -55,10 +55,14 @@ vec3 skyColor(vec3 direction) {
   return sky + uSunColor.rgb * (0.02 * pow(sun, 8.0) + 4.0 * smoothstep(0.9995, 0.9999, sun));
 }
 
+// Aerial perspective: the air between the eye and a point dims its light and adds the
+// sky's, more in blue than in red. uSunColor.w is the extinction at 550 nm (green); the
+// haze's aerosols scatter as lambda^-1.3 (Angstrom's exponent for continental air), so red
+// (680 nm) takes 0.76 of it and blue (440 nm) 1.34: far hills turn blue-grey.
 vec3 applyFog(vec3 color, vec3 worldPosition) {
   vec3 toPoint = worldPosition - uCamera.xyz;
   float distance = length(toPoint);
-  float visible = exp(-uSunColor.w * distance);
+  vec3 visible = exp(-uSunColor.w * vec3(0.76, 1.0, 1.34) * distance);
   return mix(skyColor(normalize(vec3(toPoint.x, max(toPoint.y, 0.0) * 0.2, toPoint.z))), color,
              visible);
 }

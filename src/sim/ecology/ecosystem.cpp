@@ -131,11 +131,11 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
       if (height >= kBreastHeight_m) dbh = saplingDiameter(life, height);
       continue;
     }
+    const CrownFoliage foliage = crownFoliage(life, dbh, height, 1.0);
     const CrownShape crown{0.0f, 0.0f, static_cast<float>(crownRadiusOf(life, dbh, height)),
-                           static_cast<float>(height),
-                           static_cast<float>(leafAreaOf(life, dbh, height))};
+                           static_cast<float>(height), static_cast<float>(foliage.leafArea_m2)};
     const TreeYear grown =
-        growTree(life, dbh, height, crown.leafArea_m2, LightGrid::absorbedInTheOpen(crown), {});
+        growTree(life, dbh, height, foliage.foliage_kg, LightGrid::absorbedInTheOpen(crown), {});
     dbh = grown.dbh_m;
     height = grown.height_m;
   }
@@ -187,22 +187,23 @@ bool Ecosystem::addSeedSource(const std::function<bool(glm::dvec2)>& covered, do
   return true;
 }
 
-CrownShape Ecosystem::crownOf(std::size_t i) const {
-  const Plants& p = state_.plants;
-  const LifeHistory& life = species_[p.species[i]].ecology.life;
-  return {p.east_m[i], p.north_m[i], std::max(p.crownRadius_m[i], 0.05f), p.height_m[i],
-          static_cast<float>(leafAreaOf(life, p.dbh_m[i], p.height_m[i]))};
-}
-
 void Ecosystem::computeLight() {
   const Plants& p = state_.plants;
-  crowns_.clear();
   crownOfPlant_.assign(p.size(), kNoCrown);
+  std::uint32_t crowns = 0;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.height_m[i] >= kBreastHeight_m) {
-      crownOfPlant_[i] = static_cast<std::uint32_t>(crowns_.size());
-      crowns_.push_back(crownOf(i));
-    }
+    if (p.height_m[i] >= kBreastHeight_m) crownOfPlant_[i] = crowns++;
+  crowns_.resize(crowns);
+  crownFoliage_kg_.resize(crowns);
+  // Each crown spreads its foliage as last year's light at its top built the leaves.
+  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+    if (crownOfPlant_[i] == kNoCrown) return;
+    const LifeHistory& life = species_[p.species[i]].ecology.life;
+    const CrownFoliage foliage = crownFoliage(life, p.dbh_m[i], p.height_m[i], p.light[i]);
+    crowns_[crownOfPlant_[i]] = {p.east_m[i], p.north_m[i], std::max(p.crownRadius_m[i], 0.05f),
+                                 p.height_m[i], static_cast<float>(foliage.leafArea_m2)};
+    crownFoliage_kg_[crownOfPlant_[i]] = static_cast<float>(foliage.foliage_kg);
+  });
   light_.compute(crowns_);
 }
 
@@ -239,8 +240,9 @@ void Ecosystem::grow() {
     const double topLight = light_.lightAt(p.east_m[i], p.north_m[i], p.height_m[i] + 0.5);
     // Height growth answers the light the whole crown gets, relative to the open.
     const double response = std::clamp(s.ecology.lightResponse(relative), 0.0, 1.0);
-    const TreeYear year = growTree(life, p.dbh_m[i], p.height_m[i], crown.leafArea_m2, absorbed,
-                                   {suitability, response, p.growthFactor[i]});
+    const TreeYear year =
+        growTree(life, p.dbh_m[i], p.height_m[i], crownFoliage_kg_[crownOfPlant_[i]], absorbed,
+                 {suitability, response, p.growthFactor[i]});
     carbonDeficit_[i] = static_cast<float>(year.carbonDeficit());
     // The branches this year's light left below the compensation point die.
     const double pruned = light_.heightWithLight(p.east_m[i], p.north_m[i], p.crownBase_m[i],

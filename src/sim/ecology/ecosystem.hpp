@@ -113,7 +113,6 @@ class Ecosystem {
   void restore(EcosystemState state);
 
  private:
-  CrownShape crownOf(std::size_t plant) const;
   void computeLight();
   void grow();
   void applyMortality();
@@ -129,6 +128,7 @@ class Ecosystem {
   int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;
   std::vector<CrownShape> crowns_;           // this year's, of the trees
+  std::vector<float> crownFoliage_kg_;       // per crown: the foliage its leaf area holds
   std::vector<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown
   static constexpr std::uint32_t kNoCrown = ~std::uint32_t{0};
   std::vector<float> carbonDeficit_;  // per plant, this year's (trees)

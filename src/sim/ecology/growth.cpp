@@ -33,10 +33,33 @@ double maxCrownLeafAreaIndex(const LifeHistory& life) {
   return std::log(1.0 / std::min(1.0, leafCompensationLight(life))) / kLeafExtinction;
 }
 
-double leafAreaOf(const LifeHistory& life, double dbh_m, double height_m) {
+CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m,
+                          double topLight) {
   const double radius = crownRadiusOf(life, dbh_m, height_m);
-  return std::min(life.specificLeafArea * life.foliage.at(100.0 * dbh_m),
-                  maxCrownLeafAreaIndex(life) * std::numbers::pi * radius * radius);
+  const double area = std::numbers::pi * radius * radius;
+  const double sunMass = 1.0 / life.specificLeafArea;  // kg per m2 of sun leaves
+  const double r = life.shadeLeafMassRatio;
+  const double top = std::clamp(topLight, 0.0, 1.0);
+  // Foliage mass per m2 of projection down to a leaf area index L:
+  // m(L) = sunMass (r L + (1 - r) top (1 - exp(-k L)) / k), increasing and concave, so
+  // Newton's method from below (the sun leaves' area) climbs to the root without passing it.
+  auto massTo = [&](double lai) {
+    return sunMass * (r * lai + (1.0 - r) * top * -std::expm1(-kLeafExtinction * lai) /
+                                    kLeafExtinction);
+  };
+  const double maxLai = maxCrownLeafAreaIndex(life);
+  const double allometric_kg = life.foliage.at(100.0 * dbh_m);
+  if (area <= 0.0) return {0.0, 0.0};
+  const double mass = allometric_kg / area;
+  if (mass >= massTo(maxLai)) return {maxLai * area, massTo(maxLai) * area};
+  double lai = mass / sunMass;
+  for (int i = 0; i < 50; ++i) {
+    const double slope = sunMass * (r + (1.0 - r) * top * std::exp(-kLeafExtinction * lai));
+    const double step = (mass - massTo(lai)) / slope;
+    lai += step;
+    if (step < 1e-9 * lai) break;
+  }
+  return {std::min(lai, maxLai) * area, allometric_kg};
 }
 
 double woodyBiomass(const LifeHistory& life, double dbh_m) {
@@ -65,14 +88,24 @@ double diameterOfWoodyBiomass(const LifeHistory& life, double biomass_kg, double
   return d / 100.0;
 }
 
-double crownUpkeep(const LifeHistory& life, double leafArea_m2) {
-  const double foliage_kg = leafArea_m2 / life.specificLeafArea;
+double leafMassShare(const LifeHistory& life, double light) {
+  const double r = life.shadeLeafMassRatio;
+  return r + (1.0 - r) * std::clamp(light, 0.0, 1.0);
+}
+
+double crownUpkeep(const LifeHistory& life, double foliage_kg) {
   return foliage_kg * (life.leafTurnover + life.fineRootFoliageRatio * life.fineRootTurnover);
 }
 
 double leafCompensationLight(const LifeHistory& life) {
-  // A thin layer of leaves in light I absorbs k I per m2 of leaf (Beer's law's slope).
-  return crownUpkeep(life, 1.0) / (life.lightUseEfficiency * kLeafExtinction);
+  // A thin layer of leaves in light I absorbs k I per m2 of leaf (Beer's law's slope) and
+  // costs U (r + (1 - r) I), U the upkeep of a m2 of sun leaves: they balance at
+  // I = u r / (1 - u (1 - r)), u = U / (efficiency k) the balance of sun leaves.
+  const double u = crownUpkeep(life, 1.0 / life.specificLeafArea) /
+                   (life.lightUseEfficiency * kLeafExtinction);
+  if (u >= 1.0) return u;  // not even sun leaves in full light pay their way
+  const double r = life.shadeLeafMassRatio;
+  return u * r / (1.0 - u * (1.0 - r));
 }
 
 double potentialHeightIncrement(const LifeHistory& life, double height_m) {
@@ -95,11 +128,11 @@ double TreeYear::carbonDeficit() const {
   return std::min(1.0, (upkeep_kg - production_kg) / upkeep_kg);
 }
 
-TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double leafArea_m2,
+TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double foliage_kg,
                   double absorbed_m2, const GrowingConditions& conditions) {
   TreeYear year;
   year.production_kg = life.lightUseEfficiency * absorbed_m2 * conditions.productionShare();
-  year.upkeep_kg = crownUpkeep(life, leafArea_m2);
+  year.upkeep_kg = crownUpkeep(life, foliage_kg);
   const double wood_kg = year.production_kg - year.upkeep_kg;
   year.dbh_m = dbh_m;
   year.height_m = height_m;

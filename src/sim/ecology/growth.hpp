@@ -25,22 +25,36 @@ double stemVolume(const LifeHistory& life, double dbh_m, double height_m);
 // Crown radius from stem diameter and height (SILVA's crown diameter function), at most half
 // the height.
 double crownRadiusOf(const LifeHistory& life, double dbh_m, double height_m);
-// Leaf area, m2: the foliage allometry times the specific leaf area, as in iLand, but no more
-// than the crown's projection can light: leaves deeper in a crown than where the open sky's
-// light has fallen to the leaf compensation light never pay their way, so a crown holds at
-// most maxCrownLeafAreaIndex() m2 of leaf per m2 of its projection (docs/ecology.md).
-// Pruning moves the leaves up the stem, to where there is light, but does not shrink them:
-// a suppressed tree must feed all of them.
-double leafAreaOf(const LifeHistory& life, double dbh_m, double height_m);
+// A crown's foliage: its mass (iLand's foliage allometry) and the leaf area it spreads into.
+// Leaves are built in the light they get (sun and shade leaves): from the crown's top down,
+// as the light falls by Beer's law, each layer's leaf mass per area falls from the sun
+// leaves' (1 / specific leaf area) to shadeLeafMassRatio of it in darkness, linear in the
+// light, so the same mass spreads into more leaf area the deeper the crown and the darker
+// its top (docs/ecology.md, "Shade"). No crown holds more than its projection can light:
+// leaves deeper than where the open sky's light has fallen to the leaf compensation light
+// never pay their way, so a crown holds at most maxCrownLeafAreaIndex() m2 of leaf per m2 of
+// projection, and only the mass of those leaves. Pruning moves the leaves up the stem, to
+// where there is light, but does not shrink them: a suppressed tree must feed all of them.
+struct CrownFoliage {
+  double leafArea_m2 = 0.0;
+  double foliage_kg = 0.0;
+};
+// `topLight` is the light at the crown's top relative to the open (last year's).
+CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m,
+                          double topLight);
 double maxCrownLeafAreaIndex(const LifeHistory& life);
 // Wood (stem, branches, coarse roots), kg, and its inverse.
 double woodyBiomass(const LifeHistory& life, double dbh_m);
 // The inverse starts from `guess_m` when given (the diameter before a year's growth).
 double diameterOfWoodyBiomass(const LifeHistory& life, double biomass_kg, double guess_m = 0.0);
-// The yearly upkeep of a crown's leaves and the fine roots that feed them, kg.
-double crownUpkeep(const LifeHistory& life, double leafArea_m2);
-// The light (fraction of open sky) at which a leaf makes just its upkeep: branches in less
-// light die (crown pruning).
+// The leaf mass per area of leaves grown in this light (relative to the open), as a share
+// of the sun leaves': from the species' shade ratio in darkness to 1 in full light.
+double leafMassShare(const LifeHistory& life, double light);
+// The yearly upkeep of a crown's leaves and the fine roots that feed them (in proportion to
+// the foliage's mass), kg.
+double crownUpkeep(const LifeHistory& life, double foliage_kg);
+// The light (fraction of open sky) at which a leaf acclimated to it makes just its upkeep:
+// branches in less light die (crown pruning).
 double leafCompensationLight(const LifeHistory& life);
 // The potential height increment over one year from a height (the curve's next year from the
 // age it has that height).
@@ -66,9 +80,9 @@ struct TreeYear {
   double carbonDeficit() const;
 };
 
-// A tree's growth over a year. `absorbed_m2` is the light its crown (of `leafArea_m2`)
+// A tree's growth over a year. `absorbed_m2` is the light its crown (of `foliage_kg`)
 // absorbed, in m2 of open-sky light.
-TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double leafArea_m2,
+TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double foliage_kg,
                   double absorbed_m2, const GrowingConditions& conditions);
 
 // A sapling's new height, and whether the year was poor for it (less than the species'

@@ -40,7 +40,40 @@ TEST(Growth, StemVolumeAndCrownFollowTheirAllometries) {
   EXPECT_LT(cd, 10.0);
   // A young plant's crown is no wider than half its height.
   EXPECT_DOUBLE_EQ(crownRadiusOf(h, 0.0, 0.8), 0.4);
-  EXPECT_NEAR(leafAreaOf(h, 0.3, 25.0), 11.0 * 0.021708 * std::pow(30.0, 1.7), 1e-9);
+  // Without shade leaves the foliage spreads at the specific leaf area, as in iLand.
+  const CrownFoliage foliage = crownFoliage(h, 0.3, 25.0, 1.0);
+  EXPECT_NEAR(foliage.foliage_kg, 0.021708 * std::pow(30.0, 1.7), 1e-9);
+  EXPECT_NEAR(foliage.leafArea_m2, 11.0 * foliage.foliage_kg, 1e-9);
+  EXPECT_NEAR(crownFoliage(h, 0.3, 25.0, 0.1).leafArea_m2, foliage.leafArea_m2, 1e-9);
+}
+
+// Sun and shade leaves: the layers of a crown are built in the light they get, so the same
+// foliage spreads into more leaf area, more so under a darker top; the mass stays the
+// allometry's. Analytic: m(L) = (r L + (1 - r) I0 (1 - exp(-k L)) / k) / SLA per m2.
+TEST(Growth, ShadeLeavesSpreadTheSameFoliageOverMoreLeafArea) {
+  LifeHistory h = life();
+  h.shadeLeafMassRatio = 0.4;
+  const double radius = crownRadiusOf(h, 0.3, 25.0);
+  const double projection = std::numbers::pi * radius * radius;
+  auto massOf = [&](double leafArea, double top) {
+    const double lai = leafArea / projection;
+    return projection / h.specificLeafArea *
+           (0.4 * lai + 0.6 * top * (1.0 - std::exp(-kLeafExtinction * lai)) / kLeafExtinction);
+  };
+  const double allometric = 0.021708 * std::pow(30.0, 1.7);
+  double last = 11.0 * allometric;  // sun leaves alone
+  for (double top : {1.0, 0.5, 0.1, 0.0}) {
+    const CrownFoliage foliage = crownFoliage(h, 0.3, 25.0, top);
+    EXPECT_NEAR(foliage.foliage_kg, allometric, 1e-9) << top;
+    EXPECT_NEAR(massOf(foliage.leafArea_m2, top), allometric, 1e-9 * allometric) << top;
+    EXPECT_GT(foliage.leafArea_m2, last) << top;
+    last = foliage.leafArea_m2;
+  }
+  // In darkness every leaf is a shade leaf: 1 / 0.4 of the sun leaves' area.
+  EXPECT_NEAR(crownFoliage(h, 0.3, 25.0, 0.0).leafArea_m2, 11.0 * allometric / 0.4, 1e-6);
+  EXPECT_DOUBLE_EQ(leafMassShare(h, 0.0), 0.4);
+  EXPECT_DOUBLE_EQ(leafMassShare(h, 0.5), 0.7);
+  EXPECT_DOUBLE_EQ(leafMassShare(h, 2.0), 1.0);
 }
 
 TEST(Growth, ACrownHoldsNoMoreLeavesThanItsProjectionCanLight) {
@@ -51,9 +84,12 @@ TEST(Growth, ACrownHoldsNoMoreLeavesThanItsProjectionCanLight) {
   // Beech's foliage stays below it; a foliage allometry four times as heavy reaches it.
   const double radius = crownRadiusOf(h, 0.3, 25.0);
   const double projection = std::numbers::pi * radius * radius;
-  EXPECT_LT(leafAreaOf(h, 0.3, 25.0), maxCrownLeafAreaIndex(h) * projection);
+  EXPECT_LT(crownFoliage(h, 0.3, 25.0, 1.0).leafArea_m2, maxCrownLeafAreaIndex(h) * projection);
   h.foliage.a *= 4.0;
-  EXPECT_NEAR(leafAreaOf(h, 0.3, 25.0), maxCrownLeafAreaIndex(h) * projection, 1e-9);
+  const CrownFoliage capped = crownFoliage(h, 0.3, 25.0, 1.0);
+  EXPECT_NEAR(capped.leafArea_m2, maxCrownLeafAreaIndex(h) * projection, 1e-9);
+  // It holds (and pays for) only the leaves it can light.
+  EXPECT_NEAR(capped.foliage_kg, capped.leafArea_m2 / h.specificLeafArea, 1e-9);
   // A more efficient leaf pays its way deeper in the crown.
   LifeHistory efficient = life();
   efficient.lightUseEfficiency *= 2.0;
@@ -78,17 +114,27 @@ TEST(Growth, WoodyBiomassInvertsToTheDiameter) {
 TEST(Growth, TheCrownsUpkeepIsItsTurnoverAndALeafAtTheCompensationLightJustPaysIt) {
   const LifeHistory h = life();
   // One leaf turnover a year, and fine roots of 0.75 the foliage renewed once a year.
-  EXPECT_NEAR(crownUpkeep(h, 110.0), 10.0 * (1.0 + 0.75), 1e-12);
+  EXPECT_NEAR(crownUpkeep(h, 10.0), 10.0 * (1.0 + 0.75), 1e-12);
   const double light = leafCompensationLight(h);
-  EXPECT_NEAR(h.lightUseEfficiency * kLeafExtinction * light, crownUpkeep(h, 1.0), 1e-12);
+  const double sunLeaf_kg = 1.0 / h.specificLeafArea;  // a m2 of sun leaves
+  EXPECT_NEAR(h.lightUseEfficiency * kLeafExtinction * light, crownUpkeep(h, sunLeaf_kg), 1e-12);
   EXPECT_GT(light, 0.0);
   EXPECT_LT(light, 1.0);
+  // A shade leaf, thinner, pays its way in less light: at the compensation light it makes
+  // exactly the upkeep of a leaf built in that light.
+  LifeHistory shade = h;
+  shade.shadeLeafMassRatio = 0.4;
+  const double shadeLight = leafCompensationLight(shade);
+  EXPECT_NEAR(shade.lightUseEfficiency * kLeafExtinction * shadeLight,
+              crownUpkeep(shade, sunLeaf_kg * leafMassShare(shade, shadeLight)), 1e-12);
+  EXPECT_LT(shadeLight, 0.5 * light);
 }
 
 TEST(Growth, WoodIsWhatProductionLeavesAfterTheUpkeep) {
   const LifeHistory h = life();
-  const double dbh = 0.2, height = 20.0, leaves = leafAreaOf(h, dbh, height);
-  const double absorbed = 0.6 * leaves;
+  const double dbh = 0.2, height = 20.0;
+  const double leaves = crownFoliage(h, dbh, height, 1.0).foliage_kg;  // kg of foliage
+  const double absorbed = 0.6 * h.specificLeafArea * leaves;
   const TreeYear year = growTree(h, dbh, height, leaves, absorbed, {});
   EXPECT_NEAR(year.production_kg, 1.5 * absorbed, 1e-12);
   EXPECT_NEAR(year.upkeep_kg, crownUpkeep(h, leaves), 1e-12);
@@ -110,8 +156,10 @@ TEST(Growth, WoodIsWhatProductionLeavesAfterTheUpkeep) {
 
 TEST(Growth, HeightFollowsThePotentialNoFasterThanTheNewWoodCarries) {
   const LifeHistory h = life();
-  const double dbh = 0.25, height = 25.0, leaves = leafAreaOf(h, dbh, height);
-  const TreeYear open = growTree(h, dbh, height, leaves, 0.7 * leaves, {});
+  const double dbh = 0.25, height = 25.0;
+  const double leaves = crownFoliage(h, dbh, height, 1.0).foliage_kg;
+  const double leafArea = h.specificLeafArea * leaves;
+  const TreeYear open = growTree(h, dbh, height, leaves, 0.7 * leafArea, {});
   EXPECT_NEAR(open.height_m - height, potentialHeightIncrement(h, height), 1e-12);
   EXPECT_NEAR(potentialHeightIncrement(h, height),
               h.height_m.at(h.height_m.ageOf(height) + 1.0) - height, 1e-12);
@@ -120,11 +168,13 @@ TEST(Growth, HeightFollowsThePotentialNoFasterThanTheNewWoodCarries) {
   const TreeYear thin = growTree(h, dbh, height, leaves, barely, {.lightResponse = 0.9});
   EXPECT_NEAR(thin.height_m - height, h.maxHeightDiameter * (thin.dbh_m - dbh), 1e-9);
   // A suppressed tree puts its little wood into height: it grows more slender.
-  const TreeYear shaded = growTree(h, dbh, height, leaves, 0.25 * leaves, {.lightResponse = 0.6});
+  const TreeYear shaded =
+      growTree(h, dbh, height, leaves, 0.25 * leafArea, {.lightResponse = 0.6});
   EXPECT_GT((shaded.height_m - height) / (shaded.dbh_m - dbh),
             (open.height_m - height) / (open.dbh_m - dbh));
   // Nothing passes the species' maximum height.
-  EXPECT_EQ(growTree(h, 0.8, 40.0, leafAreaOf(h, 0.8, 40.0), 1e4, {}).height_m, 40.0);
+  EXPECT_EQ(growTree(h, 0.8, 40.0, crownFoliage(h, 0.8, 40.0, 1.0).foliage_kg, 1e4, {}).height_m,
+            40.0);
 }
 
 TEST(Growth, SaplingsGrowInHeightAsLightAndSiteAllow) {

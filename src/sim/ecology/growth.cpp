@@ -57,7 +57,7 @@ CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m
     const double slope = sunMass * (r + (1.0 - r) * top * std::exp(-kLeafExtinction * lai));
     const double step = (mass - massTo(lai)) / slope;
     lai += step;
-    if (step < 1e-9 * lai) break;
+    if (step <= 1e-9 * lai) break;
   }
   return {std::min(lai, maxLai) * area, allometric_kg};
 }

@@ -33,10 +33,10 @@ double maxCrownLeafAreaIndex(const LifeHistory& life) {
   return std::log(1.0 / std::min(1.0, leafCompensationLight(life))) / kLeafExtinction;
 }
 
-CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m,
-                          double topLight) {
+CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m, double topLight) {
   const double radius = crownRadiusOf(life, dbh_m, height_m);
   const double area = std::numbers::pi * radius * radius;
+  if (area <= 0.0) return {0.0, 0.0};
   const double sunMass = 1.0 / life.specificLeafArea;  // kg per m2 of sun leaves
   const double r = life.shadeLeafMassRatio;
   const double top = std::clamp(topLight, 0.0, 1.0);
@@ -44,17 +44,17 @@ CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m
   // m(L) = sunMass (r L + (1 - r) top (1 - exp(-k L)) / k), increasing and concave, so
   // Newton's method from below (the sun leaves' area) climbs to the root without passing it.
   auto massTo = [&](double lai) {
-    return sunMass * (r * lai + (1.0 - r) * top * -std::expm1(-kLeafExtinction * lai) /
-                                    kLeafExtinction);
+    return sunMass *
+           (r * lai + (1.0 - r) * top * -std::expm1(-kLeafExtinction * lai) / kLeafExtinction);
   };
   const double maxLai = maxCrownLeafAreaIndex(life);
   const double allometric_kg = life.foliage.at(100.0 * dbh_m);
-  if (area <= 0.0) return {0.0, 0.0};
   const double mass = allometric_kg / area;
   if (mass >= massTo(maxLai)) return {maxLai * area, massTo(maxLai) * area};
   double lai = mass / sunMass;
   for (int i = 0; i < 50; ++i) {
-    const double slope = sunMass * (r + (1.0 - r) * top * std::exp(-kLeafExtinction * lai));
+    // The layer at the current depth: its mass per m2 of leaf.
+    const double slope = sunMass * leafMassShare(life, top * std::exp(-kLeafExtinction * lai));
     const double step = (mass - massTo(lai)) / slope;
     lai += step;
     if (step <= 1e-9 * lai) break;
@@ -101,8 +101,8 @@ double leafCompensationLight(const LifeHistory& life) {
   // A thin layer of leaves in light I absorbs k I per m2 of leaf (Beer's law's slope) and
   // costs U (r + (1 - r) I), U the upkeep of a m2 of sun leaves: they balance at
   // I = u r / (1 - u (1 - r)), u = U / (efficiency k) the balance of sun leaves.
-  const double u = crownUpkeep(life, 1.0 / life.specificLeafArea) /
-                   (life.lightUseEfficiency * kLeafExtinction);
+  const double u =
+      crownUpkeep(life, 1.0 / life.specificLeafArea) / (life.lightUseEfficiency * kLeafExtinction);
   if (u >= 1.0) return u;  // not even sun leaves in full light pay their way
   const double r = life.shadeLeafMassRatio;
   return u * r / (1.0 - u * (1.0 - r));

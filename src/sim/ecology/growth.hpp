@@ -30,18 +30,18 @@ double crownRadiusOf(const LifeHistory& life, double dbh_m, double height_m);
 // as the light falls by Beer's law, each layer's leaf mass per area falls from the sun
 // leaves' (1 / specific leaf area) to shadeLeafMassRatio of it in darkness, linear in the
 // light, so the same mass spreads into more leaf area the deeper the crown and the darker
-// its top (docs/ecology.md, "Shade"). No crown holds more than its projection can light:
-// leaves deeper than where the open sky's light has fallen to the leaf compensation light
-// never pay their way, so a crown holds at most maxCrownLeafAreaIndex() m2 of leaf per m2 of
-// projection, and only the mass of those leaves. Pruning moves the leaves up the stem, to
-// where there is light, but does not shrink them: a suppressed tree must feed all of them.
+// its top (docs/ecology.md, "Sun and shade leaves"). No crown holds more than its
+// projection can light: leaves deeper than where the open sky's light has fallen to the leaf
+// compensation light never pay their way, so a crown holds at most maxCrownLeafAreaIndex()
+// m2 of leaf per m2 of projection, and only the mass of those leaves. Pruning moves the
+// leaves up the stem, to where there is light, but does not shrink them: a suppressed tree
+// must feed all of them.
 struct CrownFoliage {
   double leafArea_m2 = 0.0;
   double foliage_kg = 0.0;
 };
 // `topLight` is the light at the crown's top relative to the open (last year's).
-CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m,
-                          double topLight);
+CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m, double topLight);
 double maxCrownLeafAreaIndex(const LifeHistory& life);
 // Wood (stem, branches, coarse roots), kg, and its inverse.
 double woodyBiomass(const LifeHistory& life, double dbh_m);

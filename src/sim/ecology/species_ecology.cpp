@@ -99,8 +99,7 @@ LifeHistory parseLife(TomlTable& life) {
   h.branches = allometry(life, "branch_biomass");
   h.coarseRoots = allometry(life, "coarse_root_biomass");
   h.specificLeafArea = life.number("specific_leaf_area_m2_per_kg", {}, {0.5, 100.0});
-  h.shadeLeafMassRatio =
-      life.number("shade_leaf_mass_ratio", h.shadeLeafMassRatio, {0.1, 1.0});
+  h.shadeLeafMassRatio = life.number("shade_leaf_mass_ratio", h.shadeLeafMassRatio, {0.1, 1.0});
   h.leafTurnover = life.number("leaf_turnover_per_year", {}, {0.01, 1.0});
   h.fineRootFoliageRatio = life.number("fine_root_foliage_ratio", {}, {0.0, 10.0});
   h.fineRootTurnover = life.number("fine_root_turnover_per_year", {}, {0.0, 1.0});

@@ -168,8 +168,7 @@ TEST(Growth, HeightFollowsThePotentialNoFasterThanTheNewWoodCarries) {
   const TreeYear thin = growTree(h, dbh, height, leaves, barely, {.lightResponse = 0.9});
   EXPECT_NEAR(thin.height_m - height, h.maxHeightDiameter * (thin.dbh_m - dbh), 1e-9);
   // A suppressed tree puts its little wood into height: it grows more slender.
-  const TreeYear shaded =
-      growTree(h, dbh, height, leaves, 0.25 * leafArea, {.lightResponse = 0.6});
+  const TreeYear shaded = growTree(h, dbh, height, leaves, 0.25 * leafArea, {.lightResponse = 0.6});
   EXPECT_GT((shaded.height_m - height) / (shaded.dbh_m - dbh),
             (open.height_m - height) / (open.dbh_m - dbh));
   // Nothing passes the species' maximum height.

@@ -37,7 +37,7 @@ nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
           {"instances", {{"lod0", n[0]}, {"lod1", n[1]}, {"lod2", n[2]}, {"impostor", n[3]}}},
           {"culled", s.forest.culled},
           {"too_small", s.forest.tooSmall},
-          {"shadow_casters", s.forest.shadowCasters},
+          {"shadow_casters", s.forest.shadowCasterCount()},
           {"triangles", s.triangles()},
           {"tree_triangles", s.forest.triangles},
           {"tree_triangles_all_lod0", s.forest.lod0Triangles},

@@ -290,15 +290,16 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       // may fall into it) or too far to be drawn as a mesh.
       const bool inShadowBox = shadows.halfSize_m > 0.0f && pixels >= lod.minPixels &&
                                std::max(d.x, d.z) < shadows.halfSize_m + radius;
+      // A tree casts with the level it is drawn at (the finer of a cross-fade), so its
+      // shadow has the gaps and the density of what the viewer sees of its crown; one
+      // outside the view casts as an impostor sprite seen from the sun.
       if (!frustum.intersectsSphere(centre, radius)) {
         outside[i] = 1;
-        casts_[i] = inShadowBox ? kSpriteCaster : kNoCaster;
+        casts_[i] = inShadowBox ? 1 + kLevelImpostor : kNoCaster;
         continue;
       }
       choices_[i] = chooseLevel(pixels, lod);
-      casts_[i] = !inShadowBox || choices_[i].level < 0 ? kNoCaster
-                  : choices_[i].level < kLevelImpostor  ? kMeshCaster
-                                                        : kSpriteCaster;
+      casts_[i] = inShadowBox && choices_[i].level >= 0 ? 1 + choices_[i].level : kNoCaster;
     }
   });
 
@@ -307,9 +308,9 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   // fragments of the ones behind before they are shaded — a third of the frame at 300k
   // trees. A total order, so the frame does not depend on the thread count.
   buckets_.assign(types.size() * kLevelCount, Bucket{});
-  shadowBuckets_.assign(types.size() * 2, Bucket{});
+  shadowBuckets_.assign(types.size() * kLevelCount, Bucket{});
   auto shadowBucket = [&](std::size_t i) -> Bucket& {
-    return shadowBuckets_[forest.type[i] * 2 + (casts_[i] == kSpriteCaster)];
+    return shadowBuckets_[forest.type[i] * kLevelCount + casts_[i] - 1];
   };
   // Every draw of tree i: its type (and the type it blends into) split its presence range,
   // and a level cross-fade splits each type's range again.
@@ -378,7 +379,8 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       stats.triangles += count * (level < kLevelImpostor ? triangles_[t][level] : 2);
       stats.lod0Triangles += count * triangles_[t][0];
     }
-  for (const Bucket& b : shadowBuckets_) stats.shadowCasters += b.count;
+  for (std::size_t b = 0; b < shadowBuckets_.size(); ++b)
+    stats.shadowCasters[b % kLevelCount] += shadowBuckets_[b].count;
   return stats;
 }
 
@@ -422,12 +424,13 @@ void ForestRenderer::drawShadows() const {
   glBindVertexArray(meshArray_.id());
   glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
   meshShadowProgram_.use();
-  // Crown proxies cast the shadows: the shadow map is too coarse for twigs to matter.
   for (std::size_t t = 0; t < types.size(); ++t)
-    drawRanges(ranges_[t][2], types[t].species, shadowBuckets_[2 * t], meshShadowProgram_);
+    for (int level = 0; level < kLevelImpostor; ++level)
+      drawRanges(ranges_[t][level], types[t].species, shadowBuckets_[t * kLevelCount + level],
+                 meshShadowProgram_);
 
   drawImpostors(impostorShadowProgram_, shadowPixelsPerMetre_,
-                [&](std::size_t t) { return shadowBuckets_[2 * t + 1]; });
+                [&](std::size_t t) { return shadowBuckets_[t * kLevelCount + kLevelImpostor]; });
 }
 
 }  // namespace eco

@@ -126,10 +126,10 @@ class ForestRenderer {
   std::vector<std::vector<Material>> materials_;  // [species][MaterialKind]
   std::vector<Atlas> atlases_;                    // [type]; baked for impostor sources only
   std::vector<Bucket> buckets_;                   // [type * kLevelCount + level]
-  // Shadow casters: trees drawn as meshes cast with their crown proxy (LOD2); impostors
-  // and trees outside the view cast as impostor sprites seen from the sun.
-  enum Caster : std::uint8_t { kNoCaster, kMeshCaster, kSpriteCaster };
-  std::vector<Bucket> shadowBuckets_;  // [type * 2 + (caster == kSpriteCaster)]
+  // Shadow casters: each tree casts with the level it is drawn at; trees outside the view
+  // cast as impostor sprites seen from the sun.
+  static constexpr std::uint8_t kNoCaster = 0;  // else casts_[i] is 1 + the level it casts with
+  std::vector<Bucket> shadowBuckets_;           // [type * kLevelCount + level]
   float shadowPixelsPerMetre_ = 0.0f;
   // Scratch of prepare(), kept to avoid reallocating every frame.
   std::vector<LodChoice> choices_;

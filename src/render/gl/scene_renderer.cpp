@@ -111,7 +111,8 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glEnable(GL_CULL_FACE);
-  if (shadows) renderShadowMap(options, u, forest_ && forest && stats.forest.shadowCasters);
+  if (shadows)
+    renderShadowMap(options, u, forest_ && forest && stats.forest.shadowCasterCount() > 0);
   glBindTextureUnit(4, shadowDepth_.id());
 
   target.bind();

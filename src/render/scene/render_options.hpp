@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <numeric>
 #include <optional>
 
 #include "render/scene/culling.hpp"
@@ -38,7 +39,10 @@ struct ForestStats {
   std::size_t tooSmall = 0;                          // under the LOD settings' minimum size
   std::size_t triangles = 0;                         // drawn in the colour pass
   std::size_t lod0Triangles = 0;                     // the same trees all at LOD0, for comparison
-  std::size_t shadowCasters = 0;
+  std::array<std::size_t, kLevelCount> shadowCasters{};  // per level it casts with
+  std::size_t shadowCasterCount() const {
+    return std::accumulate(shadowCasters.begin(), shadowCasters.end(), std::size_t{0});
+  }
 };
 
 struct FrameStats {

@@ -50,7 +50,7 @@ TEST(ForestRenderer, CullsTreesOutsideTheViewAndCoarsensWithDistance) {
   EXPECT_EQ(lod0.triangles, 30u * library.types()[forest.type[0]].meshes.lods[0].triangleCount());
 }
 
-TEST(ForestRenderer, OnlyMeshTreesInTheShadowBoxCastShadows) {
+TEST(ForestRenderer, OnlyTreesInTheShadowBoxCastShadows) {
   test::useHeadlessGl();
   const TreeLibrary& library = test::smallLibrary();
   FrameUniformBuffer uniforms;
@@ -60,8 +60,35 @@ TEST(ForestRenderer, OnlyMeshTreesInTheShadowBoxCastShadows) {
   camera.position = worldFromMap(160, 20, 105);
   const ShadowBox box{worldFromMap(160, 60, 100), 50.0f};
   const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, box);
-  EXPECT_GT(stats.shadowCasters, 0u);
-  EXPECT_LE(stats.shadowCasters, 6u);  // trees within 50 m (plus crown) of north 60
+  EXPECT_GT(stats.shadowCasterCount(), 0u);
+  EXPECT_LE(stats.shadowCasterCount(), 6u);  // trees within 50 m (plus crown) of north 60
+}
+
+// A tree's shadow has the gaps of the crown the viewer sees: it casts with the level it is
+// drawn at, not with a smooth crown hull; a tree outside the view casts as an impostor.
+TEST(ForestRenderer, TreesCastWithTheLevelTheyAreDrawnAt) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  const Forest forest = rowOfTrees(library, 30);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);
+  const ShadowBox everything{worldFromMap(160, 300, 100), 1000.0f};
+  for (int level = 0; level < kLevelCount; ++level) {
+    LodSettings lod;
+    lod.forcedLevel = level;
+    const ForestStats stats = renderer.prepare(forest, camera, 640, 360, lod, everything);
+    for (int caster = 0; caster < kLevelCount; ++caster) {
+      const std::size_t expected = (caster == level ? 30u : 0u) + (caster == kLevelImpostor);
+      EXPECT_EQ(stats.shadowCasters[caster], expected) << "drawn at " << level;
+    }
+  }
+  // Chosen by size: each level's casters are the trees drawn at it.
+  const ForestStats bySize = renderer.prepare(forest, camera, 640, 360, {}, everything);
+  EXPECT_GT(bySize.shadowCasters[0], 0u);
+  EXPECT_GT(bySize.shadowCasters[kLevelImpostor], 1u);
+  EXPECT_EQ(bySize.shadowCasterCount(), 31u);
 }
 
 TEST(ForestRenderer, BlendingTreesDrawBothTypesAndAbsentTreesNothing) {

@@ -61,7 +61,7 @@ RenderOptions previewRenderOptions(const PreviewSettings& settings, double sway_
                                    double windTime) {
   RenderOptions options;
   options.lod.forcedLevel = settings.level;
-  options.shadowRange_m = 60.0f;
+  options.shadowReach = {20.0f, 60.0f};  // the tree and its row, a few tens of metres away
   options.wind.sway_ws = sway_ws;
   options.wind.time = windTime;
   return options;

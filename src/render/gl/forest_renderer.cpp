@@ -260,17 +260,20 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
 }
 
 ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, int width,
-                                    int height, const LodSettings& lod, const ShadowBox& shadows) {
+                                    int height, const LodSettings& lod,
+                                    std::span<const ShadowBox> shadows) {
   ForestStats stats;
   const auto& types = library_.types();
   const Frustum frustum =
       Frustum::fromMatrix(camera.projection(static_cast<float>(width) / height) * camera.view());
   const float pixelsPerRadian = camera.pixelsPerRadian(height);
   pixelsPerUnit_ = pixelsPerRadian;
-  shadowPixelsPerMetre_ = shadows.mapPixelsPerMetre;
+  const std::size_t cascades = shadows.size();
+  shadowPixelsPerMetre_.clear();
+  for (const ShadowBox& box : shadows) shadowPixelsPerMetre_.push_back(box.mapPixelsPerMetre);
   const std::size_t n = forest.size();
   choices_.assign(n, LodChoice{});
-  casts_.assign(n, 0);
+  casts_.assign(n * cascades, kNoCaster);
   std::vector<std::uint8_t> outside(n, 0);
   distances_.resize(n);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
@@ -284,22 +287,36 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       const float radius = type.bounds.w * std::max(sx, sy);
       const float distance = glm::length(centre - camera.position);
       distances_[i] = distance;
-      const float pixels = projectedPixels(type.height_m * sy, distance, pixelsPerRadian);
-      const glm::vec3 d = glm::abs(centre - shadows.centre);
-      // A tree in the shadowed square casts even when it is outside the view (its shadow
-      // may fall into it) or too far to be drawn as a mesh.
-      const bool inShadowBox = shadows.halfSize_m > 0.0f && pixels >= lod.minPixels &&
-                               std::max(d.x, d.z) < shadows.halfSize_m + radius;
-      // A tree casts with the level it is drawn at (the finer of a cross-fade), so its
-      // shadow has the gaps and the density of what the viewer sees of its crown; one
-      // outside the view casts as an impostor sprite seen from the sun.
-      if (!frustum.intersectsSphere(centre, radius)) {
-        outside[i] = 1;
-        casts_[i] = inShadowBox ? 1 + kLevelImpostor : kNoCaster;
-        continue;
+      const float height_m = type.height_m * sy;
+      const float pixels = projectedPixels(height_m, distance, pixelsPerRadian);
+      const bool inView = frustum.intersectsSphere(centre, radius);
+      if (inView) choices_[i] = chooseLevel(pixels, lod);
+      outside[i] = !inView;
+      // A tree casts into each cascade whose square its crown reaches (also from outside
+      // the view: its shadow may fall into it) and whose texels it covers. In the nearest it
+      // casts with the level it is drawn at (the finer of a cross-fade), so its shadow has
+      // the gaps and the density of the crown the viewer sees; elsewhere as a sprite.
+      // Only a tree whose shadow can reach the view casts: the sphere around the crown's
+      // shadow on level ground below the stem base (swept from the crown along the sun by
+      // its height over the sun's elevation) must meet the frustum.
+      bool shadowInView = false;
+      if (cascades > 0) {
+        const glm::vec3 toSun = shadows[0].toSun;
+        const float drop = height_m + radius;
+        const float length = drop / std::max(toSun.y, 0.02f);
+        shadowInView =
+            frustum.intersectsSphere(centre - toSun * (0.5f * length), radius + 0.5f * length);
       }
-      choices_[i] = chooseLevel(pixels, lod);
-      casts_[i] = inShadowBox && choices_[i].level >= 0 ? 1 + choices_[i].level : kNoCaster;
+      for (std::size_t k = 0; shadowInView && k < cascades; ++k) {
+        const ShadowBox& box = shadows[k];
+        const glm::vec3 d = glm::abs(centre - box.centre);
+        const bool casts = box.halfSize_m > 0.0f && pixels >= lod.minPixels &&
+                           height_m * box.mapPixelsPerMetre >= 1.0f &&
+                           std::max(d.x, d.z) < box.halfSize_m + radius;
+        if (!casts) continue;
+        const int level = k == 0 && inView ? choices_[i].level : kLevelImpostor;
+        if (level >= 0) casts_[i * cascades + k] = static_cast<std::uint8_t>(1 + level);
+      }
     }
   });
 
@@ -308,9 +325,17 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   // fragments of the ones behind before they are shaded — a third of the frame at 300k
   // trees. A total order, so the frame does not depend on the thread count.
   buckets_.assign(types.size() * kLevelCount, Bucket{});
-  shadowBuckets_.assign(types.size() * kLevelCount, Bucket{});
-  auto shadowBucket = [&](std::size_t i) -> Bucket& {
-    return shadowBuckets_[forest.type[i] * kLevelCount + casts_[i] - 1];
+  shadowBuckets_.assign(cascades * types.size() * kLevelCount, Bucket{});
+  // The bucket of tree i's caster in cascade c, or null where it casts none there.
+  auto shadowBucket = [&](std::size_t i, std::size_t c) -> Bucket* {
+    const std::uint8_t caster = casts_[i * cascades + c];
+    if (caster == kNoCaster) return nullptr;
+    return &shadowBuckets_[(c * types.size() + forest.type[i]) * kLevelCount + caster - 1];
+  };
+  auto castsAny = [&](std::size_t i) {
+    for (std::size_t c = 0; c < cascades; ++c)
+      if (casts_[i * cascades + c] != kNoCaster) return true;
+    return false;
   };
   // Every draw of tree i: its type (and the type it blends into) split its presence range,
   // and a level cross-fade splits each type's range again.
@@ -336,7 +361,8 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       ++stats.culled;
     else if (choices_[i].level < 0)
       ++stats.tooSmall;
-    if (casts_[i]) ++shadowBucket(i).count;
+    for (std::size_t c = 0; c < cascades; ++c)
+      if (Bucket* bucket = shadowBucket(i, c)) ++bucket->count;
     if (choices_[i].level < 0) continue;
     forEachDraw(i, [&](int type, int level, float, float, float) {
       ++buckets_[type * kLevelCount + level].count;
@@ -348,7 +374,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   staging_.resize(next);
   order_.clear();
   for (std::size_t i = 0; i < n; ++i)
-    if (choices_[i].level >= 0 || casts_[i]) order_.push_back(static_cast<std::uint32_t>(i));
+    if (choices_[i].level >= 0 || castsAny(i)) order_.push_back(static_cast<std::uint32_t>(i));
   tbb::parallel_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
     return distances_[a] < distances_[b] || (distances_[a] == distances_[b] && a < b);
   });
@@ -363,7 +389,8 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       forEachDraw(i, [&](int type, int level, float scale, float lo, float hi) {
         put(buckets_[type * kLevelCount + level], scale, lo, hi);
       });
-    if (casts_[i]) put(shadowBucket(i), 1.0f, 0.0f, forest.presence[i]);
+    for (std::size_t c = 0; c < cascades; ++c)
+      if (Bucket* bucket = shadowBucket(i, c)) put(*bucket, 1.0f, 0.0f, forest.presence[i]);
   }
   if (staging_.size() > instanceCapacity_) {
     instanceCapacity_ = std::max<std::size_t>(staging_.size() + staging_.size() / 2, 1024);
@@ -419,18 +446,20 @@ void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
   }
 }
 
-void ForestRenderer::drawShadows() const {
+void ForestRenderer::drawShadows(std::size_t cascade) const {
   const auto& types = library_.types();
+  const std::size_t first = cascade * types.size() * kLevelCount;
   glBindVertexArray(meshArray_.id());
   glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
   meshShadowProgram_.use();
   for (std::size_t t = 0; t < types.size(); ++t)
     for (int level = 0; level < kLevelImpostor; ++level)
-      drawRanges(ranges_[t][level], types[t].species, shadowBuckets_[t * kLevelCount + level],
-                 meshShadowProgram_);
+      drawRanges(ranges_[t][level], types[t].species,
+                 shadowBuckets_[first + t * kLevelCount + level], meshShadowProgram_);
 
-  drawImpostors(impostorShadowProgram_, shadowPixelsPerMetre_,
-                [&](std::size_t t) { return shadowBuckets_[t * kLevelCount + kLevelImpostor]; });
+  drawImpostors(impostorShadowProgram_, shadowPixelsPerMetre_[cascade], [&](std::size_t t) {
+    return shadowBuckets_[first + t * kLevelCount + kLevelImpostor];
+  });
 }
 
 }  // namespace eco

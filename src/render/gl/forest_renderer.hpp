@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -22,16 +23,10 @@
 #include "render/scene/forest.hpp"
 #include "render/scene/impostor.hpp"
 #include "render/scene/render_options.hpp"
+#include "render/scene/shadow_cascades.hpp"
 #include "render/scene/tree_library.hpp"
 
 namespace eco {
-
-// Where trees cast shadows: within `halfSize_m` of `centre`, and only trees drawn as meshes.
-struct ShadowBox {
-  glm::vec3 centre{0.0f};
-  float halfSize_m = 0.0f;         // 0: no shadow pass
-  float mapPixelsPerMetre = 0.0f;  // of the shadow map's orthographic view: sprite sizes
-};
 
 // One tree instance as the shaders read it (attributes 8-10).
 struct InstanceAttributes {
@@ -46,7 +41,7 @@ struct PackedTreeVertex {
   glm::vec3 position;
   std::uint32_t normal;  // GL_INT_2_10_10_10_REV
   glm::vec2 uv;
-  std::uint16_t wind[12];  // swaySin, swayCos, bendEast, bendSouth as half floats
+  std::uint16_t wind[12];       // swaySin, swayCos, bendEast, bendSouth as half floats
 };
 static_assert(sizeof(PackedTreeVertex) == 48);
 PackedTreeVertex packVertex(const TreeVertex& vertex);
@@ -65,12 +60,14 @@ class ForestRenderer {
   // materials kept; impostors are baked again only when asked (they take longest).
   void reloadMeshes(const FrameUniformBuffer& uniforms, bool bakeImpostors);
 
-  // Culls, picks levels and fills the instance buffer for this camera.
+  // Culls, picks levels and fills the instance buffer for this camera and the shadow
+  // cascades (none: no shadows).
   ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
-                      const LodSettings& lod, const ShadowBox& shadows);
+                      const LodSettings& lod, std::span<const ShadowBox> shadows);
   const TreeLibrary& library() const { return library_; }
-  void draw() const;         // the colour pass of what prepare() chose
-  void drawShadows() const;  // the shadow casters into the bound depth target
+  void draw() const;  // the colour pass of what prepare() chose
+  // One cascade's shadow casters into the bound depth target.
+  void drawShadows(std::size_t cascade) const;
 
   // The type whose impostor draws `type`: the variants of a species and age class share
   // the first one's. Below the impostor switch (100 px) the variants differ by a few pixels
@@ -126,14 +123,15 @@ class ForestRenderer {
   std::vector<std::vector<Material>> materials_;  // [species][MaterialKind]
   std::vector<Atlas> atlases_;                    // [type]; baked for impostor sources only
   std::vector<Bucket> buckets_;                   // [type * kLevelCount + level]
-  // Shadow casters: each tree casts with the level it is drawn at; trees outside the view
-  // cast as impostor sprites seen from the sun.
-  static constexpr std::uint8_t kNoCaster = 0;  // else casts_[i] is 1 + the level it casts with
-  std::vector<Bucket> shadowBuckets_;           // [type * kLevelCount + level]
-  float shadowPixelsPerMetre_ = 0.0f;
+  // Shadow casters, per cascade: in the nearest each tree casts with the level it is drawn
+  // at; trees outside the view, and every tree in the coarser cascades (whose texels are
+  // decimetres to metres), cast as impostor sprites seen from the sun.
+  static constexpr std::uint8_t kNoCaster = 0;  // else 1 + the level it casts with
+  std::vector<Bucket> shadowBuckets_;           // [(cascade * types + type) * kLevelCount + level]
+  std::vector<float> shadowPixelsPerMetre_;     // [cascade]
   // Scratch of prepare(), kept to avoid reallocating every frame.
   std::vector<LodChoice> choices_;
-  std::vector<std::uint8_t> casts_;
+  std::vector<std::uint8_t> casts_;  // [tree * cascades + cascade]
   std::vector<float> distances_;
   std::vector<std::uint32_t> order_;
   std::vector<Instance> staging_;

@@ -6,16 +6,18 @@
 #include <glm/vec4.hpp>
 
 #include "render/gl/gl_objects.hpp"
+#include "render/scene/shadow_cascades.hpp"
 
 namespace eco {
 
 struct FrameUniforms {
   glm::mat4 viewProj{1.0f};
-  glm::mat4 lightViewProj{1.0f};
+  glm::mat4 lightViewProj{1.0f};  // the shadow pass being drawn: its cascade's
   glm::mat4 inverseViewProj{1.0f};
-  glm::vec4 camera{0.0f};                   // xyz eye; w wind time
-  glm::vec4 toSun{0.0f, 1.0f, 0.0f, 0.0f};  // w: 1 when the shadow map is used
-  glm::vec4 sunColor{1.0f};                 // w: fog density per metre
+  glm::mat4 shadowCascades[kShadowCascades]{};  // every cascade's, nearest first: lookups
+  glm::vec4 camera{0.0f};                       // xyz eye; w wind time
+  glm::vec4 toSun{0.0f, 1.0f, 0.0f, 0.0f};      // w: 1 when the shadow map is used
+  glm::vec4 sunColor{1.0f};                     // w: fog density per metre
   glm::vec4 skyZenith{0.0f};
   glm::vec4 skyHorizon{0.0f};
   glm::vec4 ambient{0.0f};

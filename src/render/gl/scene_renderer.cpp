@@ -35,27 +35,39 @@ void SceneRenderer::reloadTrees(bool bakeImpostors) {
   if (forest_) forest_->reloadMeshes(uniforms_, bakeImpostors);
 }
 
-void SceneRenderer::renderShadowMap(const RenderOptions& options, const FrameUniforms& u,
-                                    bool forestCasts) {
+void SceneRenderer::renderShadowMaps(const RenderOptions& options, FrameUniforms u,
+                                     const ShadowCascades& cascades, bool forestCasts) {
   if (shadowSize_ != options.shadowMapSize) {
     shadowSize_ = options.shadowMapSize;
-    shadowDepth_ = makeTextureStorage(GL_DEPTH_COMPONENT32F, shadowSize_, shadowSize_);
-    glTextureParameteri(shadowDepth_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(shadowDepth_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture);
+    shadowDepth_ = GlName(GlKind::Texture, texture);
+    glTextureStorage3D(texture, 1, GL_DEPTH_COMPONENT32F, shadowSize_, shadowSize_,
+                       kShadowCascades);
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     GLuint framebuffer = 0;
     glCreateFramebuffers(1, &framebuffer);
-    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, shadowDepth_.id(), 0);
     glNamedFramebufferDrawBuffer(framebuffer, GL_NONE);
     shadowFramebuffer_ = GlName(GlKind::Framebuffer, framebuffer);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_.id());
   glViewport(0, 0, shadowSize_, shadowSize_);
-  glClear(GL_DEPTH_BUFFER_BIT);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
-  uniforms_.upload(u);
-  terrain_.draw(Frustum::fromMatrix(u.lightViewProj), true);
-  if (forestCasts) forest_->drawShadows();
+  for (int c = 0; c < kShadowCascades; ++c) {
+    glNamedFramebufferTextureLayer(shadowFramebuffer_.id(), GL_DEPTH_ATTACHMENT, shadowDepth_.id(),
+                                   0, c);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    u.lightViewProj = cascades[c].lightViewProj;
+    uniforms_.upload(u);
+    terrain_.draw(Frustum::fromMatrix(u.lightViewProj), true);
+    if (forestCasts) forest_->drawShadows(static_cast<std::size_t>(c));
+  }
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
@@ -66,30 +78,16 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   const Lighting light = lightingFor(latitude_deg_, options.sun);
   const float aspect = static_cast<float>(target.width) / static_cast<float>(target.height);
 
-  // The shadowed square lies ahead of the camera on the ground plane.
-  glm::vec3 ahead = camera.forward();
-  ahead.y = 0.0f;
-  ahead = glm::length(ahead) > 1e-4f ? glm::normalize(ahead) : glm::vec3(0.0f, 0.0f, -1.0f);
-  ShadowBox box;
   const bool shadows = options.shadows && light.toSun.y > 0.02f;
-  if (shadows) {
-    box.centre = camera.position + ahead * (0.7f * options.shadowRange_m);
-    box.halfSize_m = options.shadowRange_m;
-  }
+  ShadowCascades cascades{};
+  if (shadows)
+    cascades = shadowCascades(camera, light.toSun, options.shadowReach, options.shadowMapSize);
 
   FrameUniforms u;
   const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
   u.viewProj = viewProj;
   u.inverseViewProj = glm::inverse(viewProj);
-  if (shadows) {
-    const float depth = 4000.0f;
-    const glm::mat4 lightView =
-        glm::lookAt(box.centre + light.toSun * (0.5f * depth), box.centre,
-                    std::abs(light.toSun.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1));
-    const float r = box.halfSize_m * 1.5f;  // the square seen from a slanted sun
-    u.lightViewProj = glm::ortho(-r, r, -r, r, 0.0f, depth) * lightView;
-    box.mapPixelsPerMetre = static_cast<float>(options.shadowMapSize) / (2.0f * r);
-  }
+  for (int c = 0; c < kShadowCascades; ++c) u.shadowCascades[c] = cascades[c].lightViewProj;
   u.camera = glm::vec4(camera.position, static_cast<float>(options.wind.time));
   u.toSun = glm::vec4(light.toSun, shadows ? 1.0f : 0.0f);
   u.sunColor = glm::vec4(light.sunColor, options.fogDensity.value_or(kClearAirFogDensity));
@@ -104,7 +102,9 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
                 static_cast<float>(options.wind.gust));
 
   if (forest_ && forest)
-    stats.forest = forest_->prepare(*forest, camera, target.width, target.height, options.lod, box);
+    stats.forest = forest_->prepare(
+        *forest, camera, target.width, target.height, options.lod,
+        shadows ? std::span<const ShadowBox>(cascades) : std::span<const ShadowBox>());
   stats.prepareMs = millisecondsSince(start);
 
   glEnable(GL_DEPTH_TEST);
@@ -112,7 +112,8 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   glDepthMask(GL_TRUE);
   glEnable(GL_CULL_FACE);
   if (shadows)
-    renderShadowMap(options, u, forest_ && forest && stats.forest.shadowCasterCount() > 0);
+    renderShadowMaps(options, u, cascades,
+                     forest_ && forest && stats.forest.shadowCasterCount() > 0);
   glBindTextureUnit(4, shadowDepth_.id());
 
   target.bind();

@@ -1,6 +1,6 @@
-// One frame of a scene: sky, terrain and forest, lit by the sun with a shadow map for the
-// near field, fogged with distance, into a render target. `ecoforest render`, `view`, the
-// tests and the benchmark all draw through this.
+// One frame of a scene: sky, terrain and forest, lit by the sun with cascaded shadow maps
+// out to a kilometre and more, fogged with distance, into a render target. `ecoforest render`,
+// `view`, the tests and the benchmark all draw through this.
 #pragma once
 
 #include <memory>
@@ -43,7 +43,9 @@ class SceneRenderer {
   ForestRenderer* forest() { return forest_.get(); }
 
  private:
-  void renderShadowMap(const RenderOptions& options, const FrameUniforms& u, bool forestCasts);
+  // Each cascade's depth map, a layer of shadowDepth_ (u: the frame's uniforms).
+  void renderShadowMaps(const RenderOptions& options, FrameUniforms u,
+                        const ShadowCascades& cascades, bool forestCasts);
 
   const Terrain& terrainData_;  // the caller's, as for the library
   double latitude_deg_;

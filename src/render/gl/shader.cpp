@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/scene/shadow_cascades.hpp"
+
 namespace eco {
 namespace {
 
@@ -28,7 +30,9 @@ std::string_view requireSource(std::string_view file) {
 
 Program::Program(std::initializer_list<ShaderStage> stages, const std::vector<std::string>& defines,
                  const std::vector<const char*>& feedback) {
-  std::string header = "#version 450 core\n";
+  // The frame's uniform block (common.glsl) holds an array of the shadow cascades.
+  std::string header =
+      fmt::format("#version 450 core\n#define SHADOW_CASCADES {}\n", kShadowCascades);
   for (const std::string& define : defines) header += "#define " + define + "\n";
   const std::string_view common = requireSource("common.glsl");
 

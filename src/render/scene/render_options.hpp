@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "render/scene/culling.hpp"
+#include "render/scene/shadow_cascades.hpp"
 #include "render/scene/sun.hpp"
 #include "sim/scenario.hpp"
 
@@ -28,7 +29,7 @@ struct RenderOptions {
   SceneWind wind;
   LodSettings lod;
   bool shadows = true;
-  float shadowRange_m = 150.0f;  // half the side of the shadowed square ahead of the camera
+  ShadowReach shadowReach;  // the nearest and the farthest cascade's squares
   int shadowMapSize = 2048;
   std::optional<float> fogDensity;  // per metre; default clear air (100 km visibility)
 };

@@ -1,6 +1,7 @@
 #include "render/gl/forest_renderer.hpp"
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 #include <glm/gtc/packing.hpp>
 
 #include "gl_support.hpp"
@@ -12,6 +13,9 @@
 
 namespace eco {
 namespace {
+
+// Toward a sun 17 degrees up in the south (world z is south).
+const glm::vec3 kLowSouthernSun = glm::normalize(glm::vec3(0.0f, 0.3f, 1.0f));
 
 // A row of mature maples northward from the camera, one every 20 m, and one behind it.
 Forest rowOfTrees(const TreeLibrary& library, int count) {
@@ -58,15 +62,16 @@ TEST(ForestRenderer, OnlyTreesInTheShadowBoxCastShadows) {
   const Forest forest = rowOfTrees(library, 30);
   Camera camera;
   camera.position = worldFromMap(160, 20, 105);
-  const ShadowBox box{worldFromMap(160, 60, 100), 50.0f};
-  const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, box);
+  const ShadowBox box{worldFromMap(160, 60, 100), 50.0f, 4.0f};
+  const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, {&box, 1});
   EXPECT_GT(stats.shadowCasterCount(), 0u);
   EXPECT_LE(stats.shadowCasterCount(), 6u);  // trees within 50 m (plus crown) of north 60
 }
 
-// A tree's shadow has the gaps of the crown the viewer sees: it casts with the level it is
-// drawn at, not with a smooth crown hull; a tree outside the view casts as an impostor.
-TEST(ForestRenderer, TreesCastWithTheLevelTheyAreDrawnAt) {
+// A tree's shadow has the gaps of the crown the viewer sees: in the nearest cascade it casts
+// with the level it is drawn at, not with a smooth crown hull; a tree outside the view, and
+// every tree in a coarser cascade, casts as an impostor.
+TEST(ForestRenderer, TreesCastWithTheLevelTheyAreDrawnAtInTheNearestCascade) {
   test::useHeadlessGl();
   const TreeLibrary& library = test::smallLibrary();
   FrameUniformBuffer uniforms;
@@ -74,21 +79,59 @@ TEST(ForestRenderer, TreesCastWithTheLevelTheyAreDrawnAt) {
   const Forest forest = rowOfTrees(library, 30);
   Camera camera;
   camera.position = worldFromMap(160, 20, 105);
-  const ShadowBox everything{worldFromMap(160, 300, 100), 1000.0f};
+  // A low sun in the south: the tree behind the camera throws its shadow into the view.
+  const ShadowBox everything{worldFromMap(160, 300, 100), 1000.0f, 1.0f, glm::mat4(1.0f),
+                             kLowSouthernSun};
+  const std::array<ShadowBox, 2> cascades{everything, everything};
   for (int level = 0; level < kLevelCount; ++level) {
     LodSettings lod;
     lod.forcedLevel = level;
-    const ForestStats stats = renderer.prepare(forest, camera, 640, 360, lod, everything);
+    const ForestStats stats = renderer.prepare(forest, camera, 640, 360, lod, cascades);
     for (int caster = 0; caster < kLevelCount; ++caster) {
-      const std::size_t expected = (caster == level ? 30u : 0u) + (caster == kLevelImpostor);
+      // the 30 trees in view in the nearest; the one behind there, and all 31 in the other
+      const std::size_t expected = (caster == level ? 30u : 0u) + 32u * (caster == kLevelImpostor);
       EXPECT_EQ(stats.shadowCasters[caster], expected) << "drawn at " << level;
     }
   }
   // Chosen by size: each level's casters are the trees drawn at it.
-  const ForestStats bySize = renderer.prepare(forest, camera, 640, 360, {}, everything);
+  const ForestStats bySize = renderer.prepare(forest, camera, 640, 360, {}, {&everything, 1});
   EXPECT_GT(bySize.shadowCasters[0], 0u);
   EXPECT_GT(bySize.shadowCasters[kLevelImpostor], 1u);
   EXPECT_EQ(bySize.shadowCasterCount(), 31u);
+}
+
+// Trees outside the view cast only where their shadow can reach it: the tree behind the
+// camera casts under a low sun behind it, not under a sun ahead.
+TEST(ForestRenderer, ATreeOutOfViewCastsOnlyWhereItsShadowCanReachTheView) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  const Forest forest = rowOfTrees(library, 30);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);
+  ShadowBox box{worldFromMap(160, 300, 100), 1000.0f, 1.0f, glm::mat4(1.0f), kLowSouthernSun};
+  EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&box, 1}).shadowCasterCount(), 31u);
+  box.toSun = glm::vec3(1.0f, 1.0f, -1.0f) * kLowSouthernSun;  // the same sun in the north
+  EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&box, 1}).shadowCasterCount(), 30u);
+}
+
+// A cascade's texels decide who casts there: a tree shorter than one texel casts nothing.
+TEST(ForestRenderer, TreesSmallerThanACascadesTexelCastNothingThere) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, {}, uniforms);
+  const Forest forest = rowOfTrees(library, 30);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);
+  const float height = library.types()[forest.type[0]].height_m;
+  const ShadowBox fine{worldFromMap(160, 300, 100), 1000.0f, 1.01f / height, glm::mat4(1.0f),
+                       kLowSouthernSun};
+  const ShadowBox coarse{worldFromMap(160, 300, 100), 1000.0f, 0.99f / height, glm::mat4(1.0f),
+                         kLowSouthernSun};
+  EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&fine, 1}).shadowCasterCount(), 31u);
+  EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&coarse, 1}).shadowCasterCount(), 0u);
 }
 
 TEST(ForestRenderer, BlendingTreesDrawBothTypesAndAbsentTreesNothing) {

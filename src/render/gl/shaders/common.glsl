@@ -2,8 +2,9 @@
 // C++ mirror: FrameUniforms in scene_renderer.hpp (std140: only vec4 and mat4 members).
 layout(std140, binding = 0) uniform FrameBlock {
   mat4 uViewProj;
-  mat4 uLightViewProj;
+  mat4 uLightViewProj;    // the shadow pass being drawn: its cascade's
   mat4 uInverseViewProj;
+  mat4 uShadowCascades[SHADOW_CASCADES];  // every cascade's, nearest first
   vec4 uCamera;      // xyz eye position; w wind time (radians of the sway oscillation)
   vec4 uToSun;       // xyz unit direction toward the sun; w 1 when the shadow map is used
   vec4 uSunColor;    // rgb beam; w fog density per metre
@@ -14,7 +15,7 @@ layout(std140, binding = 0) uniform FrameBlock {
                      // z undirected sway in units of the sway basis; w gust amplitude
 };
 
-layout(binding = 4) uniform sampler2DShadow uShadowMap;
+layout(binding = 4) uniform sampler2DArrayShadow uShadowMap;  // a layer per cascade
 
 // Wind displacement of a vertex in its tree's frame (docs/rendering.md): the undirected sway
 // of EcoMod linearised in the branch rotations, sin(t) * swaySin + cos(t) * swayCos, plus the
@@ -33,19 +34,33 @@ vec3 rotateYaw(vec3 v, float yaw) {
   return vec3(c * v.x - s * v.z, v.y, s * v.x + c * v.z);
 }
 
+// The light reaching a point: 1 in the sun, 0 in full shadow. The finest cascade whose map
+// holds the point (with room for the filter) answers; beyond the last there is no shadow.
 float shadowAt(vec3 worldPosition) {
   if (uToSun.w < 0.5) return 1.0;
-  vec4 p = uLightViewProj * vec4(worldPosition, 1.0);
-  vec3 q = p.xyz / p.w * 0.5 + 0.5;
-  if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(1.0)))) return 1.0;
-  // 2x2 percentage-closer filtering on top of the hardware comparison.
-  vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0));
-  float lit = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    vec2 o = (vec2(i & 1, i >> 1) - 0.5) * texel;
-    lit += texture(uShadowMap, vec3(q.xy + o, q.z - 0.0015));
+  vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0).xy);
+  for (int c = 0; c < SHADOW_CASCADES; ++c) {
+    vec4 p = uShadowCascades[c] * vec4(worldPosition, 1.0);
+    vec3 q = p.xyz / p.w * 0.5 + 0.5;
+    if (any(lessThan(q, vec3(texel, 0.0))) || any(greaterThan(q, vec3(1.0 - texel, 1.0))))
+      continue;
+    // A receiver is lit unless something lies nearer the sun by more than a texel's width
+    // (plus 5 cm): the depth a texel holds is its centre's, and a surface slanted to the sun
+    // changes depth across it. The bias grows with the cascade's texels (7 cm to 1.8 m), so
+    // a sapling's shadow near the camera is kept and a far slope does not shadow itself.
+    mat4 m = uShadowCascades[c];
+    float texelMetres = 2.0 * texel.x / length(vec3(m[0][0], m[1][0], m[2][0]));
+    float depthPerMetre = 0.5 * length(vec3(m[0][2], m[1][2], m[2][2]));
+    float bias = (texelMetres + 0.05) * depthPerMetre;
+    // 2x2 percentage-closer filtering on top of the hardware comparison.
+    float lit = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      vec2 o = (vec2(i & 1, i >> 1) - 0.5) * texel;
+      lit += texture(uShadowMap, vec4(q.xy + o, float(c), q.z - bias));
+    }
+    return lit * 0.25;
   }
-  return lit * 0.25;
+  return 1.0;
 }
 
 vec3 skyColor(vec3 direction) {

@@ -1,0 +1,57 @@
+#include "render/scene/shadow_cascades.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace eco {
+namespace {
+
+// Depth of the light's view: the sun looks down on the square from half of it above the
+// centre, so terrain and crowns within 2 km above or below the centre cast and receive.
+constexpr float kLightDepth_m = 4000.0f;
+// The map covers 1.5 times the square's half side: a slanted sun sees the square's
+// corners and the crowns standing on it farther out than the square itself.
+constexpr float kMapMargin = 1.5f;
+// Each square lies ahead of the camera by this share of its half side: it reaches a little
+// behind the camera (tall trees there shade the near ground) and mostly ahead.
+constexpr float kAhead = 0.7f;
+
+}  // namespace
+
+ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach reach,
+                              int mapSize) {
+  glm::vec3 ahead = camera.forward();
+  ahead.y = 0.0f;
+  ahead = glm::length(ahead) > 1e-4f ? glm::normalize(ahead) : glm::vec3(0.0f, 0.0f, -1.0f);
+  const glm::vec3 upHint =
+      std::abs(toSun.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, -1.0f);
+  const glm::vec3 right = glm::normalize(glm::cross(-toSun, upHint));
+  const glm::vec3 up = glm::cross(right, -toSun);
+  const float nearest = std::min(reach.near_m, reach.range_m);
+  const float ratio = reach.range_m / nearest;
+
+  ShadowCascades cascades;
+  for (int c = 0; c < kShadowCascades; ++c) {
+    ShadowBox& box = cascades[c];
+    box.halfSize_m = nearest * std::pow(ratio, static_cast<float>(c) / (kShadowCascades - 1));
+    const float r = box.halfSize_m * kMapMargin;
+    const float texel = 2.0f * r / static_cast<float>(mapSize);
+    glm::vec3 centre = camera.position + ahead * (kAhead * box.halfSize_m);
+    // Whole texels across the sun's view: the map's grid stays put in the world.
+    const float x = glm::dot(centre, right), y = glm::dot(centre, up);
+    centre +=
+        right * (std::round(x / texel) * texel - x) + up * (std::round(y / texel) * texel - y);
+    box.centre = centre;
+    box.toSun = toSun;
+    box.mapPixelsPerMetre = static_cast<float>(mapSize) / (2.0f * r);
+    const glm::mat4 lightView =
+        glm::lookAt(centre + toSun * (0.5f * kLightDepth_m), centre, upHint);
+    box.lightViewProj = glm::ortho(-r, r, -r, r, 0.0f, kLightDepth_m) * lightView;
+  }
+  return cascades;
+}
+
+}  // namespace eco

@@ -1,0 +1,41 @@
+// Cascaded shadow maps: the ground ahead of the camera is shadowed by a few nested squares,
+// each with a depth map of the same size, so that the near field gets fine shadows and the
+// far field still gets shadows out to a kilometre and more. The squares grow geometrically
+// from the nearest to the farthest (each side ratio^(1/(n-1)) times the last), lie ahead of
+// the camera in its horizontal view direction, and are snapped to whole texels of their own
+// map so that a moving camera does not make the shadow edges crawl.
+#pragma once
+
+#include <array>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/scene/camera.hpp"
+
+namespace eco {
+
+inline constexpr int kShadowCascades = 3;
+
+// One shadowed square on the ground plane and the orthographic light view that maps it.
+struct ShadowBox {
+  glm::vec3 centre{0.0f};
+  float halfSize_m = 0.0f;            // 0: no shadow pass
+  float mapPixelsPerMetre = 0.0f;     // of the shadow map's orthographic view: sprite sizes
+  glm::mat4 lightViewProj{1.0f};      // world -> the map's clip space
+  glm::vec3 toSun{0.0f, 1.0f, 0.0f};  // unit, toward the sun the map is seen from
+};
+
+using ShadowCascades = std::array<ShadowBox, kShadowCascades>;
+
+struct ShadowReach {
+  float near_m = 50.0f;     // half the side of the nearest square
+  float range_m = 1200.0f;  // half the side of the farthest: how far ahead shadows reach
+};
+
+// The cascades for a camera and a sun direction (unit, toward the sun, above the horizon),
+// each with a square depth map of `mapSize` texels.
+ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach reach,
+                              int mapSize);
+
+}  // namespace eco

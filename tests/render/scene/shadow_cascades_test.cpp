@@ -1,0 +1,83 @@
+#include "render/scene/shadow_cascades.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "render/scene/sun.hpp"
+
+namespace eco {
+namespace {
+
+constexpr int kMapSize = 2048;
+
+// Where a world point falls in a cascade's map: [0, 1] across, depth in [0, 1].
+glm::vec3 mapCoordinates(const ShadowBox& box, glm::vec3 world) {
+  const glm::vec4 p = box.lightViewProj * glm::vec4(world, 1.0f);
+  return glm::vec3(p) / p.w * 0.5f + 0.5f;
+}
+
+bool inMap(const ShadowBox& box, glm::vec3 world) {
+  const glm::vec3 q = mapCoordinates(box, world);
+  return q.x >= 0.0f && q.x <= 1.0f && q.y >= 0.0f && q.y <= 1.0f && q.z >= 0.0f && q.z <= 1.0f;
+}
+
+Camera cameraLookingNorth() {
+  Camera camera;
+  camera.position = {500.0f, 320.0f, 800.0f};
+  camera.pitch_deg = -10.0f;
+  return camera;
+}
+
+const glm::vec3 kMorningSun = sunWorldDirection(46.0, {172.0, 10.0});
+
+TEST(ShadowCascades, GrowGeometricallyFromTheNearestToTheRange) {
+  const ShadowCascades c =
+      shadowCascades(cameraLookingNorth(), kMorningSun, {50.0f, 1200.0f}, kMapSize);
+  EXPECT_FLOAT_EQ(c[0].halfSize_m, 50.0f);
+  EXPECT_NEAR(c[1].halfSize_m, std::sqrt(50.0f * 1200.0f), 1e-3f);
+  EXPECT_NEAR(c[2].halfSize_m, 1200.0f, 1e-3f);
+  // Each map covers 1.5 times its square's half side on the map's 2048 texels.
+  EXPECT_NEAR(c[0].mapPixelsPerMetre, kMapSize / (2.0f * 75.0f), 1e-3f);
+}
+
+TEST(ShadowCascades, ReachAKilometreAheadAndEachHoldsTheNearerOnesSquare) {
+  const Camera camera = cameraLookingNorth();
+  const ShadowCascades c = shadowCascades(camera, kMorningSun, {50.0f, 1200.0f}, kMapSize);
+  const glm::vec3 north(0.0f, 0.0f, -1.0f), east(1.0f, 0.0f, 0.0f);
+  const glm::vec3 ground = camera.position - glm::vec3(0.0f, 20.0f, 0.0f);
+  EXPECT_TRUE(inMap(c[2], ground + 1000.0f * north));
+  EXPECT_TRUE(inMap(c[2], ground + 1000.0f * north + 500.0f * east));
+  EXPECT_FALSE(inMap(c[1], ground + 1000.0f * north));
+  // The ground under and just behind the camera is in the finest map.
+  EXPECT_TRUE(inMap(c[0], ground));
+  EXPECT_TRUE(inMap(c[0], ground - 10.0f * north));
+  for (int k = 0; k + 1 < kShadowCascades; ++k)
+    for (float sx : {-1.0f, 1.0f})
+      for (float sz : {-1.0f, 1.0f}) {
+        const glm::vec3 corner = c[k].centre + 0.99f * c[k].halfSize_m * glm::vec3(sx, 0.0f, sz);
+        EXPECT_TRUE(inMap(c[k + 1], corner)) << "cascade " << k;
+      }
+}
+
+// Snapped to whole texels: a world point keeps its place within a texel while the camera
+// moves, so shadow edges do not crawl in a fly-through or a time-lapse.
+TEST(ShadowCascades, KeepTheirTexelGridFixedInTheWorldAsTheCameraMoves) {
+  Camera camera = cameraLookingNorth();
+  const glm::vec3 point(530.0f, 300.0f, 700.0f);
+  const ShadowCascades before = shadowCascades(camera, kMorningSun, {50.0f, 1200.0f}, kMapSize);
+  camera.position += glm::vec3(0.37f, 0.0f, -1.91f);
+  const ShadowCascades after = shadowCascades(camera, kMorningSun, {50.0f, 1200.0f}, kMapSize);
+  for (int k = 0; k < kShadowCascades; ++k) {
+    const glm::vec3 a = mapCoordinates(before[k], point) * float(kMapSize);
+    const glm::vec3 b = mapCoordinates(after[k], point) * float(kMapSize);
+    for (int axis = 0; axis < 2; ++axis) {
+      const double shift = b[axis] - a[axis];
+      EXPECT_NEAR(shift, std::round(shift), 0.02) << "cascade " << k << " axis " << axis;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace eco

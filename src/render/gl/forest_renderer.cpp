@@ -30,6 +30,7 @@ PackedTreeVertex packVertex(const TreeVertex& v) {
   const glm::vec3* bases[] = {&v.swaySin, &v.swayCos, &v.bendEast, &v.bendSouth};
   for (int b = 0; b < 4; ++b)
     for (int c = 0; c < 3; ++c) p.wind[b * 3 + c] = glm::packHalf1x16((*bases[b])[c]);
+  p.skyVisibility = glm::packUnorm1x16(v.skyVisibility);
   return p;
 }
 
@@ -46,7 +47,10 @@ void setTreeVertexLayout(GLuint vao) {
     glVertexArrayAttribFormat(vao, 3 + b, 3, GL_HALF_FLOAT, GL_FALSE,
                               offsetof(PackedTreeVertex, wind) + b * 3 * sizeof(std::uint16_t));
   }
-  for (GLuint a = 0; a < 7; ++a) glVertexArrayAttribBinding(vao, a, 0);
+  glEnableVertexArrayAttrib(vao, 7);
+  glVertexArrayAttribFormat(vao, 7, 1, GL_UNSIGNED_SHORT, GL_TRUE,
+                            offsetof(PackedTreeVertex, skyVisibility));
+  for (GLuint a = 0; a < 8; ++a) glVertexArrayAttribBinding(vao, a, 0);
 }
 
 // Instance attributes 8-10 come from binding 1, one element per instance.

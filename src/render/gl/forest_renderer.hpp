@@ -42,8 +42,10 @@ struct PackedTreeVertex {
   std::uint32_t normal;  // GL_INT_2_10_10_10_REV
   glm::vec2 uv;
   std::uint16_t wind[12];       // swaySin, swayCos, bendEast, bendSouth as half floats
+  std::uint16_t skyVisibility;  // 0..65535 for 0..1 (crown_shade.hpp)
+  std::uint16_t unused = 0;
 };
-static_assert(sizeof(PackedTreeVertex) == 48);
+static_assert(sizeof(PackedTreeVertex) == 52);
 PackedTreeVertex packVertex(const TreeVertex& vertex);
 
 // Vertex layouts of the tree shaders: PackedTreeVertex at binding 0, InstanceAttributes at

@@ -9,6 +9,7 @@
 #include "core/frames.hpp"
 #include "core/thread_priority.hpp"
 #include "render/scene/camera_controller.hpp"
+#include "render/scene/crown_shade.hpp"
 #include "render/scene/culling.hpp"
 #include "render/scene/impostor.hpp"
 
@@ -60,6 +61,7 @@ BuiltTree buildTree(const Species& species, int speciesIndex, std::uint64_t seed
   tree.type.seed = seed;
   tree.type.age = age;
   tree.type.meshes.lods[meshLevel] = std::move(meshes[0]);
+  shadeVertices(tree.type.meshes.lods[meshLevel], CrownShade(rest, species));  // as the library
   measureType(tree.type, tree.measures);
   tree.hint.species = kPreviewHint;
   tree.hint.seed = seed;

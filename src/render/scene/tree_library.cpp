@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.hpp"
+#include "render/scene/crown_shade.hpp"
 
 namespace eco {
 namespace {
@@ -83,6 +84,8 @@ TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySetti
     const Species& s = species_[type.species];
     TreeSkeleton rest;
     type.meshes = buildWindLods(s, type.seed, type.age, &rest);
+    const CrownShade shade(rest, s);  // LOD0's leaves shade every level alike
+    for (WindMesh& lod : type.meshes.lods) shadeVertices(lod, shade);
     type.impostorSource = typeIndex(type.species, 0, type.ageClass);
     measureType(type, measure(rest));
   });

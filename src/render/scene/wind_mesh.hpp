@@ -38,8 +38,9 @@ struct TreeVertex {
   glm::vec3 swayCos;
   glm::vec3 bendEast;
   glm::vec3 bendSouth;
+  float skyVisibility = 1.0f;  // share of the sky's light reaching it through its own crown
 };
-static_assert(sizeof(TreeVertex) == 80);
+static_assert(sizeof(TreeVertex) == 84);
 
 struct WindPart {
   MaterialKind material = MaterialKind::Bark;

@@ -200,7 +200,7 @@ TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
   TreeVertex v{{1.25f, 20.5f, -3.0f}, glm::normalize(glm::vec3(0.3f, 0.9f, -0.2f)),
                {0.5f, 12.75f},        {0.01f, -0.2f, 0.3f},
                {1.5f, 0.0f, -0.75f},  {0.002f, 0.0f, 0.0f},
-               {0.0f, 0.0f, 0.6f}};
+               {0.0f, 0.0f, 0.6f},    0.37f};
   const PackedTreeVertex p = packVertex(v);
   EXPECT_EQ(p.position, v.position);
   EXPECT_EQ(p.uv, v.uv);
@@ -209,6 +209,7 @@ TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
   EXPECT_NEAR(glm::unpackHalf1x16(p.wind[1]), -0.2f, 1e-4f);
   EXPECT_NEAR(glm::unpackHalf1x16(p.wind[3]), 1.5f, 1e-3f);
   EXPECT_NEAR(glm::unpackHalf1x16(p.wind[11]), 0.6f, 1e-3f);
+  EXPECT_NEAR(glm::unpackUnorm1x16(p.skyVisibility), 0.37f, 1e-4f);
 }
 
 // At its switching size the impostor stands in for the meshes: the mature maple rendered at

@@ -87,12 +87,16 @@ vec3 applyFog(vec3 color, vec3 worldPosition) {
 // leaves (an impostor's coarser mip levels): its length is the share of them facing its
 // way, the rest face every way and take on average a quarter of the beam (the mean of
 // max(cos, 0) over the sphere). Unit normals are lit as by Lambert alone.
-vec3 shade(vec3 albedo, vec3 normal, vec3 worldPosition, float translucency) {
+// `skyVisibility`: the share of the sky's light that reaches the point past nearby
+// occluders (a tree's own crown: crown_shade.hpp); the sun's beam is the shadow map's.
+vec3 shade(vec3 albedo, vec3 normal, vec3 worldPosition, float translucency,
+           float skyVisibility) {
   float aligned = clamp(length(normal), 0.0, 1.0);
   float cosine = dot(normal, uToSun.xyz) / max(aligned, 1e-4);
   float direct = aligned * (max(cosine, 0.0) + translucency * max(-cosine, 0.0)) +
                  (1.0 - aligned) * 0.25 * (1.0 + translucency);
-  float skyLight = 0.6 + 0.4 * normal.y;  // linear in the normal: a mean normal's mean
+  // Linear in the normal, so that a mean normal gets the mean of its leaves' sky light.
+  float skyLight = (0.6 + 0.4 * normal.y) * skyVisibility;
   vec3 light = uSunColor.rgb * direct * shadowAt(worldPosition) + uAmbient.rgb * skyLight;
   return applyFog(albedo * light, worldPosition);
 }

@@ -34,8 +34,10 @@ void main() {
   // The pixel's own place in the crown, so that it takes its own shadow and fog: inner
   // and far-side leaves fall in the shadow of the tree and its neighbours as a mesh's do.
   vec2 onSprite = vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y) * 2.0 - 1.0;
-  float toward = texture(uDepthAtlas, uv).r / albedo.a * 2.0 - 1.0;
+  vec4 depthAndSky = texture(uDepthAtlas, uv) / albedo.a;
+  float toward = depthAndSky.r * 2.0 - 1.0;
   vec3 world = vCentre + onSprite.x * vRight + onSprite.y * vUp + toward * vToward;
-  outColor = vec4(shade(albedo.rgb / albedo.a * vTint, normal, world, packedNormal.a), 1.0);
+  outColor = vec4(
+      shade(albedo.rgb / albedo.a * vTint, normal, world, packedNormal.a, depthAndSky.g), 1.0);
 #endif
 }

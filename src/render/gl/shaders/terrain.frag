@@ -56,6 +56,6 @@ void main() {
     albedo = mix(albedo, rock, steep);
     albedo *= 0.8 + 0.4 * tufts;
   }
-  outColor = vec4(shade(albedo, normal, vWorld, 0.0), 1.0);
+  outColor = vec4(shade(albedo, normal, vWorld, 0.0, 1.0), 1.0);
 #endif
 }

@@ -2,6 +2,7 @@
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vUv;
+in float vSkyVisibility;
 flat in vec3 vTint;
 flat in vec2 vKeep;
 
@@ -57,9 +58,11 @@ void main() {
   // The bake's orthographic view spans 4 radii from 2 radii in front of the centre, so the
   // window depth z is 0.5 on the plane through the centre: toward the camera by
   // (2 - 4z) radii, stored in [0, 1] for [-1, 1] radii.
-  outDepth = vec4(clamp(1.5 - 2.0 * gl_FragCoord.z, 0.0, 1.0));
+  // Green: the sky visibility inside the crown, for the impostor to shade with.
+  outDepth = vec4(clamp(1.5 - 2.0 * gl_FragCoord.z, 0.0, 1.0), vSkyVisibility, 0.0, 1.0);
 #else
-  outColor = vec4(shade(albedo.rgb * vTint, normal, vWorld, uTranslucency), 1.0);
+  outColor =
+      vec4(shade(albedo.rgb * vTint, normal, vWorld, uTranslucency, vSkyVisibility), 1.0);
 #endif
 #endif
 }

@@ -7,6 +7,7 @@ layout(location = 3) in vec3 aSwaySin;
 layout(location = 4) in vec3 aSwayCos;
 layout(location = 5) in vec3 aBendEast;
 layout(location = 6) in vec3 aBendSouth;
+layout(location = 7) in float aSkyVisibility;  // through the tree's own crown
 layout(location = 8) in vec4 iPositionYaw;  // world position of the stem base, yaw (radians)
 layout(location = 9) in vec4 iScale;        // horizontal scale, vertical scale, keep from, phase
 layout(location = 10) in vec4 iTint;        // rgb multiplier, keep up to
@@ -14,6 +15,7 @@ layout(location = 10) in vec4 iTint;        // rgb multiplier, keep up to
 out vec3 vWorld;
 out vec3 vNormal;
 out vec2 vUv;
+out float vSkyVisibility;
 flat out vec3 vTint;
 flat out vec2 vKeep;  // the dither thresholds this draw keeps: [lo, hi)
 #ifdef FEEDBACK
@@ -34,6 +36,7 @@ void main() {
   vWorld = iPositionYaw.xyz + rotateYaw(local * scale, yaw);
   vNormal = rotateYaw(normalize(aNormal / scale), yaw);
   vUv = aUv;
+  vSkyVisibility = aSkyVisibility;
   vTint = iTint.rgb;
   vKeep = vec2(iScale.z, iTint.w);
 #ifdef SHADOW_PASS

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "render/scene/growth_timeline.hpp"
+#include "render/scene/tree_clearance.hpp"
 
 namespace eco {
 namespace {
@@ -128,7 +129,8 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
 
     phase = Clock::now();
     const double u = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
-    const Camera camera = settings.camera(u);
+    // Out of the crowns of this frame's trees, wherever the path was set.
+    const Camera camera = clearOfTrees(settings.camera(u), TreeClearance(forest, library));
     Image image = draw(forest, camera, options);
     timings.render_s += secondsSince(phase);
 

@@ -85,6 +85,15 @@ float TreeClearance::at(glm::vec3 point, float beyond) const {
   return nearest;
 }
 
+Camera clearOfTrees(Camera camera, const TreeClearance& trees) {
+  constexpr float kStep_m = 0.5f;
+  for (float lift = 0.0f; lift < kMaxLift_m; lift += kStep_m) {
+    if (trees.at(camera.position, kGroundClearance_m) >= kGroundClearance_m) break;
+    camera.position.y += kStep_m;
+  }
+  return camera;
+}
+
 float openSight(const Terrain& terrain, const TreeClearance& trees, glm::vec3 eye,
                 glm::vec3 direction, float max_m) {
   constexpr float kStep_m = 0.5f, kMargin_m = 0.5f;

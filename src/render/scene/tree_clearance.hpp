@@ -51,4 +51,10 @@ inline constexpr float kGroundClearance_m = 2.0f;
 inline constexpr float kGroundView_m = 30.0f;
 Camera groundCamera(const Terrain& terrain, const Forest& forest, const TreeLibrary& library);
 
+// A camera kept out of the trees: raised in half-metre steps until no tree as drawn is within
+// kGroundClearance_m of it, by at most kMaxLift_m; its view direction is kept. A time-lapse
+// path's keys are set in one year, and trees grow into the way in later ones.
+inline constexpr float kMaxLift_m = 100.0f;
+Camera clearOfTrees(Camera camera, const TreeClearance& trees);
+
 }  // namespace eco

@@ -5,6 +5,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/angles.hpp"
+#include "render/scene/tree_clearance.hpp"
 #include "render_support.hpp"
 
 namespace eco {
@@ -90,6 +91,37 @@ TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
     EXPECT_EQ(seen.trees[frame], frame < 15 ? 0u : 1u) << "year " << frame;
   EXPECT_EQ(seen.windTimes.front(), seen.windTimes.back());  // growth holds the wind's time
   EXPECT_NEAR(seen.eyes.back().x - seen.eyes.front().x, 100.0f, 1e-3f);  // along the path
+}
+
+// A path set through the place where a tree grows later is lifted out of its crown: every
+// frame's eye keeps kGroundClearance_m from the trees that frame draws, and is not moved
+// while there is nothing in the way.
+TEST(Timelapse, ThePathKeepsClearOfTheCrownsOfEachFrame) {
+  const RunFolder run = oneTreeRun("timelapse_clearance");
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  TimelapseSettings settings;
+  settings.toYear = 20.0;
+  settings.seconds = 2.1;
+  settings.fps = 10;  // years 0, 1, ..., 20
+  settings.frame = {32, 24};
+  const glm::vec3 inTheCrown = worldFromMap(160, 160, 102.5);  // the tree is 4 m tall at 20
+  settings.camera = [&](double) { return lookingAt(inTheCrown, worldFromMap(160, 300, 102.5)); };
+  std::vector<float> clearance;
+  std::vector<glm::vec3> eyes;
+  const DrawFrame draw = [&](const Forest& forest, const Camera& camera, const RenderOptions&) {
+    clearance.push_back(TreeClearance(forest, test::smallLibrary()).at(camera.position, 10.0f));
+    eyes.push_back(camera.position);
+    return Image(32, 24);
+  };
+  test::CollectingSink sink;
+  renderTimelapse(run, test::smallLibrary(), terrain, draw, settings, sink, {});
+  ASSERT_EQ(eyes.size(), 21u);
+  for (std::size_t frame = 0; frame < eyes.size(); ++frame) {
+    EXPECT_GE(clearance[frame], kGroundClearance_m) << "year " << frame;
+    if (frame < 15) EXPECT_EQ(eyes[frame], inTheCrown) << "year " << frame;  // no tree yet
+  }
+  EXPECT_GT(eyes.back().y, inTheCrown.y + 1.0f);  // lifted over the grown crown
+  EXPECT_EQ(eyes.back().x, inTheCrown.x);         // straight up, the view kept
 }
 
 TEST(Timelapse, WindHoldsTheYearAndAdvancesTheWindsTime) {

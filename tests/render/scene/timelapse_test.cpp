@@ -118,7 +118,9 @@ TEST(Timelapse, ThePathKeepsClearOfTheCrownsOfEachFrame) {
   ASSERT_EQ(eyes.size(), 21u);
   for (std::size_t frame = 0; frame < eyes.size(); ++frame) {
     EXPECT_GE(clearance[frame], kGroundClearance_m) << "year " << frame;
-    if (frame < 15) EXPECT_EQ(eyes[frame], inTheCrown) << "year " << frame;  // no tree yet
+    if (frame < 15) {  // no tree yet
+      EXPECT_EQ(eyes[frame], inTheCrown) << "year " << frame;
+    }
   }
   EXPECT_GT(eyes.back().y, inTheCrown.y + 1.0f);  // lifted over the grown crown
   EXPECT_EQ(eyes.back().x, inTheCrown.x);         // straight up, the view kept

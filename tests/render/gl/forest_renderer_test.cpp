@@ -54,14 +54,26 @@ TEST(ForestRenderer, CullsTreesOutsideTheViewAndCoarsensWithDistance) {
   EXPECT_EQ(lod0.triangles, 30u * library.types()[forest.type[0]].meshes.lods[0].triangleCount());
 }
 
-TEST(ForestRenderer, OnlyTreesInTheShadowBoxCastShadows) {
-  test::useHeadlessGl();
+// The row of trees seen from the camera at its south end, for the shadow casters' tests.
+struct HeadlessGl {
+  HeadlessGl() { test::useHeadlessGl(); }  // before the renderer below is made
+};
+class ShadowCasting : public ::testing::Test, HeadlessGl {
+ protected:
+  ShadowCasting() { camera.position = worldFromMap(160, 20, 105); }
+  // A square over the whole row, of this many map texels per metre, lit from `toSun`.
+  static ShadowBox coveringTheRow(float mapPixelsPerMetre, glm::vec3 toSun) {
+    return {worldFromMap(160, 300, 100), 1000.0f, mapPixelsPerMetre, glm::mat4(1.0f), toSun};
+  }
+
   const TreeLibrary& library = test::smallLibrary();
   FrameUniformBuffer uniforms;
-  ForestRenderer renderer(library, {}, uniforms);
+  ForestRenderer renderer{library, {}, uniforms};
   const Forest forest = rowOfTrees(library, 30);
   Camera camera;
-  camera.position = worldFromMap(160, 20, 105);
+};
+
+TEST_F(ShadowCasting, OnlyTreesInTheShadowBoxCastShadows) {
   const ShadowBox box{worldFromMap(160, 60, 100), 50.0f, 4.0f};
   const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, {&box, 1});
   EXPECT_GT(stats.shadowCasterCount(), 0u);
@@ -71,17 +83,9 @@ TEST(ForestRenderer, OnlyTreesInTheShadowBoxCastShadows) {
 // A tree's shadow has the gaps of the crown the viewer sees: in the nearest cascade it casts
 // with the level it is drawn at, not with a smooth crown hull; a tree outside the view, and
 // every tree in a coarser cascade, casts as an impostor.
-TEST(ForestRenderer, TreesCastWithTheLevelTheyAreDrawnAtInTheNearestCascade) {
-  test::useHeadlessGl();
-  const TreeLibrary& library = test::smallLibrary();
-  FrameUniformBuffer uniforms;
-  ForestRenderer renderer(library, {}, uniforms);
-  const Forest forest = rowOfTrees(library, 30);
-  Camera camera;
-  camera.position = worldFromMap(160, 20, 105);
+TEST_F(ShadowCasting, TreesCastWithTheLevelTheyAreDrawnAtInTheNearestCascade) {
   // A low sun in the south: the tree behind the camera throws its shadow into the view.
-  const ShadowBox everything{worldFromMap(160, 300, 100), 1000.0f, 1.0f, glm::mat4(1.0f),
-                             kLowSouthernSun};
+  const ShadowBox everything = coveringTheRow(1.0f, kLowSouthernSun);
   const std::array<ShadowBox, 2> cascades{everything, everything};
   for (int level = 0; level < kLevelCount; ++level) {
     LodSettings lod;
@@ -102,34 +106,18 @@ TEST(ForestRenderer, TreesCastWithTheLevelTheyAreDrawnAtInTheNearestCascade) {
 
 // Trees outside the view cast only where their shadow can reach it: the tree behind the
 // camera casts under a low sun behind it, not under a sun ahead.
-TEST(ForestRenderer, ATreeOutOfViewCastsOnlyWhereItsShadowCanReachTheView) {
-  test::useHeadlessGl();
-  const TreeLibrary& library = test::smallLibrary();
-  FrameUniformBuffer uniforms;
-  ForestRenderer renderer(library, {}, uniforms);
-  const Forest forest = rowOfTrees(library, 30);
-  Camera camera;
-  camera.position = worldFromMap(160, 20, 105);
-  ShadowBox box{worldFromMap(160, 300, 100), 1000.0f, 1.0f, glm::mat4(1.0f), kLowSouthernSun};
+TEST_F(ShadowCasting, ATreeOutOfViewCastsOnlyWhereItsShadowCanReachTheView) {
+  ShadowBox box = coveringTheRow(1.0f, kLowSouthernSun);
   EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&box, 1}).shadowCasterCount(), 31u);
   box.toSun = glm::vec3(1.0f, 1.0f, -1.0f) * kLowSouthernSun;  // the same sun in the north
   EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&box, 1}).shadowCasterCount(), 30u);
 }
 
 // A cascade's texels decide who casts there: a tree shorter than one texel casts nothing.
-TEST(ForestRenderer, TreesSmallerThanACascadesTexelCastNothingThere) {
-  test::useHeadlessGl();
-  const TreeLibrary& library = test::smallLibrary();
-  FrameUniformBuffer uniforms;
-  ForestRenderer renderer(library, {}, uniforms);
-  const Forest forest = rowOfTrees(library, 30);
-  Camera camera;
-  camera.position = worldFromMap(160, 20, 105);
+TEST_F(ShadowCasting, TreesSmallerThanACascadesTexelCastNothingThere) {
   const float height = library.types()[forest.type[0]].height_m;
-  const ShadowBox fine{worldFromMap(160, 300, 100), 1000.0f, 1.01f / height, glm::mat4(1.0f),
-                       kLowSouthernSun};
-  const ShadowBox coarse{worldFromMap(160, 300, 100), 1000.0f, 0.99f / height, glm::mat4(1.0f),
-                         kLowSouthernSun};
+  const ShadowBox fine = coveringTheRow(1.01f / height, kLowSouthernSun);
+  const ShadowBox coarse = coveringTheRow(0.99f / height, kLowSouthernSun);
   EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&fine, 1}).shadowCasterCount(), 31u);
   EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&coarse, 1}).shadowCasterCount(), 0u);
 }

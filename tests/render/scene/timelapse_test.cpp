@@ -61,14 +61,20 @@ struct Recorded {
   std::vector<glm::vec3> eyes;
 };
 
-TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
-  const RunFolder run = oneTreeRun("timelapse_growth");
-  const Terrain terrain = test::flatTerrain(33, 10.0);
+// A growth time-lapse of the one-tree run with a frame a year: 21 frames, years 0 to 20.
+TimelapseSettings yearlyGrowthFrames() {
   TimelapseSettings settings;
   settings.toYear = 20.0;
   settings.seconds = 2.1;
-  settings.fps = 10;  // 21 frames: years 0, 1, ..., 20
+  settings.fps = 10;
   settings.frame = {32, 24};
+  return settings;
+}
+
+TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
+  const RunFolder run = oneTreeRun("timelapse_growth");
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  TimelapseSettings settings = yearlyGrowthFrames();
   settings.camera = [](double u) {
     return lookingAt(worldFromMap(100 + 100 * u, 10, 300), worldFromMap(160, 160, 100));
   };
@@ -99,11 +105,7 @@ TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
 TEST(Timelapse, ThePathKeepsClearOfTheCrownsOfEachFrame) {
   const RunFolder run = oneTreeRun("timelapse_clearance");
   const Terrain terrain = test::flatTerrain(33, 10.0);
-  TimelapseSettings settings;
-  settings.toYear = 20.0;
-  settings.seconds = 2.1;
-  settings.fps = 10;  // years 0, 1, ..., 20
-  settings.frame = {32, 24};
+  TimelapseSettings settings = yearlyGrowthFrames();
   const glm::vec3 inTheCrown = worldFromMap(160, 160, 102.5);  // the tree is 4 m tall at 20
   settings.camera = [&](double) { return lookingAt(inTheCrown, worldFromMap(160, 300, 102.5)); };
   std::vector<float> clearance;

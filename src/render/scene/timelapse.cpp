@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -108,15 +109,18 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
   std::vector<int> years{0};
   years.insert(years.end(), run.snapshotYears.begin(), run.snapshotYears.end());
   Forest forest;
+  std::optional<TreeClearance> clearance;  // of `forest`, made again whenever it changes
   for (int frame = 0; frame < frames; ++frame) {
     auto phase = Clock::now();
     const double year = settings.yearOfFrame(frame);
     RenderOptions options = settings.render;
     if (settings.kind == TimelapseKind::Wind) {
       options.wind.time += frame * settings.windRadiansPerSecond / settings.fps;
-      if (frame == 0)
+      if (frame == 0) {
         forest =
             forestFromSnapshot(snapshots.at(static_cast<int>(year)), library, run.dir.string());
+        clearance.emplace(forest, library);
+      }
     } else {
       // The snapshots around the year (the last pair at the end of the run).
       std::size_t after = 1;
@@ -124,13 +128,14 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
       snapshots.forgetBefore(years[after - 1]);
       forest = forestBetween(snapshots.at(years[after - 1]), snapshots.at(years[after]), year,
                              library, run.dir.string());
+      clearance.emplace(forest, library);
     }
     timings.instances_s += secondsSince(phase);
 
     phase = Clock::now();
     const double u = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
     // Out of the crowns of this frame's trees, wherever the path was set.
-    const Camera camera = clearOfTrees(settings.camera(u), TreeClearance(forest, library));
+    const Camera camera = clearOfTrees(settings.camera(u), *clearance);
     Image image = draw(forest, camera, options);
     timings.render_s += secondsSince(phase);
 

@@ -70,9 +70,9 @@ struct LifeHistory {
   // growth adds to (stem, branches, coarse roots).
   Allometry foliage{0.02, 1.7}, stem{0.2, 2.25}, branches{0.02, 2.3}, coarseRoots{0.02, 2.3};
   double specificLeafArea = 10.0;  // m2 of leaf per kg of foliage, of a crown in full light
-  // Shade leaves: a crown grown in deep shade builds its leaves thinner, at this share of the
-  // leaf mass per area of a crown in full light (linear in the crown's light in between), so
-  // its leaves and the fine roots that feed them cost less (docs/ecology.md, "Shade").
+  // Shade leaves: leaves grown in deep shade are thinner, at this share of the leaf mass per
+  // area of sun leaves (linear in the light in between), so the same foliage mass spreads
+  // into more leaf area down a shaded crown (docs/ecology.md, "Sun and shade leaves").
   double shadeLeafMassRatio = 1.0;
   // What keeping the crown costs each year: the share of the foliage renewed, and fine roots
   // in proportion to the foliage, with their own turnover.

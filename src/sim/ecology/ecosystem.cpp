@@ -134,8 +134,10 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
     const CrownFoliage foliage = crownFoliage(life, dbh, height, 1.0);
     const CrownShape crown{0.0f, 0.0f, static_cast<float>(crownRadiusOf(life, dbh, height)),
                            static_cast<float>(height), static_cast<float>(foliage.leafArea_m2)};
-    const TreeYear grown =
-        growTree(life, dbh, height, foliage.foliage_kg, LightGrid::absorbedInTheOpen(crown), {});
+    GrowingConditions conditions;
+    conditions.aging = agingFactor(life, height, year + 1);
+    const TreeYear grown = growTree(life, dbh, height, foliage.foliage_kg,
+                                    LightGrid::absorbedInTheOpen(crown), conditions);
     dbh = grown.dbh_m;
     height = grown.height_m;
   }
@@ -242,7 +244,8 @@ void Ecosystem::grow() {
     const double response = std::clamp(s.ecology.lightResponse(relative), 0.0, 1.0);
     const TreeYear year =
         growTree(life, p.dbh_m[i], p.height_m[i], crownFoliage_kg_[crownOfPlant_[i]], absorbed,
-                 {suitability, response, p.growthFactor[i]});
+                 {suitability, response, p.growthFactor[i],
+                  agingFactor(life, p.height_m[i], p.age_years[i])});
     carbonDeficit_[i] = static_cast<float>(year.carbonDeficit());
     // The branches this year's light left below the compensation point die.
     const double pruned = light_.heightWithLight(p.east_m[i], p.north_m[i], p.crownBase_m[i],

@@ -115,12 +115,32 @@ double potentialHeightIncrement(const LifeHistory& life, double height_m) {
   return curve.at(age + 1.0) - curve.at(age);
 }
 
+double agingFactor(const LifeHistory& life, double height_m, int age_years) {
+  if (life.aging.halfAt <= 0.0) return 1.0;
+  // iLand's Species::aging: relative height and age, each kept below 1, combined as the
+  // harmonic mean of their distances from the maxima.
+  constexpr double kBelowOne = 0.999999;
+  const double height = std::clamp(height_m / life.height_m.max, 0.0, kBelowOne);
+  const double age =
+      std::clamp(static_cast<double>(age_years) / life.maxAge_years, 0.0, kBelowOne);
+  const double x = 1.0 - 2.0 / (1.0 / (1.0 - height) + 1.0 / (1.0 - age));
+  return 1.0 / (1.0 + std::pow(x / life.aging.halfAt, life.aging.exponent));
+}
+
+namespace {
+
+double siteShare(const GrowingConditions& c) {
+  return std::clamp(c.suitability, 0.0, 1.0) * std::max(0.0, c.growthFactor);
+}
+
+}  // namespace
+
 double GrowingConditions::heightShare() const {
-  return productionShare() * std::clamp(lightResponse, 0.0, 1.0);
+  return siteShare(*this) * std::clamp(lightResponse, 0.0, 1.0);
 }
 
 double GrowingConditions::productionShare() const {
-  return std::clamp(suitability, 0.0, 1.0) * std::max(0.0, growthFactor);
+  return siteShare(*this) * std::clamp(aging, 0.0, 1.0);
 }
 
 double TreeYear::carbonDeficit() const {

@@ -60,14 +60,19 @@ double leafCompensationLight(const LifeHistory& life);
 // age it has that height).
 double potentialHeightIncrement(const LifeHistory& life, double height_m);
 
+// iLand's aging factor of a tree this tall and old (LifeHistory::aging), 0..1.
+double agingFactor(const LifeHistory& life, double height_m, int age_years);
+
 // What a plant's place and nature give its growth this year.
 struct GrowingConditions {
   double suitability = 1.0;    // the site's, 0..1
   double lightResponse = 1.0;  // the species' response to the light at the plant's top, 0..1
   double growthFactor = 1.0;   // the individual's lasting rate (genotype, microsite), at most 1
-  // Share of the potential height increment: all three together.
+  double aging = 1.0;          // a tree's agingFactor(); the height curve has its own
+  // Share of the potential height increment: site, light and individual.
   double heightShare() const;
-  // Share of the light-use efficiency: site and individual (light enters as absorbed light).
+  // Share of the light-use efficiency: site, individual and aging (light enters as absorbed
+  // light).
   double productionShare() const;
 };
 

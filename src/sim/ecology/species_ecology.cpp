@@ -110,6 +110,10 @@ LifeHistory parseLife(TomlTable& life) {
       life.number("sapling_height_diameter", h.saplingHeightDiameter, {10.0, 400.0});
   h.maxHeightDiameter = life.number("max_height_diameter", h.maxHeightDiameter, {10.0, 400.0});
   h.lightUseEfficiency = life.number("light_use_efficiency", {}, {1e-3, 100.0});
+  if (life.has("aging")) {
+    const std::vector<double> aging = life.numbers("aging", 2, {}, {1e-3, 100.0});
+    h.aging = {aging[0], aging[1]};
+  }
   h.intrinsicSurvival = life.number("intrinsic_survival", h.intrinsicSurvival, {1e-6, 1.0});
   h.stressMortality = life.number("stress_mortality", h.stressMortality, {0.0, 100.0});
   h.saplingStressYears =

@@ -61,6 +61,15 @@ struct Allometry {
   double at(double dbh_cm) const;
 };
 
+// iLand's aging (Seidl et al. 2012, after Landsberg and Waring 1997): production falls as a
+// tree nears its species' maximum height or age, 1 / (1 + (x / halfAt)^exponent) of it, x
+// the harmonic mean of the two relative to their maxima (0 young and small .. 1 at either
+// maximum). halfAt 0 is no aging.
+struct Aging {
+  double halfAt = 0.0;  // x at which production is halved
+  double exponent = 2.0;
+};
+
 struct LifeHistory {
   // Growth and form.
   int maxAge_years = 300;
@@ -87,6 +96,7 @@ struct LifeHistory {
   double maxHeightDiameter = 150.0;      // height / dbh a stem can carry at most
   // Production: biomass made from the light a tree absorbs (net of respiration).
   double lightUseEfficiency = 1.5;  // kg of dry matter per m2 of open-sky light absorbed, a year
+  Aging aging;                      // how production falls with size and age (none by default)
   // Mortality.
   double intrinsicSurvival = 0.01;       // share of trees that would reach max age (iLand)
   double stressMortality = 1.4;          // yearly hazard at a full carbon deficit (iLand)

@@ -176,6 +176,38 @@ TEST(Growth, HeightFollowsThePotentialNoFasterThanTheNewWoodCarries) {
             40.0);
 }
 
+TEST(Growth, AgingIsILandsFunctionOfRelativeHeightAndAge) {
+  LifeHistory h = life();  // 40 m at most, 200 years
+  EXPECT_EQ(agingFactor(h, 30.0, 100), 1.0);  // no aging unless the species has it
+  h.aging = {0.5, 2.0};
+  // x is 1 - the harmonic mean of the distances from the maxima: a seedling has x = 0.
+  EXPECT_NEAR(agingFactor(h, 0.0, 0), 1.0, 1e-12);
+  // At two thirds of the height and age 0, x = 1 - 2 / (3 + 1) = 0.5: half the production.
+  EXPECT_NEAR(agingFactor(h, 40.0 * 2.0 / 3.0, 0), 0.5, 1e-12);
+  // Height and age enter alike: half the maximum of each, x = 0.5.
+  EXPECT_NEAR(agingFactor(h, 20.0, 100), 0.5, 1e-12);
+  // iLand's pine (x / 1)^2.5 at x = 0.5.
+  h.aging = {1.0, 2.5};
+  EXPECT_NEAR(agingFactor(h, 20.0, 100), 1.0 / (1.0 + std::pow(0.5, 2.5)), 1e-12);
+  // At either maximum x = 1 (pine's production halves there), and past them it stays so.
+  EXPECT_NEAR(agingFactor(h, 40.0, 10), 0.5, 1e-5);
+  EXPECT_NEAR(agingFactor(h, 45.0, 300), 0.5, 1e-5);
+}
+
+TEST(Growth, AgingScalesProductionNotUpkeepOrTheHeightCurve) {
+  const LifeHistory h = life();
+  const double dbh = 0.3, height = 25.0;
+  const double leaves = crownFoliage(h, dbh, height, 1.0).foliage_kg;
+  const double absorbed = 3.0 * crownUpkeep(h, leaves) / h.lightUseEfficiency;
+  const TreeYear young = growTree(h, dbh, height, leaves, absorbed, {});
+  const TreeYear old = growTree(h, dbh, height, leaves, absorbed, {.aging = 0.5});
+  EXPECT_NEAR(old.production_kg, 0.5 * young.production_kg, 1e-9);
+  EXPECT_EQ(old.upkeep_kg, young.upkeep_kg);
+  EXPECT_LT(old.dbh_m, young.dbh_m);
+  // Saplings and the potential height increment know nothing of it.
+  EXPECT_EQ(growSapling(h, 0.5, {.aging = 0.1}).height_m, growSapling(h, 0.5, {}).height_m);
+}
+
 TEST(Growth, SaplingsGrowInHeightAsLightAndSiteAllow) {
   const LifeHistory h = life();
   const double potential = potentialHeightIncrement(h, 0.5);

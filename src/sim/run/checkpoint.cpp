@@ -23,18 +23,67 @@ constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
 constexpr std::uint32_t kFormatVersion = 5;  // 5: plants' origin, the plan's stats
 constexpr std::size_t kChecksumBlock = std::size_t{1} << 20;
 
-}  // namespace
-
-// FNV-1a of each 1 MiB block (in parallel: a checkpoint is written every year and can be
-// tens of megabytes), then FNV-1a over the blocks' hashes.
-std::uint64_t checkpointChecksum(std::string_view bytes) {
+// FNV-1a of each 1 MiB block of `bytes`, in parallel, appended to `hashes`.
+void appendBlockHashes(std::string_view bytes, std::vector<std::uint64_t>& hashes) {
+  const std::size_t first = hashes.size();
   const std::size_t blocks = (bytes.size() + kChecksumBlock - 1) / kChecksumBlock;
-  std::vector<std::uint64_t> hashes(blocks);
+  hashes.resize(first + blocks);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    hashes[b] = fnv1a64(bytes.substr(b * kChecksumBlock, kChecksumBlock));
+    hashes[first + b] = fnv1a64(bytes.substr(b * kChecksumBlock, kChecksumBlock));
   });
+}
+
+std::uint64_t combineBlockHashes(const std::vector<std::uint64_t>& hashes) {
   return fnv1a64(std::string_view(reinterpret_cast<const char*>(hashes.data()),
                                   hashes.size() * sizeof(std::uint64_t)));
+}
+
+// Writes a checkpoint through to its file as it is made, hashing whole blocks on the way:
+// a run of 50 million plants would otherwise hold its checkpoint's gigabytes in memory.
+class ChecksummedOutput {
+ public:
+  explicit ChecksummedOutput(AtomicFile& out) : out_(out) {}
+  // Takes what the writer holds; whole blocks go out, the rest waits for the next bytes.
+  void add(BinaryWriter& writer) {
+    const std::string bytes = writer.takeBytes();
+    std::string_view rest = bytes;
+    if (!pending_.empty()) {
+      const std::size_t take = std::min(kChecksumBlock - pending_.size(), rest.size());
+      pending_.append(rest.substr(0, take));
+      rest.remove_prefix(take);
+      if (pending_.size() < kChecksumBlock) return;
+      emit(pending_);
+      pending_.clear();
+    }
+    const std::size_t whole = rest.size() - rest.size() % kChecksumBlock;
+    emit(rest.substr(0, whole));
+    pending_.assign(rest.substr(whole));
+  }
+  // Writes the rest; the checksum of everything written (checkpointChecksum's).
+  std::uint64_t finish() {
+    emit(pending_);
+    pending_.clear();
+    return combineBlockHashes(hashes_);
+  }
+
+ private:
+  void emit(std::string_view bytes) {
+    appendBlockHashes(bytes, hashes_);
+    out_.write(bytes);
+  }
+  AtomicFile& out_;
+  std::string pending_;
+  std::vector<std::uint64_t> hashes_;
+};
+
+}  // namespace
+
+// FNV-1a of each 1 MiB block (in parallel: a checkpoint can be gigabytes), then FNV-1a over
+// the blocks' hashes.
+std::uint64_t checkpointChecksum(std::string_view bytes) {
+  std::vector<std::uint64_t> hashes;
+  appendBlockHashes(bytes, hashes);
+  return combineBlockHashes(hashes);
 }
 
 namespace {
@@ -142,21 +191,33 @@ void checkCheckpoint(const Checkpoint& checkpoint, const CheckpointLimits& limit
       throw refuse(fmt::format("statistics row {}: {}", r + 1, *fault));
 }
 
-void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkpoint) {
+void writeCheckpoint(const std::filesystem::path& file, std::uint64_t scenarioHash,
+                     std::string_view programVersion, const EcosystemState& state,
+                     const std::vector<StatsRow>& stats) {
+  AtomicFile out(file);
+  ChecksummedOutput body(out);
   BinaryWriter w;
   w.putString(kMagic);
   w.put(kFormatVersion);
-  w.put(checkpoint.scenarioHash);
-  w.putString(checkpoint.programVersion);
-  w.put<std::int32_t>(checkpoint.state.year);
-  w.put(checkpoint.state.nextId);
-  checkpoint.state.plants.forEachColumn([&](const auto& column) { w.putVector(column); });
-  w.putVector(checkpoint.stats);
-  const std::uint64_t checksum = checkpointChecksum(w.bytes());
-  w.put(checksum);
-  AtomicFile out(file);
+  w.put(scenarioHash);
+  w.putString(programVersion);
+  w.put<std::int32_t>(state.year);
+  w.put(state.nextId);
+  // Column by column: no more than one column is ever copied.
+  state.plants.forEachColumn([&](const auto& column) {
+    w.putVector(column);
+    body.add(w);
+  });
+  w.putVector(stats);
+  body.add(w);
+  w.put(body.finish());
   out.write(w.bytes());
   out.commit();
+}
+
+void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkpoint) {
+  writeCheckpoint(file, checkpoint.scenarioHash, checkpoint.programVersion, checkpoint.state,
+                  checkpoint.stats);
 }
 
 Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expectedHash) {

@@ -27,6 +27,11 @@ struct Checkpoint {
 std::uint64_t checkpointChecksum(std::string_view body);
 
 void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkpoint);
+// The same from the run's own state, written through as it is made: no copy of the plants
+// and no checkpoint-sized buffer.
+void writeCheckpoint(const std::filesystem::path& file, std::uint64_t scenarioHash,
+                     std::string_view programVersion, const EcosystemState& state,
+                     const std::vector<StatsRow>& stats);
 
 // Throws InputError for a missing, truncated, corrupt or foreign file; `expectedHash` is the
 // fingerprint of the scenario being resumed.

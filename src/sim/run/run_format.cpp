@@ -211,23 +211,28 @@ void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem
 
 void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
                    const std::vector<EcosystemSpecies>& species) {
-  // Formatted in parallel chunks, written in order.
-  constexpr std::size_t kRowsPerChunk = 16384;
-  std::vector<std::string> chunks((p.size() + kRowsPerChunk - 1) / kRowsPerChunk);
-  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
-    std::string& text = chunks[c];
-    const std::size_t end = std::min(p.size(), (c + 1) * kRowsPerChunk);
-    text.reserve((end - c * kRowsPerChunk) * 96);
-    for (std::size_t i = c * kRowsPerChunk; i < end; ++i)
-      fmt::format_to(std::back_inserter(text),
-                     "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.4f},{:.3f},{}\n",
-                     p.id[i], species[p.species[i]].species.name, p.east_m[i], p.north_m[i],
-                     p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i],
-                     p.crownBase_m[i], p.dbh_m[i], p.vigor[i], p.variantSeed[i]);
-  });
+  // Formatted in parallel chunks and written in order, a batch of chunks at a time: a
+  // landscape's 50 million rows would otherwise be gigabytes of text in memory at once.
+  constexpr std::size_t kRowsPerChunk = 16384, kChunksPerBatch = 64;
   AtomicFile out(file);
   out.write(std::string(kTreesCsvHeader) + "\n");
-  for (const std::string& text : chunks) out.write(text);
+  std::vector<std::string> chunks(kChunksPerBatch);
+  for (std::size_t first = 0; first < p.size(); first += kRowsPerChunk * kChunksPerBatch) {
+    tbb::parallel_for(std::size_t{0}, kChunksPerBatch, [&](std::size_t c) {
+      std::string& text = chunks[c];
+      text.clear();
+      const std::size_t begin = std::min(p.size(), first + c * kRowsPerChunk);
+      const std::size_t end = std::min(p.size(), begin + kRowsPerChunk);
+      text.reserve((end - begin) * 96);
+      for (std::size_t i = begin; i < end; ++i)
+        fmt::format_to(std::back_inserter(text),
+                       "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.4f},{:.3f},{}\n",
+                       p.id[i], species[p.species[i]].species.name, p.east_m[i], p.north_m[i],
+                       p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i],
+                       p.crownBase_m[i], p.dbh_m[i], p.vigor[i], p.variantSeed[i]);
+    });
+    for (const std::string& text : chunks) out.write(text);
+  }
   out.commit();
 }
 

@@ -265,8 +265,8 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
           {year, summary.targetYears, firstYear, ecosystem.plants().size(), secondsSince(start)});
     const bool stopping = options.stop && options.stop->load() && !last;
     if (year % scenario.output.checkpointEveryYears == 0 || last || stopping)
-      writeCheckpoint(run.checkpoint(),
-                      {fingerprint, options.programVersion, ecosystem.state(), stats});
+      writeCheckpoint(run.checkpoint(), fingerprint, options.programVersion, ecosystem.state(),
+                      stats);
     if (stopping) {
       summary.interrupted = true;
       break;

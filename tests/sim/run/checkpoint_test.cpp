@@ -1,6 +1,7 @@
 #include "sim/run/checkpoint.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -61,6 +62,36 @@ TEST(Checkpoint, RoundTripsTheState) {
   EXPECT_EQ(back.stats[0].died, 2);
   EXPECT_EQ(back.stats[0].coverFraction, 0.2);
   EXPECT_EQ(back.stats[0].sdi, 1.5);
+}
+
+TEST(Checkpoint, AStateOfManyBlocksIsWrittenThroughWithItsChecksum) {
+  // 300,000 plants: columns of 0.3 to 2.4 MB, so whole 1 MiB checksum blocks and partial
+  // ones meet at every column boundary of the written-through file.
+  Checkpoint big = sample();
+  const std::size_t n = 300000;
+  big.state.plants.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    big.state.plants.id[i] = 1000 + i;
+    big.state.plants.height_m[i] = 0.001f * static_cast<float>(i % 5000);
+    big.state.plants.age_years[i] = static_cast<std::int32_t>(i % 300);
+  }
+  const auto file = test::freshDirectory("checkpoint_big") / "checkpoint.bin";
+  writeCheckpoint(file, big.scenarioHash, big.programVersion, big.state, big.stats);
+  const std::string bytes = test::readFile(file);
+  ASSERT_GT(bytes.size(), std::size_t{16} << 20);  // 65 bytes a plant: 18 blocks and a part
+  // The stored checksum is that of the whole body, as if it had been made in memory.
+  std::uint64_t stored = 0;
+  std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
+  EXPECT_EQ(stored, checkpointChecksum(std::string_view(bytes).substr(0, bytes.size() - 8)));
+  const Checkpoint back = readCheckpoint(file, 0x1234);
+  EXPECT_EQ(back.state.plants.id, big.state.plants.id);
+  EXPECT_EQ(back.state.plants.height_m, big.state.plants.height_m);
+  EXPECT_EQ(back.state.plants.age_years, big.state.plants.age_years);
+  EXPECT_EQ(back.stats.size(), 1u);
+  // The struct's overload writes the same bytes.
+  const auto again = test::freshDirectory("checkpoint_big_again") / "checkpoint.bin";
+  writeCheckpoint(again, big);
+  EXPECT_EQ(test::readFile(again), bytes);
 }
 
 TEST(Checkpoint, RefusesCorruptTruncatedForeignAndMissingFiles) {

@@ -198,6 +198,25 @@ TEST_F(OneHectare, TheTreesReaderReadsWhatTheWriterWrote) {
   }
 }
 
+TEST_F(OneHectare, ALargeSnapshotIsWrittenInBatchesInOrder) {
+  // More rows than one batch of formatted chunks (64 x 16,384), so batches meet.
+  const std::size_t n = 64 * 16384 + 1000;
+  Plants p;
+  p.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.id[i] = i + 1;
+    p.age_years[i] = static_cast<std::int32_t>(i % 97);
+  }
+  const auto file = test::freshDirectory("run_format_batches") / "year_0001.csv";
+  writeTreesCsv(file, p, ecosystem.species());
+  const TreeSnapshot snapshot = readTreesCsv(file);
+  ASSERT_EQ(snapshot.trees.size(), n);
+  for (std::size_t i = 0; i < n; ++i) {
+    ASSERT_EQ(snapshot.trees[i].id, i + 1);
+    ASSERT_EQ(snapshot.trees[i].age_years, static_cast<int>(i % 97));
+  }
+}
+
 TEST(RunFormat, RunJsonReadsBackWhatWasWritten) {
   const RunPaths run{test::freshDirectory("run_format_json")};
   RunRecord r;

@@ -11,7 +11,6 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 #include "core/hash.hpp"
@@ -43,8 +42,6 @@ class BinaryWriter {
     bytes_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
   }
   const std::string& bytes() const { return bytes_; }
-  // The bytes so far, leaving the writer empty (a file written through as it is made).
-  std::string takeBytes() { return std::exchange(bytes_, {}); }
 
  private:
   std::string bytes_;

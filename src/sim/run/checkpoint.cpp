@@ -43,21 +43,27 @@ std::uint64_t combineBlockHashes(const std::vector<std::uint64_t>& hashes) {
 class ChecksummedOutput {
  public:
   explicit ChecksummedOutput(AtomicFile& out) : out_(out) {}
-  // Takes what the writer holds; whole blocks go out, the rest waits for the next bytes.
-  void add(BinaryWriter& writer) {
-    const std::string bytes = writer.takeBytes();
-    std::string_view rest = bytes;
+  // Whole blocks go out; the rest waits for the next bytes.
+  void add(std::string_view bytes) {
     if (!pending_.empty()) {
-      const std::size_t take = std::min(kChecksumBlock - pending_.size(), rest.size());
-      pending_.append(rest.substr(0, take));
-      rest.remove_prefix(take);
+      const std::size_t take = std::min(kChecksumBlock - pending_.size(), bytes.size());
+      pending_.append(bytes.substr(0, take));
+      bytes.remove_prefix(take);
       if (pending_.size() < kChecksumBlock) return;
       emit(pending_);
       pending_.clear();
     }
-    const std::size_t whole = rest.size() - rest.size() % kChecksumBlock;
-    emit(rest.substr(0, whole));
-    pending_.assign(rest.substr(whole));
+    const std::size_t whole = bytes.size() - bytes.size() % kChecksumBlock;
+    emit(bytes.substr(0, whole));
+    pending_.assign(bytes.substr(whole));
+  }
+  // A column as BinaryWriter::putVector lays it out, straight from the vector.
+  template <typename T>
+  void addVector(const std::vector<T>& values) {
+    BinaryWriter count;
+    count.put<std::uint64_t>(values.size());
+    add(count.bytes());
+    add(std::string_view(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T)));
   }
   // Writes the rest; the checksum of everything written (checkpointChecksum's).
   std::uint64_t finish() {
@@ -196,22 +202,20 @@ void writeCheckpoint(const std::filesystem::path& file, std::uint64_t scenarioHa
                      const std::vector<StatsRow>& stats) {
   AtomicFile out(file);
   ChecksummedOutput body(out);
-  BinaryWriter w;
-  w.putString(kMagic);
-  w.put(kFormatVersion);
-  w.put(scenarioHash);
-  w.putString(programVersion);
-  w.put<std::int32_t>(state.year);
-  w.put(state.nextId);
-  // Column by column: no more than one column is ever copied.
-  state.plants.forEachColumn([&](const auto& column) {
-    w.putVector(column);
-    body.add(w);
-  });
-  w.putVector(stats);
-  body.add(w);
-  w.put(body.finish());
-  out.write(w.bytes());
+  BinaryWriter header;
+  header.putString(kMagic);
+  header.put(kFormatVersion);
+  header.put(scenarioHash);
+  header.putString(programVersion);
+  header.put<std::int32_t>(state.year);
+  header.put(state.nextId);
+  body.add(header.bytes());
+  // Straight from the columns: nothing of the plants is copied.
+  state.plants.forEachColumn([&](const auto& column) { body.addVector(column); });
+  body.addVector(stats);
+  BinaryWriter checksum;
+  checksum.put(body.finish());
+  out.write(checksum.bytes());
   out.commit();
 }
 

@@ -52,14 +52,11 @@ CrownShade::CrownShade(const TreeSkeleton& tree, const Species& species) {
   // Leaf area density: each leaf's visible area in the cell holding its middle.
   std::vector<float> density(static_cast<std::size_t>(size_.x) * size_.y * size_.z, 0.0f);
   const float perVolume = 1.0f / (cell_m_ * cell_m_ * cell_m_);
-  auto index = [&](glm::ivec3 c) {
-    return (static_cast<std::size_t>(c.z) * size_.y + c.y) * size_.x + c.x;
-  };
   auto cellOf = [&](glm::vec3 p) {
     return glm::clamp(glm::ivec3(glm::floor((p - origin_) / cell_m_)), glm::ivec3(0), size_ - 1);
   };
   for (const Leaf& leaf : tree.leaves)
-    density[index(cellOf(middle(leaf)))] += visibleLeafArea(species, leaf.size_m) * perVolume;
+    density[indexOf(cellOf(middle(leaf)))] += visibleLeafArea(species, leaf.size_m) * perVolume;
 
   // Transmittance toward each sky direction from each cell centre, marching a cell at a time
   // (half of the own cell's leaves lie between its centre and the sky).
@@ -72,25 +69,26 @@ CrownShade::CrownShade(const TreeSkeleton& tree, const Species& species) {
         const glm::vec3 start = (glm::vec3(x, y, z) + 0.5f) * cell_m_;
         float sum = 0.0f;
         for (const glm::vec3& d : directions) {
-          float leafArea = 0.5f * density[index({x, y, z})];
+          float leafArea = 0.5f * density[indexOf({x, y, z})];
           for (glm::vec3 p = start + d * cell_m_;
                glm::all(glm::greaterThanEqual(p, glm::vec3(0.0f))) &&
                glm::all(glm::lessThan(p, top));
                p += d * cell_m_)
             // (p below the top by less than a rounding error can still divide up to size_)
-            leafArea += density[index(glm::min(glm::ivec3(p / cell_m_), size_ - 1))];
+            leafArea += density[indexOf(glm::min(glm::ivec3(p / cell_m_), size_ - 1))];
           sum += std::exp(-kLeafProjection * leafArea * cell_m_);
         }
-        visibility_[index({x, y, z})] = sum / kDirections;
+        visibility_[indexOf({x, y, z})] = sum / kDirections;
       }
   });
 }
 
+std::size_t CrownShade::indexOf(glm::ivec3 cell) const {
+  return (static_cast<std::size_t>(cell.z) * size_.y + cell.y) * size_.x + cell.x;
+}
+
 float CrownShade::cellAt(int x, int y, int z) const {
-  x = std::clamp(x, 0, size_.x - 1);
-  y = std::clamp(y, 0, size_.y - 1);
-  z = std::clamp(z, 0, size_.z - 1);
-  return visibility_[(static_cast<std::size_t>(z) * size_.y + y) * size_.x + x];
+  return visibility_[indexOf(glm::clamp(glm::ivec3(x, y, z), glm::ivec3(0), size_ - 1))];
 }
 
 float CrownShade::skyVisibility(glm::vec3 point) const {

@@ -13,6 +13,7 @@
 // the cell centres around it.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -36,6 +37,8 @@ class CrownShade {
   static constexpr int kDirections = 16;
 
  private:
+  std::size_t indexOf(glm::ivec3 cell) const;  // x fastest
+  // The cell's visibility; a cell off the grid reads the nearest border cell.
   float cellAt(int x, int y, int z) const;
 
   glm::vec3 origin_{0.0f};  // the corner of cell (0, 0, 0)

@@ -48,6 +48,14 @@ TerrainSpec parseTerrain(TomlTable& terrain, const std::filesystem::path& scenar
     spec.heightMin_m = range[0];
     spec.heightMax_m = range[1];
   }
+  const std::string depressions = terrain.string("closed_depressions", "drain");
+  if (depressions == "drain")
+    spec.closedDepressions = ClosedDepressions::Drain;
+  else if (depressions == "pond")
+    spec.closedDepressions = ClosedDepressions::Pond;
+  else
+    terrain.fail("closed_depressions",
+                 "unknown kind '" + depressions + "' (expected drain or pond)");
   terrain.finish();
   return spec;
 }

@@ -20,6 +20,11 @@ struct GeneratedTerrain {
   double relief_m = 600.0;  // height difference between the lowest and highest cell
 };
 
+// What the closed depressions of a heightmap (pits with no way out at the surface) are
+// (docs/conditions.md, "Moisture"): drained, as karst sinks and the artefacts of generated
+// or measured heightmaps are, or ponds that hold water to their spill level.
+enum class ClosedDepressions { Drain, Pond };
+
 struct TerrainSpec {
   std::optional<std::filesystem::path> heightmap;  // absolute after loading
   std::optional<GeneratedTerrain> generate;        // exactly one of the two
@@ -28,6 +33,7 @@ struct TerrainSpec {
   std::optional<SourceLocation> cellSizeAt;        // where cell_size_m was given, if it was
   std::optional<double> heightMin_m, heightMax_m;  // height_range_m
   double baseAltitude_m = 0.0;                     // generated terrain: height of its lowest cell
+  ClosedDepressions closedDepressions = ClosedDepressions::Drain;
 };
 
 struct Climate {

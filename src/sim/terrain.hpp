@@ -19,6 +19,7 @@ struct Terrain {
   // nothing grows there and conditions there are NaN. Their heights continue the terrain
   // around them, so that rays and slopes next to them see no cliff.
   std::vector<std::uint8_t> outside;
+  ClosedDepressions closedDepressions = ClosedDepressions::Drain;  // for the moisture field
 
   bool isOutside(std::size_t cell) const { return !outside.empty() && outside[cell] != 0; }
 

@@ -202,6 +202,17 @@ TEST(Scenario, GeneratedTerrainAndDefaults) {
   EXPECT_DOUBLE_EQ(s.terrain.cellDx_m, 5.0);
   EXPECT_DOUBLE_EQ(s.terrain.cellDy_m, 5.0);
   EXPECT_DOUBLE_EQ(s.climate.latitude_deg, 46.0);
+  EXPECT_EQ(s.terrain.closedDepressions, ClosedDepressions::Drain);
+}
+
+TEST(Scenario, ClosedDepressionsDrainOrHoldPonds) {
+  const Scenario ponds = loadScenario(write(
+      "[terrain]\ncell_size_m = 5\nclosed_depressions = \"pond\"\n[terrain.generate]\nsize = 9\n"));
+  EXPECT_EQ(ponds.terrain.closedDepressions, ClosedDepressions::Pond);
+  InputError lake = errorOf("[terrain]\nheightmap = \"a.png\"\nclosed_depressions = \"lake\"\n");
+  EXPECT_EQ(lake.where().line, 3);
+  EXPECT_EQ(lake.where().key, "terrain.closed_depressions");
+  EXPECT_NE(std::string(lake.what()).find("expected drain or pond"), std::string::npos);
 }
 
 TEST(Scenario, BadInputNamesTheLineAndKey) {

@@ -63,4 +63,12 @@ TEST(Terrain, MidpointDisplacementIsDeterministicAndScaled) {
             1.5 * meanStep(generateMidpoint({65, 0.4, 300.0}, 10, 10, 0.0, 7)));
 }
 
+TEST(Terrain, CarriesWhatItsClosedDepressionsAre) {
+  Scenario scenario;
+  scenario.terrain.generate = GeneratedTerrain{9, 0.5, 10.0};
+  EXPECT_EQ(loadTerrain(scenario).closedDepressions, ClosedDepressions::Drain);
+  scenario.terrain.closedDepressions = ClosedDepressions::Pond;
+  EXPECT_EQ(loadTerrain(scenario).closedDepressions, ClosedDepressions::Pond);
+}
+
 }  // namespace eco

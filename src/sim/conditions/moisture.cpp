@@ -14,7 +14,7 @@ constexpr int kNeighbours = 8;
 constexpr int kDx[kNeighbours] = {-1, 0, 1, -1, 1, -1, 0, 1};
 constexpr int kDy[kNeighbours] = {-1, -1, -1, 0, 0, 1, 1, 1};
 constexpr double kEpsilon_m = 1e-5;      // the gradient priority-flood adds across filled ground
-constexpr double kDepression_m = 0.01;   // filled deeper than this: a real depression (a pond)
+constexpr double kDepression_m = 0.01;   // filled deeper than this: a real depression
 constexpr double kFlatSlope_deg = 0.01;  // level ground
 
 }  // namespace
@@ -105,8 +105,10 @@ void computeMoisture(const Terrain& terrain, const Field& slope_deg, double prec
   moisture.resize(twi.size());
   for (std::size_t c = 0; c < twi.size(); ++c) {
     double f = climate + kMoisturePerWetness * (twi[c] - kReferenceWetness);
-    // Standing water: a depression deeper than a centimetre is at least wet (F 9).
-    if (filled[c] - terrain.height_m[c] > kDepression_m) f = std::max(f, kPondMoisture);
+    // Standing water: a pond deeper than a centimetre is at least wet (F 9).
+    if (terrain.closedDepressions == ClosedDepressions::Pond &&
+        filled[c] - terrain.height_m[c] > kDepression_m)
+      f = std::max(f, kPondMoisture);
     moisture[c] = static_cast<float>(std::clamp(f, kDriestMoisture, kWettestMoisture));
   }
 }

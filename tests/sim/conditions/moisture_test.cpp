@@ -71,12 +71,35 @@ TEST(Moisture, PitsFillToTheirSpillLevel) {
   EXPECT_GT(filled[centre], 99.0);  // the pond reaches the rim
   EXPECT_LT(filled[centre], 100.01);
   for (std::size_t c = 0; c < filled.size(); ++c) ASSERT_GE(filled[c], bowl.height_m[c]);
-  // The pond is wet (F 9 or more) all over, its outside is not.
+  // As a pond, the bowl is wet (F 9 or more) all over, its outside is not.
+  bowl.closedDepressions = ClosedDepressions::Pond;
   Field slope(bowl.grid.cellCount(), 5.0f), moisture;
   computeMoisture(bowl, slope, 1100.0, moisture);
   EXPECT_GE(moisture[centre], kPondMoisture);
   EXPECT_GE(moisture[bowl.grid.index(25, 20)], kPondMoisture);
   EXPECT_LT(moisture[bowl.grid.index(20, 2)], kPondMoisture);  // outside the rim
+}
+
+TEST(Moisture, DrainedPitsAreAsMoistAsTheirWetnessIndexSays) {
+  // The bowl of the test above, drained (the default): no cell is held at the pond's F 9;
+  // every cell, in the bowl or outside it, has the climate's number plus a quarter unit per
+  // unit of TWI, its catchment routed over the filled surface.
+  Terrain bowl = test::analyticTerrain(41, 41, 10, 10, [](double e, double n) {
+    double r = std::hypot(e - 200.0, n - 200.0);
+    return r < 100.0 ? 80.0 + 0.2 * r : 100.0 - 0.05 * (r - 100.0);
+  });
+  ASSERT_EQ(bowl.closedDepressions, ClosedDepressions::Drain);
+  Field slope, aspect, moisture;
+  computeSlopeAspect(bowl, slope, aspect);
+  computeMoisture(bowl, slope, 1100.0, moisture);
+  const Field twi =
+      wetnessIndex(bowl, flowAccumulation(bowl, fillDepressions(bowl), slope), slope);
+  for (std::size_t c = 0; c < moisture.size(); ++c)
+    ASSERT_NEAR(moisture[c], 5.0 + kMoisturePerWetness * (twi[c] - kReferenceWetness), 1e-4) << c;
+  // The bowl's sloping side (11 degrees) is fresh, not wet.
+  const std::size_t side = bowl.grid.index(25, 20);
+  EXPECT_GT(moisture[side], 4.0f);
+  EXPECT_LT(moisture[side], 7.0f);
 }
 
 TEST(Moisture, WetterClimateIsWetter) {

@@ -62,30 +62,58 @@ CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m
   return {std::min(lai, maxLai) * area, allometric_kg};
 }
 
+namespace {
+
+// The wood at a diameter (cm) and its derivative. The three compartments' power laws share
+// the diameter's logarithm: one log and three exps instead of three pows, which matters in
+// the yearly step's hottest call (each tree, each year, three times).
+struct WoodyAt {
+  double biomass_kg = 0.0, slope_kg_per_cm = 0.0;
+};
+
+WoodyAt woodyAt(const LifeHistory& life, double d_cm) {
+  if (d_cm <= 0.0) return {};
+  const double lnD = std::log(d_cm);
+  const double stem = life.stem.a * std::exp(life.stem.b * lnD);
+  const double branches = life.branches.a * std::exp(life.branches.b * lnD);
+  const double roots = life.coarseRoots.a * std::exp(life.coarseRoots.b * lnD);
+  return {stem + branches + roots,
+          (life.stem.b * stem + life.branches.b * branches + life.coarseRoots.b * roots) / d_cm};
+}
+
+// Newton's method on the increasing, convex sum of power laws, from d_cm where the wood is
+// `at`: from a tree's last diameter two steps suffice.
+double newtonDiameter_m(const LifeHistory& life, double biomass_kg, double d_cm, WoodyAt at) {
+  for (int i = 0; i < 30; ++i) {
+    const double next =
+        std::max(0.5 * d_cm, d_cm - (at.biomass_kg - biomass_kg) / at.slope_kg_per_cm);
+    if (std::abs(next - d_cm) < 1e-9 * d_cm) return next / 100.0;
+    d_cm = next;
+    at = woodyAt(life, d_cm);
+  }
+  return d_cm / 100.0;
+}
+
+// The diameter after a year adds wood_kg to a tree of dbh_m (dbh_m > 0).
+double diameterAddingWood(const LifeHistory& life, double dbh_m, double wood_kg) {
+  const WoodyAt now = woodyAt(life, 100.0 * dbh_m);
+  return newtonDiameter_m(life, now.biomass_kg + wood_kg, 100.0 * dbh_m, now);
+}
+
+}  // namespace
+
 double woodyBiomass(const LifeHistory& life, double dbh_m) {
-  const double d = 100.0 * dbh_m;
-  return life.stem.at(d) + life.branches.at(d) + life.coarseRoots.at(d);
+  return woodyAt(life, 100.0 * dbh_m).biomass_kg;
 }
 
 double diameterOfWoodyBiomass(const LifeHistory& life, double biomass_kg, double guess_m) {
   if (biomass_kg <= 0.0) return 0.0;
-  // Newton's method on the increasing, convex sum of power laws, from the guess (a tree's
-  // last diameter: two steps then suffice) or the stem's own inverse.
-  double d = guess_m > 0.0
-                 ? 100.0 * guess_m
-                 : std::pow(biomass_kg / (life.stem.a + life.branches.a + life.coarseRoots.a),
-                            1.0 / life.stem.b);
-  for (int i = 0; i < 30; ++i) {
-    const double stem = life.stem.at(d), branches = life.branches.at(d),
-                 roots = life.coarseRoots.at(d);
-    const double f = stem + branches + roots - biomass_kg;
-    const double slope =
-        (life.stem.b * stem + life.branches.b * branches + life.coarseRoots.b * roots) / d;
-    const double next = std::max(0.5 * d, d - f / slope);
-    if (std::abs(next - d) < 1e-9 * d) return next / 100.0;
-    d = next;
-  }
-  return d / 100.0;
+  // From the guess, or from the stem's own inverse.
+  const double d_cm =
+      guess_m > 0.0 ? 100.0 * guess_m
+                    : std::pow(biomass_kg / (life.stem.a + life.branches.a + life.coarseRoots.a),
+                               1.0 / life.stem.b);
+  return newtonDiameter_m(life, biomass_kg, d_cm, woodyAt(life, d_cm));
 }
 
 double leafMassShare(const LifeHistory& life, double light) {
@@ -157,8 +185,8 @@ TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double
   year.dbh_m = dbh_m;
   year.height_m = height_m;
   if (wood_kg <= 0.0) return year;  // nothing left to grow on
-  year.dbh_m =
-      std::max(dbh_m, diameterOfWoodyBiomass(life, woodyBiomass(life, dbh_m) + wood_kg, dbh_m));
+  year.dbh_m = dbh_m > 0.0 ? std::max(dbh_m, diameterAddingWood(life, dbh_m, wood_kg))
+                          : diameterOfWoodyBiomass(life, wood_kg);
   // Height as the light and the site allow, never past the species' maximum; and a metre
   // of height needs new wood: at most maxHeightDiameter metres per metre of new diameter,
   // so a tree that makes little wood falls behind its neighbours.

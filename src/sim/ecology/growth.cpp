@@ -137,10 +137,7 @@ double leafCompensationLight(const LifeHistory& life) {
 }
 
 double potentialHeightIncrement(const LifeHistory& life, double height_m) {
-  const GrowthCurve& curve = life.height_m;
-  const double age = curve.ageOf(height_m);
-  if (!std::isfinite(age)) return 0.0;
-  return curve.at(age + 1.0) - curve.at(age);
+  return std::max(0.0, life.height_m.yearAfter(height_m) - height_m);
 }
 
 double agingFactor(const LifeHistory& life, double height_m, int age_years) {

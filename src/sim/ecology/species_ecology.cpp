@@ -168,10 +168,10 @@ double GrowthCurve::at(double years) const {
   return max * std::pow(1.0 - std::exp(-rate * years), shape);
 }
 
-double GrowthCurve::ageOf(double value) const {
-  if (value <= 0.0) return 0.0;
-  if (value >= max) return std::numeric_limits<double>::infinity();
-  return -std::log(1.0 - std::pow(value / max, 1.0 / shape)) / rate;
+double GrowthCurve::yearAfter(double value) const {
+  if (value >= max) return max;
+  const double remaining = 1.0 - std::pow(std::max(value, 0.0) / max, 1.0 / shape);
+  return max * std::pow(1.0 - remaining * std::exp(-rate), shape);
 }
 
 double lightCompensation(int light) {

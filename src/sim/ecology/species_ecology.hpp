@@ -49,8 +49,11 @@ struct GrowthCurve {
   double rate = 0.03;  // per year
   double shape = 1.3;
   double at(double years) const;
-  // The age at which the curve reaches `value` (its inverse); infinite at or above max.
-  double ageOf(double value) const;
+  // The curve a year after it reached `value` (max at or above max): at(age + 1) where
+  // at(age) = value, in closed form without the age, since exp(-rate (age + 1)) =
+  // (1 - (value / max)^(1 / shape)) exp(-rate). Two pows and an exp, for every plant every
+  // year, instead of a round trip through the age's three pows, two exps and a log.
+  double yearAfter(double value) const;
 };
 
 enum class DispersalVector { Gravity, Animal, Wind };

@@ -113,12 +113,15 @@ TEST(Ecology, TolerancesDerivedFromEllenbergValues) {
   EXPECT_DOUBLE_EQ(x.altitude_m(3000.0), 1.0);
 }
 
-TEST(Ecology, GrowthCurveAndItsInverse) {
+TEST(Ecology, GrowthCurveAndItsYearOn) {
   const GrowthCurve c{40.0, 0.022, 1.6};
   EXPECT_EQ(c.at(0.0), 0.0);
   EXPECT_NEAR(c.at(100.0), 40.0 * std::pow(1.0 - std::exp(-2.2), 1.6), 1e-12);
-  EXPECT_NEAR(c.ageOf(c.at(63.0)), 63.0, 1e-9);
-  EXPECT_TRUE(std::isinf(c.ageOf(40.0)));
+  // A year on from any point of the curve, in closed form, is the round trip through the age.
+  for (double age : {0.0, 0.5, 7.0, 63.0, 250.0})
+    EXPECT_NEAR(c.yearAfter(c.at(age)), c.at(age + 1.0), 1e-9) << age;
+  EXPECT_EQ(c.yearAfter(40.0), 40.0);
+  EXPECT_EQ(c.yearAfter(41.0), 40.0);
 }
 
 TEST(Ecology, ParsesAFileAndItsOverrides) {

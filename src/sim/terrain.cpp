@@ -150,11 +150,11 @@ Terrain generateMidpoint(const GeneratedTerrain& settings, double dx_m, double d
 
 Terrain loadTerrain(const Scenario& scenario) {
   const TerrainSpec& spec = scenario.terrain;
-  Terrain terrain =
-      spec.generate ? generateMidpoint(*spec.generate, spec.cellDx_m, spec.cellDy_m,
-                                       spec.baseAltitude_m, scenario.seed)
-                    : readHeightmap(*spec.heightmap, spec.cellDx_m, spec.cellDy_m,
-                                    spec.heightMin_m, spec.heightMax_m, spec.cellSizeAt);
+  Terrain terrain = spec.generate
+                        ? generateMidpoint(*spec.generate, spec.cellDx_m, spec.cellDy_m,
+                                           spec.baseAltitude_m, scenario.seed)
+                        : readHeightmap(*spec.heightmap, spec.cellDx_m, spec.cellDy_m,
+                                        spec.heightMin_m, spec.heightMax_m, spec.cellSizeAt);
   terrain.closedDepressions = spec.closedDepressions;
   return terrain;
 }

@@ -29,8 +29,8 @@ Field wetnessIndex(const Terrain& terrain, const Field& accumulation, const Fiel
 // 400 mm more or less, plus a quarter unit per unit of TWI above the reference wetness 6 of
 // an open mid-slope (100 m below its ridge at 15 degrees: ln(100 / 0.27) = 5.9), and at least
 // F = 9 (wet) in closed depressions when the terrain's are ponds; drained ones gather their
-// catchment's water and are as moist as their TWI says. A quarter unit spreads the TWI of hill country
-// (about 3 on ridges to 15 on valley floors) over the three units of F its woods span, from
+// catchment's water and are as moist as their TWI says. A quarter unit spreads the TWI of hill
+// country (about 3 on ridges to 15 on valley floors) over the three units of F its woods span, from
 // the dry ridges' F 4 to the moist valleys' F 7. Continuous: only the scale's ends clamp it.
 inline constexpr double kMoistureAt1100mm = 5.0, kPrecipitationPerUnit_mm = 400.0;
 inline constexpr double kMoisturePerWetness = 0.25, kReferenceWetness = 6.0;

@@ -146,8 +146,7 @@ double agingFactor(const LifeHistory& life, double height_m, int age_years) {
   // harmonic mean of their distances from the maxima.
   constexpr double kBelowOne = 0.999999;
   const double height = std::clamp(height_m / life.height_m.max, 0.0, kBelowOne);
-  const double age =
-      std::clamp(static_cast<double>(age_years) / life.maxAge_years, 0.0, kBelowOne);
+  const double age = std::clamp(static_cast<double>(age_years) / life.maxAge_years, 0.0, kBelowOne);
   const double x = 1.0 - 2.0 / (1.0 / (1.0 - height) + 1.0 / (1.0 - age));
   return 1.0 / (1.0 + std::pow(x / life.aging.halfAt, life.aging.exponent));
 }
@@ -183,7 +182,7 @@ TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double
   year.height_m = height_m;
   if (wood_kg <= 0.0) return year;  // nothing left to grow on
   year.dbh_m = dbh_m > 0.0 ? std::max(dbh_m, diameterAddingWood(life, dbh_m, wood_kg))
-                          : diameterOfWoodyBiomass(life, wood_kg);
+                           : diameterOfWoodyBiomass(life, wood_kg);
   // Height as the light and the site allow, never past the species' maximum; and a metre
   // of height needs new wood: at most maxHeightDiameter metres per metre of new diameter,
   // so a tree that makes little wood falls behind its neighbours.

@@ -92,8 +92,7 @@ TEST(Moisture, DrainedPitsAreAsMoistAsTheirWetnessIndexSays) {
   Field slope, aspect, moisture;
   computeSlopeAspect(bowl, slope, aspect);
   computeMoisture(bowl, slope, 1100.0, moisture);
-  const Field twi =
-      wetnessIndex(bowl, flowAccumulation(bowl, fillDepressions(bowl), slope), slope);
+  const Field twi = wetnessIndex(bowl, flowAccumulation(bowl, fillDepressions(bowl), slope), slope);
   for (std::size_t c = 0; c < moisture.size(); ++c)
     ASSERT_NEAR(moisture[c], 5.0 + kMoisturePerWetness * (twi[c] - kReferenceWetness), 1e-4) << c;
   // The bowl's sloping side (11 degrees) is fresh, not wet.

@@ -177,7 +177,7 @@ TEST(Growth, HeightFollowsThePotentialNoFasterThanTheNewWoodCarries) {
 }
 
 TEST(Growth, AgingIsILandsFunctionOfRelativeHeightAndAge) {
-  LifeHistory h = life();  // 40 m at most, 200 years
+  LifeHistory h = life();                     // 40 m at most, 200 years
   EXPECT_EQ(agingFactor(h, 30.0, 100), 1.0);  // no aging unless the species has it
   h.aging = {0.5, 2.0};
   // x is 1 - the harmonic mean of the distances from the maxima: a seedling has x = 0.

@@ -151,7 +151,7 @@ slope_deg = [[10, 1], [20, 0]]
   EXPECT_DOUBLE_EQ(e.life.downwindBias, 0.3);
   EXPECT_DOUBLE_EQ(e.life.height_m.max, 20.0);
   EXPECT_EQ(e.life.longDistanceFraction, 0.0);  // a plain exponential kernel by default
-  EXPECT_EQ(e.life.aging.halfAt, 0.0);           // and no aging
+  EXPECT_EQ(e.life.aging.halfAt, 0.0);          // and no aging
 }
 
 TEST(Ecology, AgingIsReadAsILandsCurve) {
@@ -163,8 +163,7 @@ TEST(Ecology, AgingIsReadAsILandsCurve) {
   EXPECT_DOUBLE_EQ(e.life.aging.halfAt, 0.8);
   EXPECT_DOUBLE_EQ(e.life.aging.exponent, 2.0);
   EXPECT_NE(errorOf(file + "aging = [0.8]\n").find("ecology.life.aging"), std::string::npos);
-  EXPECT_NE(errorOf(file + "aging = [0.0, 2.0]\n").find("ecology.life.aging"),
-            std::string::npos);
+  EXPECT_NE(errorOf(file + "aging = [0.0, 2.0]\n").find("ecology.life.aging"), std::string::npos);
 }
 
 TEST(Ecology, ALongDistanceShareNeedsALongerMean) {

@@ -17,6 +17,11 @@ constexpr double kEpsilon_m = 1e-5;      // the gradient priority-flood adds acr
 constexpr double kDepression_m = 0.01;   // filled deeper than this: a real depression
 constexpr double kFlatSlope_deg = 0.01;  // level ground
 
+// Whether filling raised the cell by more than kDepression_m: it lies in a closed depression.
+bool inDepression(const Terrain& terrain, const std::vector<double>& filled, std::size_t cell) {
+  return filled[cell] - terrain.height_m[cell] > kDepression_m;
+}
+
 }  // namespace
 
 std::vector<double> fillDepressions(const Terrain& terrain) {
@@ -56,8 +61,8 @@ Field flowAccumulation(const Terrain& terrain, const std::vector<double>& filled
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
       const std::size_t c = g.index(x, y);
-      const bool pond = filled[c] - terrain.height_m[c] > kDepression_m;
-      if (!pond && slope_deg[c] < kFlatSlope_deg) continue;  // a natural flat keeps its water
+      // A natural flat keeps its water; a depression's floor passes it on to the spill point.
+      if (!inDepression(terrain, filled, c) && slope_deg[c] < kFlatSlope_deg) continue;
       double steepest = 0.0;
       for (int k = 0; k < kNeighbours; ++k) {
         const int nx = x + kDx[k], ny = y + kDy[k];
@@ -106,8 +111,7 @@ void computeMoisture(const Terrain& terrain, const Field& slope_deg, double prec
   for (std::size_t c = 0; c < twi.size(); ++c) {
     double f = climate + kMoisturePerWetness * (twi[c] - kReferenceWetness);
     // Standing water: a pond deeper than a centimetre is at least wet (F 9).
-    if (terrain.closedDepressions == ClosedDepressions::Pond &&
-        filled[c] - terrain.height_m[c] > kDepression_m)
+    if (terrain.closedDepressions == ClosedDepressions::Pond && inDepression(terrain, filled, c))
       f = std::max(f, kPondMoisture);
     moisture[c] = static_cast<float>(std::clamp(f, kDriestMoisture, kWettestMoisture));
   }

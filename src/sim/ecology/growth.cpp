@@ -94,8 +94,10 @@ double newtonDiameter_m(const LifeHistory& life, double biomass_kg, double d_cm,
   return d_cm / 100.0;
 }
 
-// The diameter after a year adds wood_kg to a tree of dbh_m (dbh_m > 0).
+// The diameter after a year adds wood_kg to a tree of dbh_m: Newton's method from the
+// evaluation that measured the tree's wood (none without a diameter).
 double diameterAddingWood(const LifeHistory& life, double dbh_m, double wood_kg) {
+  if (dbh_m <= 0.0) return diameterOfWoodyBiomass(life, wood_kg, 0.0);
   const WoodyAt now = woodyAt(life, 100.0 * dbh_m);
   return newtonDiameter_m(life, now.biomass_kg + wood_kg, 100.0 * dbh_m, now);
 }
@@ -181,8 +183,7 @@ TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double
   year.dbh_m = dbh_m;
   year.height_m = height_m;
   if (wood_kg <= 0.0) return year;  // nothing left to grow on
-  year.dbh_m = dbh_m > 0.0 ? std::max(dbh_m, diameterAddingWood(life, dbh_m, wood_kg))
-                           : diameterOfWoodyBiomass(life, wood_kg);
+  year.dbh_m = std::max(dbh_m, diameterAddingWood(life, dbh_m, wood_kg));
   // Height as the light and the site allow, never past the species' maximum; and a metre
   // of height needs new wood: at most maxHeightDiameter metres per metre of new diameter,
   // so a tree that makes little wood falls behind its neighbours.

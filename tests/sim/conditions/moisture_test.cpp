@@ -6,6 +6,17 @@
 #include "terrain_support.hpp"
 
 namespace eco {
+namespace {
+
+// A bowl 20 m deep inside a rim at 100 m that slopes down to the map edge.
+Terrain bowlTerrain() {
+  return test::analyticTerrain(41, 41, 10, 10, [](double e, double n) {
+    double r = std::hypot(e - 200.0, n - 200.0);
+    return r < 100.0 ? 80.0 + 0.2 * r : 100.0 - 0.05 * (r - 100.0);
+  });
+}
+
+}  // namespace
 
 TEST(Moisture, FlatPlaneIsUniform) {
   Terrain flat = test::analyticTerrain(30, 30, 10, 10, [](double, double) { return 250.0; });
@@ -61,11 +72,7 @@ TEST(Moisture, VValleyGathersFlowInItsLine) {
 }
 
 TEST(Moisture, PitsFillToTheirSpillLevel) {
-  // A bowl 20 m deep inside a rim at 100 m that slopes down to the map edge.
-  Terrain bowl = test::analyticTerrain(41, 41, 10, 10, [](double e, double n) {
-    double r = std::hypot(e - 200.0, n - 200.0);
-    return r < 100.0 ? 80.0 + 0.2 * r : 100.0 - 0.05 * (r - 100.0);
-  });
+  Terrain bowl = bowlTerrain();
   std::vector<double> filled = fillDepressions(bowl);
   const std::size_t centre = bowl.grid.index(20, 20);
   EXPECT_GT(filled[centre], 99.0);  // the pond reaches the rim
@@ -81,13 +88,10 @@ TEST(Moisture, PitsFillToTheirSpillLevel) {
 }
 
 TEST(Moisture, DrainedPitsAreAsMoistAsTheirWetnessIndexSays) {
-  // The bowl of the test above, drained (the default): no cell is held at the pond's F 9;
+  // The bowl, drained (the default): no cell is held at the pond's F 9;
   // every cell, in the bowl or outside it, has the climate's number plus a quarter unit per
   // unit of TWI, its catchment routed over the filled surface.
-  Terrain bowl = test::analyticTerrain(41, 41, 10, 10, [](double e, double n) {
-    double r = std::hypot(e - 200.0, n - 200.0);
-    return r < 100.0 ? 80.0 + 0.2 * r : 100.0 - 0.05 * (r - 100.0);
-  });
+  Terrain bowl = bowlTerrain();
   ASSERT_EQ(bowl.closedDepressions, ClosedDepressions::Drain);
   Field slope, aspect, moisture;
   computeSlopeAspect(bowl, slope, aspect);

@@ -7,6 +7,7 @@
 #include "model/lsystem/deriver.hpp"
 #include "model/lsystem/turtle.hpp"
 #include "model/strand_model.hpp"
+#include "model/tree_shaping.hpp"
 #include "model/wind.hpp"
 
 namespace eco {
@@ -33,6 +34,7 @@ void scaleSkeleton(TreeSkeleton& skeleton, float metresPerUnit) {
 void buildTreeInto(const Species& species, const TreeBuildOptions& options, TreeSkeleton& out) {
   if (species.generator == TreeGenerator::Strand) {
     buildStrandTreeInto(species, options, out);
+    pruneClearBole(out, options.clearBole);
     return;
   }
   ECO_ASSERT(species.lsystem.grammar, "species=" << species.name);
@@ -46,6 +48,7 @@ void buildTreeInto(const Species& species, const TreeBuildOptions& options, Tree
   // RL-systems have no wind of their own: EcoMod's bends the finished skeleton.
   assignSwayPhases(out, options.seed);
   applyWind(out, windOf(species, options));
+  pruneClearBole(out, options.clearBole);
 }
 
 TreeSkeleton buildTree(const Species& species, const TreeBuildOptions& options) {

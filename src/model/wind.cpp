@@ -17,6 +17,14 @@ Wind windOf(const Species& species, const TreeBuildOptions& options) {
   wind.directed_wg = options.windDirected.value_or(p.directed_wg);
   wind.undirected_ws = options.windUndirected.value_or(p.undirected_ws);
   wind.direction = options.windDirection.value_or(p.direction);
+  if (options.lean != glm::dvec2(0.0)) {  // the site's shaping turns the directed vector
+    glm::dvec3 directed = glm::length(wind.direction) > 0.0
+                              ? glm::normalize(wind.direction) * wind.directed_wg
+                              : glm::dvec3(0.0);
+    directed += glm::dvec3(options.lean.x, 0.0, options.lean.y);
+    wind.directed_wg = glm::length(directed);
+    wind.direction = directed;
+  }
   wind.flexibility = p.flexibility;
   wind.time = options.windTime;
   return wind;

@@ -64,6 +64,7 @@ Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
       species_(std::move(species)),
       settings_(settings),
       light_(terrain.grid, terrainLightOf(fields)),
+      windiness_(fields.windiness),
       seeds_(terrain.grid, livesOf(species_), mapDownwindOf(settings.windFrom_deg)),
       regenerationX_(static_cast<int>(
           std::ceil(terrain.grid.width * terrain.grid.dx_m / kRegenerationCell_m))),
@@ -84,6 +85,12 @@ void Ecosystem::restore(EcosystemState state) {
 
 double Ecosystem::lightAt(double east_m, double north_m, double height_m) const {
   return light_.lightAt(east_m, north_m, height_m);
+}
+
+std::vector<PlantSite> Ecosystem::sitesOf(const Plants& plants) const {
+  // Before the first year there is no canopy: every site is neutral.
+  if (!lightComputed_) return std::vector<PlantSite>(plants.size());
+  return plantSites(plants, light_, terrain_.grid, windiness_, settings_.windFrom_deg);
 }
 
 std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
@@ -207,6 +214,7 @@ void Ecosystem::computeLight() {
     crownFoliage_kg_[crownOfPlant_[i]] = static_cast<float>(foliage.foliage_kg);
   });
   light_.compute(crowns_);
+  lightComputed_ = true;
 }
 
 void Ecosystem::grow() {
@@ -247,9 +255,11 @@ void Ecosystem::grow() {
                  {suitability, response, p.growthFactor[i],
                   agingFactor(life, p.height_m[i], p.age_years[i])});
     carbonDeficit_[i] = static_cast<float>(year.carbonDeficit());
-    // The branches this year's light left below the compensation point die.
-    const double pruned = light_.heightWithLight(p.east_m[i], p.north_m[i], p.crownBase_m[i],
-                                                 p.height_m[i], leafCompensationLight(life));
+    // The branches that this year's light beside the crown left below the compensation point
+    // die.
+    const double pruned = light_.heightWithSideLight(
+        p.east_m[i], p.north_m[i], LightGrid::beyondCrown_m(p.crownRadius_m[i]), p.crownBase_m[i],
+        p.height_m[i], leafCompensationLight(life));
     p.crownBase_m[i] = static_cast<float>(std::min(std::max<double>(p.crownBase_m[i], pruned),
                                                    (1.0 - kMinCrownShare) * year.height_m));
     p.dbh_m[i] = static_cast<float>(year.dbh_m);

@@ -24,6 +24,7 @@
 #include "sim/conditions/conditions.hpp"
 #include "sim/ecology/dispersal.hpp"
 #include "sim/ecology/light_grid.hpp"
+#include "sim/ecology/plant_site.hpp"
 #include "sim/ecology/plants.hpp"
 #include "sim/ecology/species_ecology.hpp"
 #include "sim/scenario.hpp"
@@ -108,6 +109,10 @@ class Ecosystem {
   // The light (fraction of open level ground's) at a height above the ground, under this
   // year's canopy.
   double lightAt(double east_m, double north_m, double height_m) const;
+  // The light and wind that shape the form of each of these plants (plant_site.hpp), under
+  // this year's canopy, for plants of this ecosystem's map (its own, or the trees a thinning
+  // removed this year); before the first step (no canopy yet) all neutral.
+  std::vector<PlantSite> sitesOf(const Plants& plants) const;
 
   const EcosystemState& state() const { return state_; }
   void restore(EcosystemState state);
@@ -124,6 +129,8 @@ class Ecosystem {
   std::vector<EcosystemSpecies> species_;
   EcosystemSettings settings_;
   LightGrid light_;
+  bool lightComputed_ = false;  // the light grid holds a year's canopy
+  Field windiness_;             // the conditions', for the plants' sites
   SeedMap seeds_;
   int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;

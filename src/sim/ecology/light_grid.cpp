@@ -1,6 +1,7 @@
 #include "sim/ecology/light_grid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -159,7 +160,10 @@ double LightGrid::absorbedInTheOpen(const CrownShape& crown) {
 }
 
 double LightGrid::lightAt(double east_m, double north_m, double height_m) const {
-  const long column = columnAt(east_m, north_m);
+  return lightInColumn(columnAt(east_m, north_m), height_m);
+}
+
+double LightGrid::lightInColumn(long column, double height_m) const {
   // The last crown whose top is above the height sets the light there.
   const Layer* begin = layersBegin(column);
   const Layer* end = layersEnd(column);
@@ -178,17 +182,32 @@ double LightGrid::skyLightAt(double east_m, double north_m) const {
   return topLight_[columnAt(east_m, north_m)];
 }
 
-double LightGrid::heightWithLight(double east_m, double north_m, double from_m, double top_m,
-                                  double light) const {
-  const long column = columnAt(east_m, north_m);
-  if (topLight_[column] < light) return top_m;
-  // Light falls going down the profile: find the first crown that leaves less than `light`;
-  // everything below its top is darker.
-  for (const Layer* layer = layersBegin(column); layer != layersEnd(column); ++layer) {
-    if (layer->lightBelow >= light) continue;
-    return std::clamp(static_cast<double>(layer->top_m), from_m, top_m);
-  }
-  return from_m;
+double LightGrid::beyondCrown_m(double crownRadius_m) {
+  return crownRadius_m + kLightColumn_m * std::numbers::sqrt2;
+}
+
+double LightGrid::heightWithSideLight(double east_m, double north_m, double reach_m, double from_m,
+                                      double top_m, double light) const {
+  const std::array<long, 4> columns{
+      columnAt(east_m + reach_m, north_m), columnAt(east_m, north_m + reach_m),
+      columnAt(east_m - reach_m, north_m), columnAt(east_m, north_m - reach_m)};
+  auto sideLightAt = [&](double height_m) {
+    double sum = 0.0;
+    for (const long column : columns) sum += lightInColumn(column, height_m);
+    return 0.25 * sum;
+  };
+  if (sideLightAt(from_m) >= light) return from_m;
+  // The side light rises with height only at the crown tops of the four columns: the first
+  // of those above `from_m` where it suffices is the answer.
+  static thread_local std::vector<float> tops;
+  tops.clear();
+  for (const long column : columns)
+    for (const Layer* layer = layersBegin(column); layer != layersEnd(column); ++layer)
+      if (layer->top_m > from_m && layer->top_m < top_m) tops.push_back(layer->top_m);
+  std::sort(tops.begin(), tops.end());
+  for (const float top : tops)
+    if (sideLightAt(top) >= light) return top;
+  return top_m;
 }
 
 }  // namespace eco

@@ -51,10 +51,15 @@ class LightGrid {
   // The same on the ground, below every crown, and above them all (the terrain's light).
   double groundLightAt(double east_m, double north_m) const;
   double skyLightAt(double east_m, double north_m) const;
-  // The lowest height in [from_m, top_m] at the stem's column where the light reaches at
-  // least `light` (crown pruning); `top_m` if none below it does.
-  double heightWithLight(double east_m, double north_m, double from_m, double top_m,
-                         double light) const;
+  // The lowest height in [from_m, top_m] where the light beside a crown -- the mean over
+  // the four columns `reach_m` east, north, west and south of the stem -- reaches at least
+  // `light` (crown pruning: a lower branch lives on the light that comes in from the side
+  // and from above, not on what its own crown lets through); `top_m` if none below it does.
+  double heightWithSideLight(double east_m, double north_m, double reach_m, double from_m,
+                             double top_m, double light) const;
+  // How far from its stem a crown's light columns lie beyond its own footprint: a column's
+  // far corner is its side times sqrt 2 from its near side.
+  static double beyondCrown_m(double crownRadius_m);
 
   int columnsX() const { return columnsX_; }
   int columnsY() const { return columnsY_; }
@@ -71,6 +76,7 @@ class LightGrid {
   };
   void footprint(const CrownShape& crown, std::vector<Footprint>& out) const;
   long columnAt(double east_m, double north_m) const;
+  double lightInColumn(long column, double height_m) const;
   // The column's profile, tallest crown first.
   const Layer* layersBegin(long column) const { return layers_.data() + columnStart_[column]; }
   const Layer* layersEnd(long column) const { return layers_.data() + columnStart_[column + 1]; }

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
@@ -25,7 +26,7 @@ constexpr const char* kStatsHeader =
     "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,qmd_cm,"
     "dominant_height_m,sdi,volume_m3_per_ha,cover_fraction,densest_hectare_basal_area_m2_per_ha,"
     "planted,died_after_planting,removed,removed_volume_m3_per_ha";
-constexpr std::size_t kTreesColumns = 12;
+constexpr std::size_t kTreesColumns = 16, kTreesColumnsWithoutSite = 12;
 
 std::string fileText(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -62,6 +63,12 @@ std::string treeRowFault(const TreeRow& tree, std::string_view species) {
     return fmt::format("dbh {} m is not between 0 and {} m", tree.dbh_m, 0.05f * kTallest_m);
   if (!(tree.vigor >= 0.0f && tree.vigor <= 1.0f))
     return fmt::format("vigor {} is not between 0 and 1", tree.vigor);
+  // Lengths of at most 1, with room for the file's two decimals.
+  constexpr float kLongest = 1.01f;
+  if (glm::length(tree.site.light) > kLongest)
+    return fmt::format("light ({}, {}) is longer than 1", tree.site.light.x, tree.site.light.y);
+  if (glm::length(tree.site.wind) > kLongest)
+    return fmt::format("wind ({}, {}) is longer than 1", tree.site.wind.x, tree.site.wind.y);
   return {};
 }
 
@@ -206,11 +213,14 @@ StatsFile readStatsCsv(const std::filesystem::path& file) {
 }
 
 void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem) {
-  writeTreesCsv(file, ecosystem.plants(), ecosystem.species());
+  writeTreesCsv(file, ecosystem.plants(), ecosystem.sitesOf(ecosystem.plants()),
+                ecosystem.species());
 }
 
 void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
+                   const std::vector<PlantSite>& sites,
                    const std::vector<EcosystemSpecies>& species) {
+  ECO_ASSERT(sites.size() == p.size(), "a site per plant");
   // Formatted in parallel chunks and written in order, a batch of chunks at a time: a
   // landscape's 50 million rows would otherwise be gigabytes of text in memory at once.
   constexpr std::size_t kRowsPerChunk = 16384, kChunksPerBatch = 64;
@@ -223,13 +233,15 @@ void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
       text.clear();
       const std::size_t begin = std::min(p.size(), first + c * kRowsPerChunk);
       const std::size_t end = std::min(p.size(), begin + kRowsPerChunk);
-      text.reserve((end - begin) * 96);
+      text.reserve((end - begin) * 120);
       for (std::size_t i = begin; i < end; ++i)
         fmt::format_to(std::back_inserter(text),
-                       "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.4f},{:.3f},{}\n",
+                       "{},{},{:.3f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.4f},{:.3f},{},"
+                       "{:.2f},{:.2f},{:.2f},{:.2f}\n",
                        p.id[i], species[p.species[i]].species.name, p.east_m[i], p.north_m[i],
                        p.ground_m[i], p.age_years[i], p.height_m[i], p.crownRadius_m[i],
-                       p.crownBase_m[i], p.dbh_m[i], p.vigor[i], p.variantSeed[i]);
+                       p.crownBase_m[i], p.dbh_m[i], p.vigor[i], p.variantSeed[i], sites[i].light.x,
+                       sites[i].light.y, sites[i].wind.x, sites[i].wind.y);
     });
     for (const std::string& text : chunks) out.write(text);
   }
@@ -241,27 +253,33 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
   TreeSnapshot snapshot;
   std::unordered_map<std::string, int> speciesIndex;
   int lines = 0;
+  std::size_t columns = kTreesColumns;
   forEachLine(text, [&](int line, std::string_view row) {
     lines = line;
     if (line == 1) {
-      if (row != kTreesCsvHeader)
+      if (row == kTreesCsvHeaderWithoutSite)
+        columns = kTreesColumnsWithoutSite;
+      else if (row != kTreesCsvHeader)
         throw InputError({file.string(), 1, ""},
                          fmt::format("not a trees file: the header must be '{}'", kTreesCsvHeader));
       return;
     }
     if (row.empty()) return;
     std::string_view fields[kTreesColumns];
-    const std::size_t count = splitFields(row, fields);
+    const std::size_t count = splitFields(row, std::span(fields, columns));
     TreeRow tree;
-    bool ok = count == kTreesColumns && parseField(fields[0], tree.id) &&
+    bool ok = count == columns && parseField(fields[0], tree.id) &&
               parseField(fields[2], tree.east_m) && parseField(fields[3], tree.north_m) &&
               parseField(fields[4], tree.ground_m) && parseField(fields[5], tree.age_years) &&
               parseField(fields[6], tree.height_m) && parseField(fields[7], tree.crownRadius_m) &&
               parseField(fields[8], tree.crownBase_m) && parseField(fields[9], tree.dbh_m) &&
               parseField(fields[10], tree.vigor) && parseField(fields[11], tree.variantSeed) &&
               !fields[1].empty();
+    if (ok && columns == kTreesColumns)
+      ok = parseField(fields[12], tree.site.light.x) && parseField(fields[13], tree.site.light.y) &&
+           parseField(fields[14], tree.site.wind.x) && parseField(fields[15], tree.site.wind.y);
     std::uint64_t wideSeed = 0;
-    if (!ok && count == kTreesColumns && !parseField(fields[11], tree.variantSeed) &&
+    if (!ok && count == columns && !parseField(fields[11], tree.variantSeed) &&
         parseField(fields[11], wideSeed))
       throw InputError({file.string(), line, "variant_seed"},
                        "a seed beyond 32 bits, as earlier builds of ecoforest wrote them: run "
@@ -269,7 +287,8 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
     if (!ok)
       throw InputError(
           {file.string(), line, ""},
-          fmt::format("expected {} comma-separated numbers: {}", kTreesColumns, kTreesCsvHeader));
+          fmt::format("expected {} comma-separated numbers: {}", columns,
+                      columns == kTreesColumns ? kTreesCsvHeader : kTreesCsvHeaderWithoutSite));
     if (const std::string fault = treeRowFault(tree, fields[1]); !fault.empty())
       throw InputError({file.string(), line, ""}, fault);
     auto [it, added] = speciesIndex.try_emplace(std::string(fields[1]),

@@ -70,8 +70,14 @@ struct StatsFile {
 // with those as 0; a missing column, a bad number or species name is an InputError at its line.
 StatsFile readStatsCsv(const std::filesystem::path& file);
 
-// A snapshot: one row per living plant, under this header.
+// A snapshot: one row per living plant, under this header. The last four columns are the
+// plant's site as it shapes the tree (plant_site.hpp): toward the light and toward where the
+// wind blows, east and north, each of length 0..1.
 inline constexpr const char* kTreesCsvHeader =
+    "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,variant_seed,"
+    "light_east,light_north,wind_east,wind_north";
+// Snapshots of earlier versions, without the site: they read as unshaped trees.
+inline constexpr const char* kTreesCsvHeaderWithoutSite =
     "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,variant_seed";
 struct TreeRow {
   std::uint64_t id = 0;
@@ -80,6 +86,7 @@ struct TreeRow {
   int age_years = 0;
   float height_m = 0.0f, crownRadius_m = 0.0f, crownBase_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
   std::uint32_t variantSeed = 0;
+  PlantSite site;
 };
 
 struct TreeSnapshot {
@@ -88,9 +95,12 @@ struct TreeSnapshot {
   std::vector<TreeRow> trees;
 };
 
+// The ecosystem's plants after a step, with their sites under this year's canopy.
 void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem);
-// The same for any plants (the trees a thinning removed) of the ecosystem's species.
+// The same for any plants of the ecosystem's map and species (the trees a thinning removed),
+// with their sites, one per plant.
 void writeTreesCsv(const std::filesystem::path& file, const Plants& plants,
+                   const std::vector<PlantSite>& sites,
                    const std::vector<EcosystemSpecies>& species);
 // Parses one trees CSV; errors give the file and line.
 TreeSnapshot readTreesCsv(const std::filesystem::path& file);

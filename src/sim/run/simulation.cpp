@@ -252,7 +252,8 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
     const int year = ecosystem.year();
     plan.thinAtEndOf(year, done);
     if (done.removedPlants.size() > 0)
-      writeTreesCsv(run.removed(year), done.removedPlants, ecosystem.species());
+      writeTreesCsv(run.removed(year), done.removedPlants, ecosystem.sitesOf(done.removedPlants),
+                    ecosystem.species());
     std::vector<StatsRow> rows = statsOfYear(ecosystem, done);
     stats.insert(stats.end(), rows.begin(), rows.end());
     writeStatsCsv(run.stats(), stats, ecosystem.species());

@@ -211,6 +211,38 @@ TEST(Ecosystem, APlantedStandThinsItself) {
   EXPECT_LT(decades.back().basalArea_m2PerHa, 50.0);
 }
 
+// Crowding shapes the crown as a forester sees it: in a closed stand the lower branches of a
+// beech lose their light and die, so it carries a higher crown base over a longer clear bole
+// than a beech of the same age and height standing in the open, which keeps the open-grown
+// crown of its species (crown_ratio, iLand's 0.62 for beech) however its own crown shades
+// the ground beneath it.
+TEST(Ecosystem, ACrowdedTreeHasAHigherCrownBaseThanAnOpenGrownOne) {
+  const Terrain terrain =
+      test::analyticTerrain(20, 10, 10.0, 10.0, [](double, double) { return 500.0; });
+  const ConditionFields fields = test::uniformConditions(terrain);
+  Ecosystem ecosystem(terrain, fields, {test::inEcosystem(test::shippedSpecies("beech"), fields)},
+                      settings());
+  for (double north = 20.0; north < 80.0; north += 5.0)
+    for (double east = 10.0; east < 70.0; east += 5.0) ecosystem.plant(0, east, north, 80);
+  ecosystem.plant(0, 170.0, 50.0, 80);  // 100 m from the stand
+  for (int year = 0; year < 5; ++year) ecosystem.step();
+  const Plants& p = ecosystem.plants();
+  std::size_t lone = p.size();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.age_years[i] == 85 && p.east_m[i] > 150.0f) lone = i;
+  ASSERT_LT(lone, p.size());
+  const float height = p.height_m[lone];
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.age_years[i] != 85 || std::abs(p.north_m[i] - 50.0f) > 12.0f ||
+        std::abs(p.east_m[i] - 40.0f) > 12.0f)
+      continue;  // the stand's inner trees
+    EXPECT_NEAR(p.height_m[i], height, 0.15f * height);
+    EXPECT_GT(p.crownBase_m[i], p.crownBase_m[lone] + 0.3f * height) << i;
+  }
+  const double openGrown = 1.0 - test::shippedSpecies("beech").ecology.life.crownRatio;
+  EXPECT_NEAR(p.crownBase_m[lone], openGrown * height, 0.05 * height);
+}
+
 // Liebig's law of the minimum (the EcoMod paper: "a single inconvenient living condition can
 // fully stop the prosperity of some tree"): each condition at beech's zero point, the others
 // at their best, lets no seed establish and no planted tree or sapling live 20 years.

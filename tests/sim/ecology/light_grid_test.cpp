@@ -52,11 +52,22 @@ TEST(LightGrid, TheTallerCrownTakesItsLightFirst) {
   EXPECT_DOUBLE_EQ(m.light.skyLightAt(20.0, 20.0), 1.0);
   // The neighbouring column is untouched.
   EXPECT_DOUBLE_EQ(m.light.lightAt(30.0, 20.0, 1.0), 1.0);
-  // Crown pruning: the lowest height with at least this much light.
-  EXPECT_DOUBLE_EQ(m.light.heightWithLight(20.0, 20.0, 0.0, 20.0, leftInColumn - 0.01), 10.0);
-  EXPECT_DOUBLE_EQ(m.light.heightWithLight(20.0, 20.0, 0.0, 20.0, 0.01), 0.0);
-  EXPECT_DOUBLE_EQ(m.light.heightWithLight(20.0, 20.0, 0.0, 20.0, leftInColumn + 0.01), 20.0);
-  EXPECT_DOUBLE_EQ(m.light.heightWithLight(20.0, 20.0, 0.0, 30.0, 0.99), 20.0);
+  // Crown pruning: the lowest height with at least this much light beside a crown, the
+  // mean of four columns. A stem 5 m east of these crowns has three open columns beside it
+  // and theirs to the west.
+  const double bottom = m.light.lightAt(20.0, 20.0, 1.0);
+  auto side = [&](double light) {
+    return m.light.heightWithSideLight(25.0, 20.0, 5.0, 0.0, 30.0, light);
+  };
+  EXPECT_DOUBLE_EQ(side((3.0 + bottom) / 4.0 - 0.001), 0.0);
+  EXPECT_DOUBLE_EQ(side((3.0 + leftInColumn) / 4.0 - 0.001), 10.0);
+  EXPECT_DOUBLE_EQ(side((3.0 + leftInColumn) / 4.0 + 0.001), 20.0);
+  EXPECT_DOUBLE_EQ(side(1.01), 30.0);
+  // The crowns over a stem's own column do not prune it: its sides are open.
+  EXPECT_DOUBLE_EQ(m.light.heightWithSideLight(20.0, 20.0, 5.0, 0.0, 30.0, 0.99), 0.0);
+  // Pruning never goes back down: the search starts at the crown base it is given.
+  EXPECT_DOUBLE_EQ(m.light.heightWithSideLight(25.0, 20.0, 5.0, 12.0, 30.0, 0.01), 12.0);
+  EXPECT_DOUBLE_EQ(LightGrid::beyondCrown_m(2.0), 2.0 + kLightColumn_m * std::numbers::sqrt2);
 }
 
 TEST(LightGrid, AColumnNeverGivesMoreLightThanReachesIt) {

@@ -129,8 +129,9 @@ TEST_F(OneHectare, CsvFilesHaveTheDocumentedColumns) {
   const std::string trees = test::readFile(folder / "trees.csv");
   EXPECT_EQ(trees.substr(0, trees.find('\n')),
             "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,"
-            "variant_seed");
+            "variant_seed,light_east,light_north,wind_east,wind_north");
   EXPECT_NE(trees.find("\n1,t,12.000,33.000,50.000,40,"), std::string::npos) << trees;
+  EXPECT_NE(trees.find(",0.00,0.00,0.00,0.00\n"), std::string::npos) << trees;  // no year yet
   const std::string stats = test::readFile(folder / "stats.csv");
   EXPECT_EQ(stats.substr(0, stats.find('\n')),
             "year,species,alive,born,died,mean_height_m,stems_per_ha,basal_area_m2_per_ha,qmd_cm,"
@@ -181,8 +182,10 @@ TEST_F(OneHectare, TheStatsReaderReadsWhatTheWriterWrote) {
 TEST_F(OneHectare, TheTreesReaderReadsWhatTheWriterWrote) {
   ecosystem.plant(0, 12.0, 33.0, 40);
   ecosystem.plant(0, 71.5, 8.25, 3);
+  ecosystem.step();  // the sites are under a year's canopy
   const auto file = test::freshDirectory("run_format_trees") / "year_0001.csv";
   writeTreesCsv(file, ecosystem);
+  const std::vector<PlantSite> sites = ecosystem.sitesOf(ecosystem.plants());
   const TreeSnapshot snapshot = readTreesCsv(file);
   const Plants& p = ecosystem.plants();
   ASSERT_EQ(snapshot.trees.size(), p.size());
@@ -195,6 +198,38 @@ TEST_F(OneHectare, TheTreesReaderReadsWhatTheWriterWrote) {
     EXPECT_EQ(row.age_years, p.age_years[i]);
     EXPECT_NEAR(row.height_m, p.height_m[i], 5e-4);
     EXPECT_EQ(row.variantSeed, p.variantSeed[i]);
+    EXPECT_NEAR(row.site.light.x, sites[i].light.x, 5e-3);
+    EXPECT_NEAR(row.site.light.y, sites[i].light.y, 5e-3);
+    EXPECT_NEAR(row.site.wind.x, sites[i].wind.x, 5e-3);
+    EXPECT_NEAR(row.site.wind.y, sites[i].wind.y, 5e-3);
+  }
+}
+
+// The site columns (light and wind toward east and north) read back; a file of an earlier
+// version without them reads as unshaped trees (the tests above); a direction longer than 1
+// is refused at its line.
+TEST(RunFormat, TheSiteColumnsReadBackAndAreChecked) {
+  const auto file = test::freshDirectory("run_format_site") / "year_0010.csv";
+  const std::string header = std::string(kTreesCsvHeader) + "\n";
+  test::writeFile(file, header +
+                            "7,pine,10.5,20.25,412,12,6.5,1.2,2.5,0.08,0.9,123,"
+                            "0.60,-0.25,0.00,0.71\n");
+  const TreeSnapshot s = readTreesCsv(file);
+  ASSERT_EQ(s.trees.size(), 1u);
+  EXPECT_FLOAT_EQ(s.trees[0].site.light.x, 0.6f);
+  EXPECT_FLOAT_EQ(s.trees[0].site.light.y, -0.25f);
+  EXPECT_FLOAT_EQ(s.trees[0].site.wind.y, 0.71f);
+  for (const char* row : {"7,pine,10.5,20.25,412,12,6.5,1.2,2.5,0.08,0.9,123,0.9,0.9,0,0",
+                          "7,pine,10.5,20.25,412,12,6.5,1.2,2.5,0.08,0.9,123,0,0,1.2,0",
+                          "7,pine,10.5,20.25,412,12,6.5,1.2,2.5,0.08,0.9,123,0,0,0",
+                          "7,pine,10.5,20.25,412,12,6.5,1.2,2.5,0.08,0.9,123"}) {
+    test::writeFile(file, header + row + "\n");
+    try {
+      readTreesCsv(file);
+      ADD_FAILURE() << row;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().line, 2) << row;
+    }
   }
 }
 
@@ -208,7 +243,7 @@ TEST_F(OneHectare, ALargeSnapshotIsWrittenInBatchesInOrder) {
     p.age_years[i] = static_cast<std::int32_t>(i % 97);
   }
   const auto file = test::freshDirectory("run_format_batches") / "year_0001.csv";
-  writeTreesCsv(file, p, ecosystem.species());
+  writeTreesCsv(file, p, std::vector<PlantSite>(n), ecosystem.species());
   const TreeSnapshot snapshot = readTreesCsv(file);
   ASSERT_EQ(snapshot.trees.size(), n);
   for (std::size_t i = 0; i < n; ++i) {

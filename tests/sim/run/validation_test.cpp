@@ -94,7 +94,7 @@ checked_ages = {}
     run.scenario = loadScenario(dir / "scenario.toml");
     // Year 60: 289 cohort trees of 30 cm (400 per ha); year 120: 95 of 52.4 cm (131 per ha).
     for (auto [year, count, dbh] : {std::tuple{60, 289, 0.30}, {120, 95, 0.524}}) {
-      std::string rows = std::string(kTreesCsvHeader) + "\n";
+      std::string rows = std::string(kTreesCsvHeaderWithoutSite) + "\n";
       for (int i = 0; i < count; ++i)
         rows += fmt::format("{},beech,{},{},0,{},30,4,15,{},0.5,1\n", i + 1, i % 100, i / 100, year,
                             dbh);

@@ -25,6 +25,7 @@ struct ExportArgs {
   double minHeight_m = 0.0;
   bool wind = false;
   bool billboards = false;
+  bool noShaping = false;
   std::size_t maxTriangles = 0;
 };
 
@@ -69,7 +70,7 @@ void runExport(const ExportArgs& args) {
   source.requireSnapshot(year);
   if (geojson) return exportTreesGeoJson(args, source, year);
   const TreeSnapshot snapshot = snapshotToExport(args, source, year);
-  source.buildLibrary();
+  source.buildLibrary(LibrarySettings::shaped(!args.noShaping));
   const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
   // Billboards are pictures of the trees: the renderer bakes them, headless.
   std::optional<Billboards> billboards;
@@ -137,6 +138,8 @@ void addExportCommand(CLI::App& app) {
   command->add_flag("--wind", args->wind,
                     "Add the wind bases as vertex attributes (_SWAY_SIN, _SWAY_COS, _BEND_EAST, "
                     "_BEND_SOUTH) for an engine's vertex shader");
+  command->add_flag("--no-shaping", args->noShaping,
+                    "Trees as their species' own, not shaped by light, wind and crowding");
   command->callback([args] { runExport(*args); });
 }
 

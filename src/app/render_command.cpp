@@ -66,7 +66,8 @@ void runRender(const RenderArgs& args) {
   std::optional<Field> overlay;
   if (!args.view.overlay.empty()) overlay = source.overlay(args.view.overlay);
   checkCameraOption(args.view);
-  if (source.run || args.demoTrees > 0) source.buildLibrary();
+  if (source.run || args.demoTrees > 0)
+    source.buildLibrary(LibrarySettings::shaped(source.run.has_value() && !args.view.noShaping));
   const Forest forest = source.forestOf(year, args.demoTrees);
   const Camera camera = cameraFrom(args.view, source.terrain, &forest, source.library.get());
 

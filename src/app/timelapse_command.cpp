@@ -86,7 +86,7 @@ void runTimelapse(const TimelapseArgs& args) {
 
   std::unique_ptr<FrameSink> sink =
       mp4 ? mp4Sink(out, settings.frame, settings.fps) : pngFolderSink(out);
-  source.buildLibrary();
+  source.buildLibrary(LibrarySettings::shaped(!args.view.noShaping));
   HeadlessGl gl;
   SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg, source.library.get(),
                          impostorSettingsFor(args.view.quality));

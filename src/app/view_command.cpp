@@ -78,7 +78,8 @@ void runView(const ViewArgs& args) {
     state.overlayName = args.view.overlay;
     state.showOverlay = true;
   }
-  if (source.run || args.demoTrees > 0) source.buildLibrary();
+  if (source.run || args.demoTrees > 0)
+    source.buildLibrary(LibrarySettings::shaped(source.run.has_value() && !args.view.noShaping));
   std::vector<std::string> speciesNames;
   if (source.library)
     for (const Species& s : source.library->species()) speciesNames.push_back(s.name);

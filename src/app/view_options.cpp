@@ -57,6 +57,9 @@ void addFrameOptions(CLI::App& command, ViewOptions& o) {
   command.add_flag("--no-impostors", o.noImpostors,
                    "LOD2 meshes all the way out instead of impostors");
   command.add_flag("--no-shadows", o.noShadows, "No shadow map");
+  command.add_flag("--no-shaping", o.noShaping,
+                   "Draw a run's trees as their species' own, not shaped by light, wind and "
+                   "crowding");
 }
 
 void addCameraOptions(CLI::App& command, ViewOptions& o) {

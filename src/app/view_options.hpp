@@ -29,6 +29,7 @@ struct ViewOptions {
   RenderQuality quality = RenderQuality::High;
   int forceLevel = -1;  // -1: by size on screen
   bool noImpostors = false, noShadows = false;
+  bool noShaping = false;  // a run's trees upright and open-grown, not shaped by their sites
   // render and view only:
   std::string camera;             // X,Y,Z,YAW,PITCH
   std::string view = "overview";  // a camera preset
@@ -38,7 +39,7 @@ struct ViewOptions {
 // --size WIDTHxHEIGHT alone (the designer's window).
 void addSizeOption(CLI::App& command, FrameSize& size);
 // --size, --day, --hour, --wind-from, --wind-wg, --wind-ws, --quality, --level,
-// --no-impostors, --no-shadows: what every command that draws frames takes.
+// --no-impostors, --no-shadows, --no-shaping: what every command that draws frames takes.
 void addFrameOptions(CLI::App& command, ViewOptions& options);
 // --camera, --view, --wind-time, --overlay: the still and the window.
 void addCameraOptions(CLI::App& command, ViewOptions& options);

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include <fmt/format.h>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
@@ -33,11 +34,18 @@ int addTerrain(GltfBuilder& builder, const MeshPart& terrain) {
   return builder.addNode(std::move(node));
 }
 
-// The unit quaternion (x, y, z, w) of a tree's yaw: the renderer turns x toward z by yaw,
-// a rotation of -yaw about y.
-glm::vec4 yawRotation(float yaw_rad) {
-  const float half = -0.5f * yaw_rad;
-  return {0.0f, std::sin(half), 0.0f, std::cos(half)};
+// The unit quaternion (x, y, z, w) of a tree's turn: the renderer turns x toward z by yaw,
+// a rotation of -yaw about y; then the tilt turns the vertical toward its direction, about
+// the horizontal axis up x direction.
+glm::vec4 treeRotation(const ForestGltfTree& tree) {
+  const glm::quat yaw = glm::angleAxis(-tree.yaw_rad, glm::vec3(0.0f, 1.0f, 0.0f));
+  glm::quat q = yaw;
+  if (const float angle = glm::length(tree.tilt_rad); angle > 0.0f) {
+    const glm::vec3 axis = glm::normalize(
+        glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(tree.tilt_rad.x, 0.0f, tree.tilt_rad.y)));
+    q = glm::angleAxis(angle, axis) * yaw;
+  }
+  return {q.x, q.y, q.z, q.w};
 }
 
 // glTF accessors hold 32-bit integers at most.
@@ -68,7 +76,7 @@ tinygltf::Value::Object addInstancing(GltfBuilder& builder,
   add("TRANSLATION", addPerTree<glm::vec3>(builder, trees, kFloat, TINYGLTF_TYPE_VEC3,
                                            [](const Tree& t) { return t.translation; }));
   add("ROTATION", addPerTree<glm::vec4>(builder, trees, kFloat, TINYGLTF_TYPE_VEC4,
-                                        [](const Tree& t) { return yawRotation(t.yaw_rad); }));
+                                        [](const Tree& t) { return treeRotation(t); }));
   add("SCALE", addPerTree<glm::vec3>(builder, trees, kFloat, TINYGLTF_TYPE_VEC3,
                                      [](const Tree& t) { return t.scale; }));
   add("_ID", addPerTree<std::uint32_t>(builder, trees, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
@@ -96,7 +104,7 @@ tinygltf::Value::Object addInstancing(GltfBuilder& builder,
 // reads back to the same float.
 void appendTreeNode(std::string& out, const ForestGltfTree& tree, std::string_view species,
                     int mesh) {
-  const glm::vec4 q = yawRotation(tree.yaw_rad);
+  const glm::vec4 q = treeRotation(tree);
   const glm::vec3 t = tree.translation, s = tree.scale;
   // Ids past a 32-bit int as a real number: readers such as tinygltf parse integers into int.
   const std::string id = tree.id <= static_cast<std::uint64_t>(std::numeric_limits<int>::max())

@@ -30,6 +30,9 @@ namespace eco {
 struct ForestGltfTree {
   glm::vec3 translation{0.0f};  // stem base
   float yaw_rad = 0.0f;         // turn of x toward z about the vertical
+  // The site's lean as a rigid tilt about the stem base, after the yaw: toward (x east,
+  // z south), by its length in radians.
+  glm::vec2 tilt_rad{0.0f};
   glm::vec3 scale{1.0f};
   std::uint64_t id = 0;
   float age_years = 0.0f, height_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;

@@ -53,11 +53,11 @@ void setTreeVertexLayout(GLuint vao) {
   for (GLuint a = 0; a < 8; ++a) glVertexArrayAttribBinding(vao, a, 0);
 }
 
-// Instance attributes 8-10 come from binding 1, one element per instance.
+// Instance attributes 8-11 come from binding 1, one element per instance.
 void setInstanceLayout(GLuint vao) {
-  for (GLuint a = 0; a < 3; ++a) {
+  for (GLuint a = 0; a < 4; ++a) {
     glEnableVertexArrayAttrib(vao, 8 + a);
-    glVertexArrayAttribFormat(vao, 8 + a, 4, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
+    glVertexArrayAttribFormat(vao, 8 + a, a < 3 ? 4 : 2, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec4));
     glVertexArrayAttribBinding(vao, 8 + a, 1);
   }
   glVertexArrayBindingDivisor(vao, 1, 1);
@@ -206,7 +206,8 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;
   RenderTarget target = RenderTarget::create(size, size, 2);
-  const Instance identity{glm::vec4(0.0f), glm::vec4(1.0f, 1.0f, 0.0f, 0.0f), glm::vec4(1.0f)};
+  const Instance identity{glm::vec4(0.0f), glm::vec4(1.0f, 1.0f, 0.0f, 0.0f), glm::vec4(1.0f),
+                          glm::vec2(0.0f)};
   glNamedBufferData(instances_.id(), sizeof(Instance), &identity, GL_DYNAMIC_DRAW);
   instanceCapacity_ = 1;
   glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
@@ -387,7 +388,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       staging_[bucket.first + bucket.count++] = {
           glm::vec4(forest.position[i], forest.yaw[i]),
           glm::vec4(scale * forest.scaleXZ[i], scale * forest.scaleY[i], lo, forest.phase[i]),
-          glm::vec4(forest.tint[i], hi)};
+          glm::vec4(forest.tint[i], hi), forest.lean[i] / static_cast<float>(kBendBasis_wg)};
     };
     if (choices_[i].level >= 0)
       forEachDraw(i, [&](int type, int level, float scale, float lo, float hi) {

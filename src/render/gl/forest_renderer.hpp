@@ -28,11 +28,12 @@
 
 namespace eco {
 
-// One tree instance as the shaders read it (attributes 8-10).
+// One tree instance as the shaders read it (attributes 8-11).
 struct InstanceAttributes {
   glm::vec4 positionYaw;  // stem base (world), yaw (radians)
   glm::vec4 scale;        // horizontal, vertical, lowest dither threshold kept, wind phase
   glm::vec4 tint;         // rgb; a: the dither thresholds kept end here (ditherKeeps)
+  glm::vec2 lean{0.0f};   // the site's lean (east, south) / kBendBasis_wg, through the bend bases
 };
 // A TreeVertex as the GPU holds it, 48 bytes instead of 80: the normal in 10-bit signed
 // components, the four wind bases in half floats (millimetres at the metre scale of the

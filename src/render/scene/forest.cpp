@@ -20,6 +20,7 @@ void Forest::reserve(std::size_t n) {
   scaleY.reserve(n);
   tint.reserve(n);
   phase.reserve(n);
+  lean.reserve(n);
   presence.reserve(n);
   blendType.reserve(n);
   blendWeight.reserve(n);
@@ -33,6 +34,7 @@ void Forest::append(const Forest& from, std::size_t i) {
   scaleY.push_back(from.scaleY[i]);
   tint.push_back(from.tint[i]);
   phase.push_back(from.phase[i]);
+  lean.push_back(from.lean[i]);
   presence.push_back(from.presence[i]);
   blendType.push_back(from.blendType[i]);
   blendWeight.push_back(from.blendWeight[i]);
@@ -46,6 +48,7 @@ void Forest::addAsBuilt(int typeIndex, glm::vec3 base) {
   scaleXZ.push_back(1.0f);
   tint.push_back(glm::vec3(1.0f));
   phase.push_back(0.0f);
+  lean.push_back(glm::vec2(0.0f));
   presence.push_back(1.0f);
   blendType.push_back(-1);
   blendWeight.push_back(0.0f);
@@ -71,6 +74,7 @@ void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, floa
   const glm::vec3 stressed(1.15f, 1.05f, 0.6f);
   tint.push_back(brightness * glm::mix(stressed, glm::vec3(1.0f), std::clamp(vigor, 0.0f, 1.0f)));
   phase.push_back(static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)));
+  lean.push_back(glm::vec2(0.0f));
   presence.push_back(1.0f);
   blendType.push_back(-1);
   blendWeight.push_back(0.0f);
@@ -96,14 +100,25 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
   const std::vector<int> librarySpecies = librarySpeciesOf(snapshot, library, where);
   Forest forest;
   forest.reserve(snapshot.trees.size());
+  const bool shaped = library.settings().shaping;
   for (const TreeRow& tree : snapshot.trees) {
     const int species = librarySpecies[tree.species];
-    const int type =
-        library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species));
+    const SiteShaping site = shaped ? siteShapingOf(tree) : SiteShaping{};
+    const int type = library.typeFor(species, tree.variantSeed, tree.height_m,
+                                     library.maxHeight_m(species), site.clearBole);
     forest.add(library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), tree.height_m,
                tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
+    forest.lean.back() = glm::vec2(shapingLean(site));
   }
   return forest;
+}
+
+SiteShaping siteShapingOf(const TreeRow& tree) {
+  SiteShaping site;
+  site.light = {tree.site.light.x, -tree.site.light.y};
+  site.wind = {tree.site.wind.x, -tree.site.wind.y};
+  site.clearBole = tree.height_m > 0.0f ? tree.crownBase_m / tree.height_m : 0.0;
+  return site;
 }
 
 Forest demoForest(const Terrain& terrain, const TreeLibrary& library, std::size_t count,

@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "model/tree_shaping.hpp"
 #include "render/scene/tree_library.hpp"
 #include "sim/run/run_folder.hpp"
 #include "sim/terrain.hpp"
@@ -22,6 +24,9 @@ struct Forest {
   std::vector<float> scaleY;        // vertical scale
   std::vector<glm::vec3> tint;      // multiplies the albedo
   std::vector<float> phase;         // wind time offset, so that trees sway out of step
+  // The site's lean (model/tree_shaping.hpp): a steady horizontal directed wind (x east,
+  // z south, w_g units) the shaders add through the type's bend bases. add() sets 0.
+  std::vector<glm::vec2> lean;
   // Growth between snapshots (time-lapse): the share of the tree's pixels drawn (a seedling
   // appearing, a dead tree fading), and a second type it is cross-fading into (the next age
   // class) with that type's share. add() sets 1, -1, 0: a whole tree of one type.
@@ -46,9 +51,14 @@ std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrar
                                   const std::string& where);
 
 // Every plant of a snapshot; species are matched to the library by name. An InputError
-// names a species the library does not have.
+// names a species the library does not have. In a library with shaping (LibrarySettings),
+// each tree is drawn by its crown class and leans as its site says.
 Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
                           const std::string& where);
+
+// The model's shaping of a snapshot's tree: its light and wind turned into the tree frame
+// (east, south), and the share of its height below the crown base.
+SiteShaping siteShapingOf(const TreeRow& tree);
 
 // `count` trees spread uniformly over the terrain with species drawn evenly and heights from
 // seedlings to mature (the terrain-with-trees view of a scenario without a run).

@@ -1,8 +1,10 @@
 #include "render/scene/forest_export.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 #include "core/error.hpp"
 #include "core/frames.hpp"
@@ -121,6 +123,31 @@ TreeMesh billboardMesh(const TreeType& type, int frames) {
   return mesh;
 }
 
+namespace {
+
+// How far a type's foliage moves sideways per unit of lean through its bend bases, relative
+// to its height above the stem base (the tangent of its lean per w_g): the mean of the east
+// bend over LOD0's leaf vertices over their mean height.
+float crownShiftPerLean(const TreeType& type) {
+  double shift = 0.0, height = 0.0;
+  for (const WindPart& part : type.meshes.lods[0].parts) {
+    if (part.material == MaterialKind::Bark) continue;
+    for (const TreeVertex& v : part.vertices) shift += v.bendEast.x, height += v.position.y;
+  }
+  return height > 0.0 ? static_cast<float>(shift / height / kBendBasis_wg) : 0.0f;
+}
+
+// A glTF node cannot bend as the renderer's vertex shader does: the lean becomes a rigid
+// tilt of the tree that moves its foliage's centre as far (an instance's scale stretches
+// the shift sideways and the height up).
+glm::vec2 tiltOf(glm::vec2 lean, float shiftPerLean, float scaleXZ, float scaleY) {
+  const float length = glm::length(lean);
+  if (length <= 0.0f || shiftPerLean <= 0.0f) return glm::vec2(0.0f);
+  return lean / length * std::atan(length * shiftPerLean * scaleXZ / scaleY);
+}
+
+}  // namespace
+
 ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& library,
                                 const Forest& forest, const std::vector<TreeRow>& rows,
                                 const ForestGltfOptions& options, const Billboards* billboards) {
@@ -144,8 +171,12 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
     if (members[t].empty()) continue;
     const TreeType& type = types[t];
     ForestGltfType& out = scene.types.emplace_back();
-    out.name = library.species()[type.species].name + "_variant" + std::to_string(type.variant) +
-               "_age" + std::to_string(type.ageClass);
+    out.name =
+        library.species()[type.species].name + "_variant" + std::to_string(type.variant) + "_age" +
+        std::to_string(type.ageClass) +
+        (library.settings().clearBoleClasses.size() > 1 ? "_crown" + std::to_string(type.crownClass)
+                                                        : std::string());
+    const float leanShift = crownShiftPerLean(type);
     out.species = type.species;
     const bool everyLevel = options.lod == kAllLods || options.maxTriangles > 0;
     for (int level = 0; level < kLodCount; ++level)
@@ -162,14 +193,16 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
     out.trees.reserve(members[t].size());
     for (std::size_t i : members[t]) {
       const TreeRow& row = rows[i];
-      out.trees.push_back({.translation = forest.position[i],
-                           .yaw_rad = forest.yaw[i],
-                           .scale = {forest.scaleXZ[i], forest.scaleY[i], forest.scaleXZ[i]},
-                           .id = row.id,
-                           .age_years = static_cast<float>(row.age_years),
-                           .height_m = row.height_m,
-                           .dbh_m = row.dbh_m,
-                           .vigor = row.vigor});
+      out.trees.push_back(
+          {.translation = forest.position[i],
+           .yaw_rad = forest.yaw[i],
+           .tilt_rad = tiltOf(forest.lean[i], leanShift, forest.scaleXZ[i], forest.scaleY[i]),
+           .scale = {forest.scaleXZ[i], forest.scaleY[i], forest.scaleXZ[i]},
+           .id = row.id,
+           .age_years = static_cast<float>(row.age_years),
+           .height_m = row.height_m,
+           .dbh_m = row.dbh_m,
+           .vigor = row.vigor});
     }
   }
   if (options.maxTriangles > 0)

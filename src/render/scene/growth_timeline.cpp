@@ -22,15 +22,20 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
 
   Forest forest;
   forest.reserve(before.trees.size() + after.trees.size());
-  auto add = [&](const TreeRow& tree, int species, float height, float crown, float vigor,
-                 float presence) {
-    const TreeLibrary::Blend blend =
-        library.blendFor(species, tree.variantSeed, height, library.maxHeight_m(species));
+  // The site's shaping, as the later snapshot has it where there is one (a tree's site
+  // changes little in a few years; its form follows the later).
+  const bool shaped = library.settings().shaping;
+  auto add = [&](const TreeRow& tree, const TreeRow& shapedAs, int species, float height,
+                 float crown, float vigor, float presence) {
+    const SiteShaping site = shaped ? siteShapingOf(shapedAs) : SiteShaping{};
+    const TreeLibrary::Blend blend = library.blendFor(species, tree.variantSeed, height,
+                                                      library.maxHeight_m(species), site.clearBole);
     forest.add(library, blend.type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), height,
                crown, vigor, tree.variantSeed ^ tree.id);
     forest.blendType.back() = blend.blendType;
     forest.blendWeight.back() = blend.blendWeight;
     forest.presence.back() = presence;
+    forest.lean.back() = glm::vec2(shapingLean(site));
   };
 
   std::vector<char> matched(after.trees.size(), 0);
@@ -38,12 +43,13 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
     const int species = speciesBefore[tree.species];
     auto found = afterById.find(tree.id);
     if (found == afterById.end()) {  // died in between: fades out over the interval
-      if (f < 1.0f) add(tree, species, tree.height_m, tree.crownRadius_m, tree.vigor, 1.0f - f);
+      if (f < 1.0f)
+        add(tree, tree, species, tree.height_m, tree.crownRadius_m, tree.vigor, 1.0f - f);
       continue;
     }
     matched[found->second] = 1;
     const TreeRow& later = after.trees[found->second];
-    add(tree, species, glm::mix(tree.height_m, later.height_m, f),
+    add(tree, later, species, glm::mix(tree.height_m, later.height_m, f),
         glm::mix(tree.crownRadius_m, later.crownRadius_m, f), glm::mix(tree.vigor, later.vigor, f),
         1.0f);
   }
@@ -58,8 +64,9 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
     const double growing = after.year - established;
     const float g = growing > 0.0 ? static_cast<float>((year - established) / growing) : 1.0f;
     const float seedling = std::min(library.seedlingHeight_m(species), tree.height_m);
-    add(tree, species, glm::mix(seedling, tree.height_m, g), glm::mix(0.0f, tree.crownRadius_m, g),
-        tree.vigor, static_cast<float>(std::clamp(year - established, 0.0, 1.0)));
+    add(tree, tree, species, glm::mix(seedling, tree.height_m, g),
+        glm::mix(0.0f, tree.crownRadius_m, g), tree.vigor,
+        static_cast<float>(std::clamp(year - established, 0.0, 1.0)));
   }
   return forest;
 }

@@ -67,26 +67,30 @@ std::vector<LibrarySpecies> loadLibrarySpecies(const Scenario& scenario) {
 TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySettings& settings)
     : settings_(settings) {
   for (LibrarySpecies& s : species) species_.push_back(std::move(s.model));
-  ECO_ASSERT(settings.variants >= 1 && !settings.ageClasses.empty(),
-             "variants=" << settings.variants);
+  ECO_ASSERT(
+      settings.variants >= 1 && !settings.ageClasses.empty() && !settings.clearBoleClasses.empty(),
+      "variants=" << settings.variants);
   for (int s = 0; s < static_cast<int>(species_.size()); ++s)
     for (int v = 0; v < settings.variants; ++v)
-      for (int a = 0; a < static_cast<int>(settings.ageClasses.size()); ++a) {
-        TreeType& type = types_.emplace_back();
-        type.species = s;
-        type.variant = v;
-        type.ageClass = a;
-        type.seed = variantSeed(v);
-        type.age = settings.ageClasses[a];
-      }
+      for (int a = 0; a < static_cast<int>(settings.ageClasses.size()); ++a)
+        for (int c = 0; c < static_cast<int>(settings.clearBoleClasses.size()); ++c) {
+          TreeType& type = types_.emplace_back();
+          type.species = s;
+          type.variant = v;
+          type.ageClass = a;
+          type.crownClass = c;
+          type.seed = variantSeed(v);
+          type.age = settings.ageClasses[a];
+          type.clearBole = settings.clearBoleClasses[c];
+        }
   tbb::parallel_for(std::size_t{0}, types_.size(), [&](std::size_t i) {
     TreeType& type = types_[i];
     const Species& s = species_[type.species];
     TreeSkeleton rest;
-    type.meshes = buildWindLods(s, type.seed, type.age, &rest);
+    type.meshes = buildWindLods(s, type.seed, type.age, &rest, type.clearBole);
     const CrownShade shade(rest, s);  // LOD0's leaves shade every level alike
     for (WindMesh& lod : type.meshes.lods) shadeVertices(lod, shade);
-    type.impostorSource = typeIndex(type.species, 0, type.ageClass);
+    type.impostorSource = typeIndex(type.species, 0, type.ageClass, type.crownClass);
     measureType(type, measure(rest));
   });
   const int classes = static_cast<int>(settings.ageClasses.size());
@@ -130,36 +134,46 @@ void TreeLibrary::setType(int index, TreeType type) {
     types_[index] = std::move(type);
 }
 
-int TreeLibrary::typeIndex(int species, int variant, int ageClass) const {
+int TreeLibrary::typeIndex(int species, int variant, int ageClass, int crownClass) const {
   ECO_ASSERT(grid_, "typeIndex of a library of given types");
-  const int classes = static_cast<int>(settings_.ageClasses.size());
-  return (species * settings_.variants + variant) * classes + ageClass;
+  const int ages = static_cast<int>(settings_.ageClasses.size());
+  const int crowns = static_cast<int>(settings_.clearBoleClasses.size());
+  return ((species * settings_.variants + variant) * ages + ageClass) * crowns + crownClass;
+}
+
+int TreeLibrary::crownClassFor(double clearBole) const {
+  const std::vector<double>& classes = settings_.clearBoleClasses;
+  int nearest = 0;
+  for (int c = 1; c < static_cast<int>(classes.size()); ++c)
+    if (std::abs(classes[c] - clearBole) < std::abs(classes[nearest] - clearBole)) nearest = c;
+  return nearest;
 }
 
 TreeLibrary::Blend TreeLibrary::blendFor(int species, std::uint64_t variantSeed, float height_m,
-                                         float speciesMaxHeight_m) const {
+                                         float speciesMaxHeight_m, double clearBole) const {
   const int variant =
       static_cast<int>(variantSeed % static_cast<std::uint64_t>(settings_.variants));
   const int classes = static_cast<int>(settings_.ageClasses.size());
-  const float mature = types_[typeIndex(species, variant, classes - 1)].height_m;
+  const int crown = crownClassFor(clearBole);
+  auto type = [&](int a) { return typeIndex(species, variant, a, crown); };
+  // Pruning keeps the height, so every crown class has the open-grown class heights.
+  const float mature = types_[type(classes - 1)].height_m;
   const float relative = std::max(height_m, 1e-3f) / std::max(speciesMaxHeight_m, 1e-3f);
-  auto classRelative = [&](int a) {
-    return types_[typeIndex(species, variant, a)].height_m / mature;
-  };
-  if (relative <= classRelative(0)) return {typeIndex(species, variant, 0)};
+  auto classRelative = [&](int a) { return types_[type(a)].height_m / mature; };
+  if (relative <= classRelative(0)) return {type(0)};
   for (int a = 0; a + 1 < classes; ++a)
     if (relative < classRelative(a + 1))
-      return {typeIndex(species, variant, a), typeIndex(species, variant, a + 1),
+      return {type(a), type(a + 1),
               std::log(relative / classRelative(a)) /
                   std::log(classRelative(a + 1) / classRelative(a))};
-  return {typeIndex(species, variant, classes - 1)};
+  return {type(classes - 1)};
 }
 
 int TreeLibrary::typeFor(int species, std::uint64_t variantSeed, float height_m,
-                         float speciesMaxHeight_m) const {
+                         float speciesMaxHeight_m, double clearBole) const {
   // The nearer of the two classes around the plant (class heights grow with age), in
   // logarithms: the blend's weight rounded.
-  const Blend blend = blendFor(species, variantSeed, height_m, speciesMaxHeight_m);
+  const Blend blend = blendFor(species, variantSeed, height_m, speciesMaxHeight_m, clearBole);
   return blend.blendType >= 0 && blend.blendWeight > 0.5f ? blend.blendType : blend.type;
 }
 

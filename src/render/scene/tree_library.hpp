@@ -1,7 +1,7 @@
 // The trees a renderer can draw: for each species a few variants (seeds) times a few age
-// classes, each built once by the model with its three LODs and wind bases. A plant of a run
-// is drawn as the type of its species, variant (its variant seed) and nearest age class,
-// scaled to its height and crown.
+// classes (times a few crown classes, with shaping), each built once by the model with its
+// three LODs and wind bases. A plant of a run is drawn as the type of its species, variant
+// (its variant seed), nearest age class and crown class, scaled to its height and crown.
 #pragma once
 
 #include <array>
@@ -30,18 +30,35 @@ LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file);
 // Those of each [[species]] of a scenario, in its order.
 std::vector<LibrarySpecies> loadLibrarySpecies(const Scenario& scenario);
 
+// The crown classes of a library with shaping: the share of the height below the crown
+// base whose side branches are pruned (docs/rendering.md, "Trees shaped by their site").
+inline const std::vector<double> kShapedClearBoleClasses{0.0, 0.3, 0.55};
+
 struct LibrarySettings {
   int variants = 3;
   std::vector<double> ageClasses{0.15, 0.4, 0.7, 1.0};  // the model's age parameter
+  // Trees shaped by their site: each leans as its light and wind say (through the bend
+  // bases), and is drawn by the crown class nearest its own clear bole. Without, every
+  // tree is the species' own, open-grown and upright (one crown class, 0).
+  bool shaping = false;
+  std::vector<double> clearBoleClasses{0.0};
+  static LibrarySettings shaped(bool on) {
+    LibrarySettings settings;
+    settings.shaping = on;
+    if (on) settings.clearBoleClasses = kShapedClearBoleClasses;
+    return settings;
+  }
 };
 
 struct TreeType {
   int species = 0;
   int variant = 0;
   int ageClass = 0;
+  int crownClass = 0;
   std::uint64_t seed = 1;
   double age = 1.0;
-  float height_m = 0.0f;  // of the rest mesh
+  double clearBole = 0.0;  // share of the height below the crown base, pruned
+  float height_m = 0.0f;   // of the rest mesh
   float crownRadius_m = 0.0f;
   glm::vec4 bounds{0.0f};  // centre (tree frame) and radius of a sphere around every LOD
   // The largest horizontal reach of LOD0 from the stem axis in each of kEnvelopeBins equal
@@ -74,12 +91,14 @@ class TreeLibrary {
   float seedlingHeight_m(int species) const { return seedlingHeight_m_[species]; }
   const std::vector<TreeType>& types() const { return types_; }
   const LibrarySettings& settings() const { return settings_; }
-  int typeIndex(int species, int variant, int ageClass) const;
+  int typeIndex(int species, int variant, int ageClass, int crownClass = 0) const;
   // The type that draws a plant of this species, variant seed and height: its species'
   // variant (seed modulo the variants) at the age class whose tree is nearest in height
-  // relative to the species' largest (compared in logarithms).
-  int typeFor(int species, std::uint64_t variantSeed, float height_m,
-              float speciesMaxHeight_m) const;
+  // relative to the species' largest (compared in logarithms), in the crown class nearest
+  // its clear bole (the share of its height below the crown base).
+  int typeFor(int species, std::uint64_t variantSeed, float height_m, float speciesMaxHeight_m,
+              double clearBole = 0.0) const;
+  int crownClassFor(double clearBole) const;
   // The same as two neighbouring age classes blended by relative height (in logarithms), for
   // growth that changes class without a jump: `type` is the younger class, `blendType` the
   // older (or -1 outside the classes' range) and `blendWeight` the older's share.
@@ -88,8 +107,8 @@ class TreeLibrary {
     int blendType = -1;
     float blendWeight = 0.0f;
   };
-  Blend blendFor(int species, std::uint64_t variantSeed, float height_m,
-                 float speciesMaxHeight_m) const;
+  Blend blendFor(int species, std::uint64_t variantSeed, float height_m, float speciesMaxHeight_m,
+                 double clearBole = 0.0) const;
   // The seed of a variant: the model's individual of that variant.
   static std::uint64_t variantSeed(int variant) {
     return 1 + 7919 * static_cast<std::uint64_t>(variant);

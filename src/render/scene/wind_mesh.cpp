@@ -31,7 +31,7 @@ TreeBuildOptions windBuildOptions(const Species& species, std::uint64_t seed, do
 
 std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed, double age,
                                       std::span<const SkeletonMesher> meshers, int* windless,
-                                      TreeSkeleton* rest, bool windBases) {
+                                      TreeSkeleton* rest, bool windBases, double clearBole) {
   const double quarter = 0.5 * std::numbers::pi;
   const std::array<TreeWind, 5> winds{TreeWind{},                       // rest
                                       TreeWind{kSwayBasis_ws, {0, 0}},  // t = pi / 2
@@ -45,7 +45,9 @@ std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed
   TreeSkeleton skeleton;
   const std::size_t poses = windBases ? winds.size() : 1;
   for (std::size_t w = 0; w < poses; ++w) {
-    buildTreeInto(species, windBuildOptions(species, seed, age, winds[w], times[w]), skeleton);
+    TreeBuildOptions options = windBuildOptions(species, seed, age, winds[w], times[w]);
+    options.clearBole = clearBole;
+    buildTreeInto(species, options, skeleton);
     meshes[w].resize(meshers.size());
     for (std::size_t m = 0; m < meshers.size(); ++m) meshers[m](skeleton, meshes[w][m]);
     if (w == 0 && rest) *rest = skeleton;
@@ -87,7 +89,8 @@ std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed
   return result;
 }
 
-WindLods buildWindLods(const Species& species, std::uint64_t seed, double age, TreeSkeleton* rest) {
+WindLods buildWindLods(const Species& species, std::uint64_t seed, double age, TreeSkeleton* rest,
+                       double clearBole) {
   std::array<SkeletonMesher, kLodCount> levels;
   for (int lod = 0; lod < kLodCount; ++lod)
     levels[lod] = [&species, lod](const TreeSkeleton& skeleton, TreeMesh& mesh) {
@@ -95,7 +98,7 @@ WindLods buildWindLods(const Species& species, std::uint64_t seed, double age, T
     };
   WindLods result;
   std::vector<WindMesh> meshes =
-      buildWindMeshes(species, seed, age, levels, &result.windless, rest);
+      buildWindMeshes(species, seed, age, levels, &result.windless, rest, true, clearBole);
   for (int lod = 0; lod < kLodCount; ++lod) result.lods[lod] = std::move(meshes[lod]);
   return result;
 }

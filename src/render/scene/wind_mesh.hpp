@@ -72,8 +72,9 @@ struct WindLods {
   int windless = 0;
 };
 // `rest` receives the rest pose's skeleton (the tree library measures it).
+// `clearBole`: the share of the stem whose side branches are pruned (tree_shaping.hpp).
 WindLods buildWindLods(const Species& species, std::uint64_t seed, double age,
-                       TreeSkeleton* rest = nullptr);
+                       TreeSkeleton* rest = nullptr, double clearBole = 0.0);
 
 // The same for any meshes of the tree: each mesher turns a posed skeleton into a mesh, and
 // every mesh gets its wind bases from the same five skeletons (the designer's preview
@@ -85,6 +86,6 @@ using SkeletonMesher = std::function<void(const TreeSkeleton&, TreeMesh&)>;
 std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed, double age,
                                       std::span<const SkeletonMesher> meshers,
                                       int* windless = nullptr, TreeSkeleton* rest = nullptr,
-                                      bool windBases = true);
+                                      bool windBases = true, double clearBole = 0.0);
 
 }  // namespace eco

@@ -103,7 +103,7 @@ TEST(SceneRenderer, DrawsATimelapseInWhichOneTreesSilhouetteGrows) {
   test::useHeadlessGl();
   const auto dir = test::freshDirectory("timelapse_run");
   std::filesystem::create_directories(dir / "trees");
-  const std::string header = std::string(kTreesCsvHeader) + "\n";
+  const std::string header = std::string(kTreesCsvHeaderWithoutSite) + "\n";
   const std::pair<int, double> sizes[] = {{10, 2.0}, {20, 6.0}, {30, 11.0}};
   RunFolder run;
   run.dir = dir;

@@ -46,7 +46,7 @@ RunFolder oneTreeRun(const std::string& name) {
   RunFolder run;
   run.dir = dir;
   for (auto [year, height] : {std::pair{10, 0.0}, {20, 4.0}}) {
-    std::string rows = std::string(kTreesCsvHeader) + "\n";
+    std::string rows = std::string(kTreesCsvHeaderWithoutSite) + "\n";
     if (height > 0.0) rows += fmt::format("1,maple,160,160,100,5,{},1.0,1.5,0.05,0.9,1\n", height);
     test::writeFile(RunPaths{dir}.snapshot(year), rows);
     run.snapshotYears.push_back(year);

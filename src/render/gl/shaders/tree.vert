@@ -11,6 +11,7 @@ layout(location = 7) in float aSkyVisibility;  // through the tree's own crown
 layout(location = 8) in vec4 iPositionYaw;  // world position of the stem base, yaw (radians)
 layout(location = 9) in vec4 iScale;        // horizontal scale, vertical scale, keep from, phase
 layout(location = 10) in vec4 iTint;        // rgb multiplier, keep up to
+layout(location = 11) in vec2 iLean;        // the site's lean, a steady directed wind (east, south)
 
 out vec3 vWorld;
 out vec3 vNormal;
@@ -27,8 +28,10 @@ void main() {
   float t = uCamera.w + iScale.w;
   vec3 windWorld = vec3(uWind.x, 0.0, uWind.y);
   vec3 windLocal = rotateYaw(windWorld, -yaw);
+  vec3 leanLocal = rotateYaw(vec3(iLean.x, 0.0, iLean.y), -yaw);
   vec3 local = aPosition + windOffset(aSwaySin, aSwayCos, aBendEast, aBendSouth, t,
-                                      windLocal.xz, uWind.z, uWind.w);
+                                      windLocal.xz, uWind.z, uWind.w) +
+               leanLocal.x * aBendEast + leanLocal.z * aBendSouth;
 #ifdef FEEDBACK
   fbLocal = local;
 #endif

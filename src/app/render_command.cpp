@@ -30,6 +30,10 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
+double mebibytes(std::size_t bytes) {
+  return static_cast<double>(bytes) / (1024.0 * 1024.0);
+}
+
 nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
   const FrameStats& s = still.frame;
   const auto& n = s.forest.instances;
@@ -42,6 +46,9 @@ nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
           {"tree_triangles", s.forest.triangles},
           {"tree_triangles_all_lod0", s.forest.lod0Triangles},
           {"terrain_triangles", s.terrainTriangles},
+          {"tree_gpu_mib",
+           {{"meshes", mebibytes(still.treeMemory.meshBytes)},
+            {"impostors", mebibytes(still.treeMemory.impostorBytes)}}},
           {"load_ms", loadMs},
           {"renderer_setup_ms", still.setupMs},
           {"prepare_ms", s.prepareMs},
@@ -92,7 +99,9 @@ Image drawStill(const SceneSource& source, const Forest& forest, const Camera& c
   const double setupMs = millisecondsSince(rendererStart);
   const FrameStats frame =
       renderer.render(&forest, camera, renderOptionsFrom(view, source.scenario), target);
-  if (stats) *stats = {frame, setupMs, glDescription()};
+  if (stats)
+    *stats = {frame, setupMs, glDescription(),
+              renderer.forest() ? renderer.forest()->gpuMemory() : ForestGpuMemory{}};
   return readPixels(target);
 }
 

@@ -21,6 +21,7 @@ struct StillStats {
   FrameStats frame;
   double setupMs = 0.0;
   std::string renderer;
+  ForestGpuMemory treeMemory;  // the library's meshes and impostors on the GPU
 };
 
 // Draws a forest on its source's terrain (its library built) from a camera, headless, into

@@ -156,6 +156,8 @@ void ForestRenderer::uploadMeshes() {
     }
   vertices_ = makeBuffer(std::span<const PackedTreeVertex>(vertices));
   indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
+  gpuMemory_.meshBytes =
+      vertices.size() * sizeof(PackedTreeVertex) + indices.size() * sizeof(std::uint32_t);
   GLuint id = 0;
   glCreateBuffers(1, &id);
   instances_ = GlName(GlKind::Buffer, id);
@@ -218,6 +220,7 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
   bakeProgram_.use();
   const auto& types = library_.types();
   atlases_.resize(types.size());
+  gpuMemory_.impostorBytes = 0;
   for (std::size_t t = 0; t < types.size(); ++t) {
     const TreeType& type = types[t];
     if (impostorSource(static_cast<int>(t)) != static_cast<int>(t)) continue;
@@ -257,6 +260,8 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
       glGenerateTextureMipmap(texture.id());
       return texture;
     };
+    // Three RGBA8 textures; a full mip chain adds a third.
+    gpuMemory_.impostorBytes += 3 * std::size_t{4} * size * size * 4 / 3;
     atlas.albedo = copy(target.color, GL_SRGB8_ALPHA8);
     atlas.normal = copy(target.extraColors[0], GL_RGBA8);
     atlas.depth = copy(target.extraColors[1], GL_RGBA8);
@@ -388,7 +393,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       staging_[bucket.first + bucket.count++] = {
           glm::vec4(forest.position[i], forest.yaw[i]),
           glm::vec4(scale * forest.scaleXZ[i], scale * forest.scaleY[i], lo, forest.phase[i]),
-          glm::vec4(forest.tint[i], hi), forest.lean[i] / static_cast<float>(kBendBasis_wg)};
+          glm::vec4(forest.tint[i], hi), forest.lean[i]};
     };
     if (choices_[i].level >= 0)
       forEachDraw(i, [&](int type, int level, float scale, float lo, float hi) {

@@ -33,7 +33,7 @@ struct InstanceAttributes {
   glm::vec4 positionYaw;  // stem base (world), yaw (radians)
   glm::vec4 scale;        // horizontal, vertical, lowest dither threshold kept, wind phase
   glm::vec4 tint;         // rgb; a: the dither thresholds kept end here (ditherKeeps)
-  glm::vec2 lean{0.0f};   // the site's lean (east, south) / kBendBasis_wg, through the bend bases
+  glm::vec2 lean{0.0f};   // the site's lean: multiples of the bend bases (east, south)
 };
 // A TreeVertex as the GPU holds it, 48 bytes instead of 80: the normal in 10-bit signed
 // components, the four wind bases in half floats (millimetres at the metre scale of the
@@ -54,6 +54,13 @@ PackedTreeVertex packVertex(const TreeVertex& vertex);
 void setTreeVertexLayout(GLuint vertexArray);
 void setInstanceLayout(GLuint vertexArray);
 
+// What the forest holds on the GPU besides the per-frame instances.
+struct ForestGpuMemory {
+  std::size_t meshBytes = 0;      // every type's levels: packed vertices and indices
+  std::size_t impostorBytes = 0;  // the baked atlases with their mip levels
+  std::size_t total() const { return meshBytes + impostorBytes; }
+};
+
 class ForestRenderer {
  public:
   ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
@@ -68,6 +75,7 @@ class ForestRenderer {
   ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
                       const LodSettings& lod, std::span<const ShadowBox> shadows);
   const TreeLibrary& library() const { return library_; }
+  const ForestGpuMemory& gpuMemory() const { return gpuMemory_; }
   void draw() const;  // the colour pass of what prepare() chose
   // One cascade's shadow casters into the bound depth target.
   void drawShadows(std::size_t cascade) const;
@@ -120,6 +128,7 @@ class ForestRenderer {
   Program meshProgram_, meshShadowProgram_, bakeProgram_, impostorProgram_, impostorShadowProgram_;
   GlName vertices_, indices_, meshArray_, impostorArray_, instances_;
   std::size_t instanceCapacity_ = 0;
+  ForestGpuMemory gpuMemory_;
   float pixelsPerUnit_ = 1.0f;  // of the prepared frame: sprite sizes
   std::vector<std::array<std::vector<DrawRange>, kLodCount>> ranges_;  // [type][lod]
   std::vector<std::array<std::size_t, kLodCount>> triangles_;

@@ -108,7 +108,7 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
                                      library.maxHeight_m(species), site.clearBole);
     forest.add(library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), tree.height_m,
                tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
-    forest.lean.back() = glm::vec2(shapingLean(site));
+    forest.lean.back() = library.types()[type].leanResponse.basesFor(glm::vec2(shapingLean(site)));
   }
   return forest;
 }

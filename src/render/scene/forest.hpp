@@ -24,8 +24,8 @@ struct Forest {
   std::vector<float> scaleY;        // vertical scale
   std::vector<glm::vec3> tint;      // multiplies the albedo
   std::vector<float> phase;         // wind time offset, so that trees sway out of step
-  // The site's lean (model/tree_shaping.hpp): a steady horizontal directed wind (x east,
-  // z south, w_g units) the shaders add through the type's bend bases. add() sets 0.
+  // The site's lean (model/tree_shaping.hpp) as the shaders draw it: multiples of the type's
+  // bend bases (x bendEast, y bendSouth; LeanResponse::basesFor). add() sets 0.
   std::vector<glm::vec2> lean;
   // Growth between snapshots (time-lapse): the share of the tree's pixels drawn (a seedling
   // appearing, a dead tree fading), and a second type it is cross-fading into (the next age

@@ -125,25 +125,25 @@ TreeMesh billboardMesh(const TreeType& type, int frames) {
 
 namespace {
 
-// How far a type's foliage moves sideways per unit of lean through its bend bases, relative
-// to its height above the stem base (the tangent of its lean per w_g): the mean of the east
-// bend over LOD0's leaf vertices over their mean height.
-float crownShiftPerLean(const TreeType& type) {
+// How far a type's foliage moves sideways per multiple of its bend bases, relative to its
+// height above the stem base: the mean of the east bend over LOD0's leaf vertices over their
+// mean height.
+float crownShiftPerBases(const TreeType& type) {
   double shift = 0.0, height = 0.0;
   for (const WindPart& part : type.meshes.lods[0].parts) {
     if (part.material == MaterialKind::Bark) continue;
     for (const TreeVertex& v : part.vertices) shift += v.bendEast.x, height += v.position.y;
   }
-  return height > 0.0 ? static_cast<float>(shift / height / kBendBasis_wg) : 0.0f;
+  return height > 0.0 ? static_cast<float>(shift / height) : 0.0f;
 }
 
 // A glTF node cannot bend as the renderer's vertex shader does: the lean becomes a rigid
 // tilt of the tree that moves its foliage's centre as far (an instance's scale stretches
 // the shift sideways and the height up).
-glm::vec2 tiltOf(glm::vec2 lean, float shiftPerLean, float scaleXZ, float scaleY) {
+glm::vec2 tiltOf(glm::vec2 lean, float shiftPerBases, float scaleXZ, float scaleY) {
   const float length = glm::length(lean);
-  if (length <= 0.0f || shiftPerLean <= 0.0f) return glm::vec2(0.0f);
-  return lean / length * std::atan(length * shiftPerLean * scaleXZ / scaleY);
+  if (length <= 0.0f || shiftPerBases <= 0.0f) return glm::vec2(0.0f);
+  return lean / length * std::atan(length * shiftPerBases * scaleXZ / scaleY);
 }
 
 }  // namespace
@@ -176,7 +176,7 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
         std::to_string(type.ageClass) +
         (library.settings().clearBoleClasses.size() > 1 ? "_crown" + std::to_string(type.crownClass)
                                                         : std::string());
-    const float leanShift = crownShiftPerLean(type);
+    const float leanShift = crownShiftPerBases(type);
     out.species = type.species;
     const bool everyLevel = options.lod == kAllLods || options.maxTriangles > 0;
     for (int level = 0; level < kLodCount; ++level)

@@ -35,7 +35,8 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
     forest.blendType.back() = blend.blendType;
     forest.blendWeight.back() = blend.blendWeight;
     forest.presence.back() = presence;
-    forest.lean.back() = glm::vec2(shapingLean(site));
+    forest.lean.back() =
+        library.types()[blend.type].leanResponse.basesFor(glm::vec2(shapingLean(site)));
   };
 
   std::vector<char> matched(after.trees.size(), 0);

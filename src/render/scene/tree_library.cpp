@@ -88,6 +88,9 @@ TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySetti
     const Species& s = species_[type.species];
     TreeSkeleton rest;
     type.meshes = buildWindLods(s, type.seed, type.age, &rest, type.clearBole);
+    if (settings.shaping)
+      type.leanResponse =
+          measureLeanResponse(s, type.seed, type.age, type.clearBole, type.meshes.lods[0]);
     const CrownShade shade(rest, s);  // LOD0's leaves shade every level alike
     for (WindMesh& lod : type.meshes.lods) shadeVertices(lod, shade);
     type.impostorSource = typeIndex(type.species, 0, type.ageClass, type.crownClass);

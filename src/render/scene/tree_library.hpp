@@ -67,6 +67,8 @@ struct TreeType {
   static constexpr int kEnvelopeBins = 16;
   std::array<float, kEnvelopeBins> envelope_m{};
   WindLods meshes;
+  // How its bend bases draw a site's lean (measured in a library with shaping only).
+  LeanResponse leanResponse;
   // The type whose impostor frames this one shows (ForestRenderer bakes that type's only).
   int impostorSource = 0;
 };

@@ -89,6 +89,67 @@ std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed
   return result;
 }
 
+glm::vec2 LeanResponse::basesFor(glm::vec2 lean_wg) const {
+  const float length = glm::length(lean_wg);
+  if (length <= 0.0f) return glm::vec2(0.0f);
+  // Through (0, 0), (kBendBasis_wg, 1) and the samples; past the last, its segment goes on.
+  const std::array<float, 3> at{static_cast<float>(kBendBasis_wg),
+                                static_cast<float>(kLeanSamples_wg[0]),
+                                static_cast<float>(kLeanSamples_wg[1])};
+  const std::array<float, 3> multiple{1.0f, bend[0], bend[1]};
+  float bases = length / at[0];
+  for (std::size_t i = 1; i < at.size() && length > at[i - 1]; ++i)
+    bases = multiple[i - 1] +
+            (length - at[i - 1]) * (multiple[i] - multiple[i - 1]) / (at[i] - at[i - 1]);
+  return lean_wg / length * bases;
+}
+
+namespace {
+
+// The mean east offset of a mesh's foliage (every part but bark) from `rest`'s, or of the
+// bend bases when `mesh` is null.
+double foliageEastShift(const WindMesh& rest, const TreeMesh* mesh) {
+  double shift = 0.0;
+  std::size_t count = 0;
+  for (std::size_t p = 0; p < rest.parts.size(); ++p) {
+    const WindPart& part = rest.parts[p];
+    if (part.material == MaterialKind::Bark) continue;
+    for (std::size_t v = 0; v < part.vertices.size(); ++v)
+      shift += mesh ? mesh->parts[p].positions[v].x - part.vertices[v].position.x
+                    : part.vertices[v].bendEast.x;
+    count += part.vertices.size();
+  }
+  return count > 0 ? shift / static_cast<double>(count) : 0.0;
+}
+
+bool sameTopology(const WindMesh& rest, const TreeMesh& mesh) {
+  if (mesh.parts.size() != rest.parts.size()) return false;
+  for (std::size_t p = 0; p < rest.parts.size(); ++p)
+    if (mesh.parts[p].positions.size() != rest.parts[p].vertices.size()) return false;
+  return true;
+}
+
+}  // namespace
+
+LeanResponse measureLeanResponse(const Species& species, std::uint64_t seed, double age,
+                                 double clearBole, const WindMesh& lod0) {
+  LeanResponse response;
+  const double perBasis = foliageEastShift(lod0, nullptr);
+  if (std::abs(perBasis) < 1e-6) return response;
+  TreeSkeleton skeleton;
+  TreeMesh mesh;
+  for (std::size_t i = 0; i < kLeanSamples_wg.size(); ++i) {
+    TreeBuildOptions options =
+        windBuildOptions(species, seed, age, TreeWind{0.0, {kLeanSamples_wg[i], 0.0}}, 0.0);
+    options.clearBole = clearBole;
+    buildTreeInto(species, options, skeleton);
+    buildLodInto(skeleton, species, 0, mesh);
+    if (!sameTopology(lod0, mesh)) return LeanResponse{};
+    response.bend[i] = static_cast<float>(foliageEastShift(lod0, &mesh) / perBasis);
+  }
+  return response;
+}
+
 WindLods buildWindLods(const Species& species, std::uint64_t seed, double age, TreeSkeleton* rest,
                        double clearBole) {
   std::array<SkeletonMesher, kLodCount> levels;

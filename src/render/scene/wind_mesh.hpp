@@ -83,6 +83,24 @@ WindLods buildWindLods(const Species& species, std::uint64_t seed, double age,
 // Without `windBases` only the rest pose is built (a fifth of the work) and the bases stay
 // zero: a tree that the scene's wind never moves.
 using SkeletonMesher = std::function<void(const TreeSkeleton&, TreeMesh&)>;
+// A steady lean (a site's shaping, tree_shaping.hpp) drawn through the bend bases. The bases
+// are exact at kBendBasis_wg, but EcoMod turns each branch toward the directed vector, so a
+// stronger lean moves a crown less than the bases' straight line says (a pine's crown centre
+// moves 11 % of its height for 1.5 w_g and 28 % for 6, where the line gives 45 %:
+// shaping_bench). A type's response holds, for leans of kLeanSamples_wg, the multiple of the
+// bases that moves its foliage's centre as far as the model grown with that lean does;
+// between the samples the multiple is interpolated linearly.
+inline constexpr std::array<double, 2> kLeanSamples_wg{3.0, 6.0};
+struct LeanResponse {
+  std::array<float, 2> bend{3.0f, 6.0f};  // multiples of the bases at kLeanSamples_wg
+  // The multiples of (bendEast, bendSouth) that draw a lean (east, south; w_g).
+  glm::vec2 basesFor(glm::vec2 lean_wg) const;
+};
+// Measures a type's response from its LOD0 with bases and the model grown with a lean of
+// each sample toward east (a tree whose foliage the bases do not move keeps the line).
+LeanResponse measureLeanResponse(const Species& species, std::uint64_t seed, double age,
+                                 double clearBole, const WindMesh& lod0);
+
 std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed, double age,
                                       std::span<const SkeletonMesher> meshers,
                                       int* windless = nullptr, TreeSkeleton* rest = nullptr,

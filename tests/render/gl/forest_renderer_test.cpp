@@ -184,6 +184,24 @@ TEST(ForestRenderer, VariantsShareTheImpostorOfTheirSpeciesAndAgeClass) {
       EXPECT_EQ(renderer.impostorSource(library.typeIndex(0, v, a)), library.typeIndex(0, 0, a));
 }
 
+TEST(ForestRenderer, CountsItsMeshesAndOneAtlasPerImpostorSourceOnTheGpu) {
+  test::useHeadlessGl();
+  const TreeLibrary library({test::namedLibrarySpecies("shrub")},
+                            LibrarySettings{.variants = 3, .ageClasses = {0.3, 1.0}});
+  FrameUniformBuffer uniforms;
+  const ImpostorSettings impostors;
+  ForestRenderer renderer(library, impostors, uniforms);
+  std::size_t meshBytes = 0;
+  for (const TreeType& type : library.types())
+    for (const WindMesh& mesh : type.meshes.lods)
+      for (const WindPart& part : mesh.parts)
+        meshBytes += part.vertices.size() * sizeof(PackedTreeVertex) + part.indices.size() * 4;
+  EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes);
+  // Two age classes bake two atlases of albedo, normal and depth (RGBA8, mips add a third).
+  const std::size_t side = static_cast<std::size_t>(impostors.frames * impostors.tilePixels);
+  EXPECT_EQ(renderer.gpuMemory().impostorBytes, 2 * 3 * 4 * side * side * 4 / 3);
+}
+
 TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
   TreeVertex v{{1.25f, 20.5f, -3.0f}, glm::normalize(glm::vec3(0.3f, 0.9f, -0.2f)),
                {0.5f, 12.75f},        {0.01f, -0.2f, 0.3f},
@@ -267,30 +285,19 @@ TEST(Impostor, MatchesTheMeshAtEachQualitysSwitchingSize) {
   }
 }
 
-// The vertex shader itself, read back with transform feedback: its displaced vertices (the
-// tree frame) against the CPU skeleton's mesh at the same t.
-TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
-  test::useHeadlessGl();
+// The vertex shader itself, read back with transform feedback: the displaced vertices of
+// `mesh` (the tree frame) for one instance under these frame uniforms.
+std::vector<glm::vec3> shadedPositions(const WindMesh& mesh, const FrameUniforms& u,
+                                       const InstanceAttributes& instance) {
   const RenderTarget target = RenderTarget::create(16, 16);  // draws need a framebuffer
   target.bind();
-  const Species maple = test::loadNamedSpecies("maple");
-  const double age = 0.6, t = 2.4;
-  const TreeWind wind{2.0, {0.0, 0.0}};
-  const WindLods lods = buildWindLods(maple, 3, age);
-  const WindMesh& mesh = lods.lods[0];
   std::vector<PackedTreeVertex> vertices;  // as the renderer uploads them
   for (const WindPart& part : mesh.parts)
     for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
-
   const Program program({{GL_VERTEX_SHADER, "tree.vert"}}, {"FEEDBACK"}, {"fbLocal"});
   FrameUniformBuffer uniforms;
-  FrameUniforms u;
-  u.camera.w = static_cast<float>(t);
-  u.wind = glm::vec4(0.0f, 0.0f, 2.0f, 0.0f);
   uniforms.upload(u);
   const GlName vertexBuffer = makeBuffer(std::span<const PackedTreeVertex>(vertices));
-  // Yaw 0, scale 1, phase 0: the tree frame is the world frame.
-  const InstanceAttributes instance{glm::vec4(0.0f), glm::vec4(1, 1, 0, 0), glm::vec4(1.0f)};
   const GlName instanceBuffer = makeBuffer(&instance, sizeof(instance));
   const GlName output = makeBuffer(nullptr, vertices.size() * sizeof(glm::vec3), GL_MAP_READ_BIT);
   const GlName vao = makeVertexArray();
@@ -310,6 +317,23 @@ TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
   std::vector<glm::vec3> shaded(vertices.size());
   glGetNamedBufferSubData(output.id(), 0, shaded.size() * sizeof(glm::vec3), shaded.data());
   checkGl("transform feedback");
+  return shaded;
+}
+
+// Against the CPU skeleton's mesh at the same t.
+TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
+  test::useHeadlessGl();
+  const Species maple = test::loadNamedSpecies("maple");
+  const double age = 0.6, t = 2.4;
+  const TreeWind wind{2.0, {0.0, 0.0}};
+  const WindLods lods = buildWindLods(maple, 3, age);
+  const WindMesh& mesh = lods.lods[0];
+  FrameUniforms u;
+  u.camera.w = static_cast<float>(t);
+  u.wind = glm::vec4(0.0f, 0.0f, 2.0f, 0.0f);
+  // Yaw 0, scale 1, phase 0: the tree frame is the world frame.
+  const InstanceAttributes instance{glm::vec4(0.0f), glm::vec4(1, 1, 0, 0), glm::vec4(1.0f)};
+  const std::vector<glm::vec3> shaded = shadedPositions(mesh, u, instance);
 
   const test::Agreement a =
       test::agreement(mesh, shaded, test::cpuPositions(maple, age, wind, t, 0));
@@ -317,6 +341,32 @@ TEST(WindMesh, TheVertexShaderSwaysLikeTheCpuSkeleton) {
   EXPECT_LT(a.tipError, 0.08f * a.tipDisplacement + 0.01f)
       << "tip moved " << a.tipDisplacement << " m, shader off by " << a.tipError << " m";
   EXPECT_LT(a.rmsError, 0.1f * a.rmsDisplacement + 0.005f);
+}
+
+// A site's lean is given in the world (east, south) and leans a turned tree the same way:
+// its crown moves toward the world's east whatever the tree's yaw.
+TEST(WindMesh, TheVertexShaderLeansATurnedTreeTowardItsLeanInTheWorld) {
+  test::useHeadlessGl();
+  const WindLods lods = buildWindLods(test::loadNamedSpecies("beech"), 3, 0.7);
+  const WindMesh& mesh = lods.lods[0];
+  const float yaw = 2.1f;
+  const InstanceAttributes upright{glm::vec4(0, 0, 0, yaw), glm::vec4(1, 1, 0, 0), glm::vec4(1.0f),
+                                   glm::vec2(0.0f)};
+  InstanceAttributes leaning = upright;
+  leaning.lean = glm::vec2(2.0f, 0.0f);
+  const std::vector<glm::vec3> rest = shadedPositions(mesh, {}, upright);
+  const std::vector<glm::vec3> leant = shadedPositions(mesh, {}, leaning);
+  // The foliage's mean move, turned from the tree frame into the world as prepare() does.
+  glm::vec3 move(0.0f);
+  std::size_t i = 0, leaves = 0;
+  for (const WindPart& part : mesh.parts)
+    for (std::size_t v = 0; v < part.vertices.size(); ++v, ++i)
+      if (part.material != MaterialKind::Bark) move += leant[i] - rest[i], ++leaves;
+  move /= static_cast<float>(leaves);
+  const float c = std::cos(yaw), s = std::sin(yaw);
+  const glm::vec3 world(c * move.x - s * move.z, move.y, s * move.x + c * move.z);
+  EXPECT_GT(world.x, 0.3f);
+  EXPECT_LT(std::abs(world.z), 0.1f * world.x);
 }
 
 }  // namespace

@@ -297,5 +297,45 @@ TEST(ForestGltf, InstanceRotationMatchesTheRenderersYaw) {
   FAIL() << "the first tree's instance was not found";
 }
 
+// A glTF node cannot bend: a leaning tree tilts toward its lean, and an upright one does not.
+TEST(ForestGltf, ALeaningTreeTiltsTowardItsLean) {
+  Scene scene = smallScene();
+  scene.forest.yaw[0] = 0.7f;
+  scene.forest.lean[0] = glm::vec2(2.0f, 0.0f);  // twice the bases toward east
+  const ForestGltfScene gltf =
+      forestGltfScene(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, kGpu);
+  float tilt = 0.0f;
+  for (const ForestGltfType& type : gltf.types)
+    for (const ForestGltfTree& tree : type.trees) {
+      if (tree.id != scene.rows[0].id) {
+        EXPECT_EQ(tree.tilt_rad, glm::vec2(0.0f));
+        continue;
+      }
+      tilt = tree.tilt_rad.x;
+      EXPECT_EQ(tree.tilt_rad.y, 0.0f);
+    }
+  EXPECT_GT(tilt, 0.02f);
+  EXPECT_LT(tilt, 0.5f);
+
+  const auto file = test::freshDirectory("forest_gltf_tilt") / "forest.glb";
+  exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file, kGpu);
+  const tinygltf::Model model = test::loadGltf(file);
+  for (const tinygltf::Node& node : model.nodes) {
+    if (!node.extensions.count("EXT_mesh_gpu_instancing")) continue;
+    const tinygltf::Value& attributes =
+        node.extensions.at("EXT_mesh_gpu_instancing").Get("attributes");
+    const auto translations =
+        accessorValues<glm::vec3>(model, attributes.Get("TRANSLATION").GetNumberAsInt());
+    if (translations[0] != scene.forest.position[0]) continue;
+    const glm::vec4 q =
+        accessorValues<glm::vec4>(model, attributes.Get("ROTATION").GetNumberAsInt())[0];
+    const glm::vec3 up = glm::quat(q.w, q.x, q.y, q.z) * glm::vec3(0, 1, 0);
+    EXPECT_NEAR(std::atan2(up.x, up.y), tilt, 1e-5f);  // the stem leans east by the tilt
+    EXPECT_NEAR(up.z, 0.0f, 1e-5f);
+    return;
+  }
+  FAIL() << "the first tree's instance was not found";
+}
+
 }  // namespace
 }  // namespace eco

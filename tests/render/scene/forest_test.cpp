@@ -45,6 +45,48 @@ TEST(Forest, ASnapshotPlantStandsAtItsPlaceAtItsHeight) {
   }
 }
 
+// A beech at a forest edge with the light from the east, and half its height a clear bole.
+TreeSnapshot edgeTree() {
+  TreeSnapshot snapshot;
+  snapshot.speciesNames = {"beech"};
+  snapshot.trees.push_back({.id = 1,
+                            .species = 0,
+                            .age_years = 120,
+                            .height_m = 30.0f,
+                            .crownRadius_m = 5.0f,
+                            .crownBase_m = 15.0f,
+                            .vigor = 0.8f,
+                            .variantSeed = 5,
+                            .site = {.light = {0.5, 0.0}, .wind = {0.0, 0.0}}});
+  return snapshot;
+}
+
+TEST(Forest, WithShapingATreeLeansTowardItsLightAndTakesItsCrownClass) {
+  const TreeLibrary& library = test::shapedLibrary();
+  TreeSnapshot snapshot = edgeTree();
+  Forest forest = forestFromSnapshot(snapshot, library, "run");
+  const TreeType& type = library.types()[forest.type[0]];
+  EXPECT_EQ(type.crownClass, library.crownClassFor(0.5));
+  const glm::vec2 lean(shapingLean({.light = {0.5, 0.0}}));
+  EXPECT_GT(lean.x, 0.0f);
+  EXPECT_EQ(forest.lean[0], type.leanResponse.basesFor(lean));
+  // The map's north is the tree frame's -z (south positive): light from the north.
+  snapshot.trees[0].site.light = {0.0, 0.5};
+  forest = forestFromSnapshot(snapshot, library, "run");
+  EXPECT_NEAR(forest.lean[0].x, 0.0f, 1e-6f);
+  EXPECT_LT(forest.lean[0].y, 0.0f);
+}
+
+TEST(Forest, WithoutShapingEveryTreeStandsUprightInTheOpenGrownCrownClass) {
+  LibrarySettings settings = LibrarySettings::shaped(false);
+  settings.variants = 1;
+  settings.ageClasses = {1.0};
+  const TreeLibrary library({test::namedLibrarySpecies("beech")}, settings);
+  const Forest forest = forestFromSnapshot(edgeTree(), library, "run");
+  EXPECT_EQ(library.types()[forest.type[0]].crownClass, 0);
+  EXPECT_EQ(forest.lean[0], glm::vec2(0.0f));
+}
+
 TEST(Forest, AppendCopiesEveryArrayOfATree) {
   const TreeLibrary& library = test::smallLibrary();
   Forest all;

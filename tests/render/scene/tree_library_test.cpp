@@ -71,6 +71,31 @@ TEST(TreeLibrary, GridTypesShareTheirAgeClassesImpostor) {
   }
 }
 
+TEST(TreeLibrary, AShapedLibraryHasATypePerCrownClassWithItsClearBole) {
+  const TreeLibrary& shaped = test::shapedLibrary();
+  ASSERT_EQ(shaped.types().size(), kShapedClearBoleClasses.size());
+  float previousLowestLeaf = -1.0f;
+  for (int c = 0; c < static_cast<int>(kShapedClearBoleClasses.size()); ++c) {
+    const TreeType& type = shaped.types()[shaped.typeIndex(0, 0, 0, c)];
+    EXPECT_EQ(type.crownClass, c);
+    EXPECT_EQ(type.clearBole, kShapedClearBoleClasses[c]);
+    // A longer clear bole: the crown starts higher.
+    float lowestLeaf = 1e30f;
+    for (const WindPart& part : type.meshes.lods[0].parts)
+      if (part.material != MaterialKind::Bark)
+        for (const TreeVertex& v : part.vertices) lowestLeaf = std::min(lowestLeaf, v.position.y);
+    EXPECT_GT(lowestLeaf, previousLowestLeaf) << c;
+    previousLowestLeaf = lowestLeaf;
+    // A strong lean moves the crown less than the bend bases' straight line (wind_mesh.hpp).
+    EXPECT_GT(type.leanResponse.bend[0], 0.0f);
+    EXPECT_LT(type.leanResponse.bend[1], static_cast<float>(kLeanSamples_wg[1]));
+  }
+  EXPECT_EQ(shaped.crownClassFor(0.0), 0);
+  EXPECT_EQ(shaped.crownClassFor(0.4), 1);
+  EXPECT_EQ(shaped.crownClassFor(0.9), 2);
+  EXPECT_EQ(test::smallLibrary().crownClassFor(0.9), 0);  // without shaping: one class
+}
+
 TEST(TreeLibrary, GivenTypesAreEachTheirOwnAndCanBeReplaced) {
   const TreeLibrary& grid = test::smallLibrary();
   std::vector<TreeType> types = {grid.types()[grid.typeIndex(0, 0, 1)],

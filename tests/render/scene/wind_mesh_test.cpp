@@ -108,5 +108,65 @@ TEST(WindMesh, BendBasesLeanTheCrownDownwind) {
       ASSERT_LT(glm::distance(v.position + v.bendEast, full[i++]), 1e-4f);
 }
 
+TEST(LeanResponse, IsLinearThroughTheBasisAndTheMeasuredSamples) {
+  const LeanResponse response{.bend = {2.0f, 3.0f}};  // samples at 3 and 6 w_g
+  ASSERT_EQ(kBendBasis_wg, 1.0);
+  ASSERT_EQ(kLeanSamples_wg[0], 3.0);
+  ASSERT_EQ(kLeanSamples_wg[1], 6.0);
+  EXPECT_EQ(response.basesFor({0.0f, 0.0f}), glm::vec2(0.0f));
+  EXPECT_FLOAT_EQ(response.basesFor({0.5f, 0.0f}).x, 0.5f);
+  EXPECT_FLOAT_EQ(response.basesFor({1.0f, 0.0f}).x, 1.0f);
+  EXPECT_FLOAT_EQ(response.basesFor({2.0f, 0.0f}).x, 1.5f);
+  EXPECT_FLOAT_EQ(response.basesFor({3.0f, 0.0f}).x, 2.0f);
+  EXPECT_FLOAT_EQ(response.basesFor({4.5f, 0.0f}).x, 2.5f);
+  EXPECT_FLOAT_EQ(response.basesFor({7.5f, 0.0f}).x, 3.5f);  // the last segment goes on
+  // The direction is kept: 3 w_g toward south-west.
+  const glm::vec2 bases = response.basesFor(glm::vec2(-3.0f, 3.0f) / std::sqrt(2.0f) * 1.0f);
+  EXPECT_NEAR(bases.x, -2.0f / std::sqrt(2.0f), 1e-5f);
+  EXPECT_NEAR(bases.y, 2.0f / std::sqrt(2.0f), 1e-5f);
+  EXPECT_EQ(LeanResponse{}.basesFor({6.0f, 0.0f}).x, 6.0f);  // unmeasured: the straight line
+}
+
+// The foliage's mean east offset, drawn with `bases` multiples of bendEast and in the model.
+float foliageEast(const WindMesh& mesh, float bases) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const WindPart& part : mesh.parts)
+    if (part.material != MaterialKind::Bark)
+      for (const TreeVertex& v : part.vertices) sum += v.position.x + bases * v.bendEast.x, ++n;
+  return static_cast<float>(sum / static_cast<double>(n));
+}
+float foliageEast(const Species& species, double age, double lean_wg) {
+  const TreeMesh mesh = buildLod(
+      buildStrandTree(species, windBuildOptions(species, 3, age, {0.0, {lean_wg, 0.0}}, 0.0)),
+      species, 0);
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const MeshPart& part : mesh.parts)
+    if (part.material != MaterialKind::Bark)
+      for (const glm::vec3& p : part.positions) sum += p.x, ++n;
+  return static_cast<float>(sum / static_cast<double>(n));
+}
+
+// EcoMod turns branches toward the directed vector, so a strong lean moves a crown less than
+// the bases' straight line: the measured response draws the crown's centre where the model
+// grows it, at the samples and between them (a pine, whose stem follows the lean most).
+TEST(LeanResponse, MovesTheCrownAsFarAsTheModelGrownWithTheLean) {
+  const Species pine = test::loadNamedSpecies("pine");
+  TreeSkeleton rest;
+  const WindLods lods = buildWindLods(pine, 3, 0.7, &rest);
+  const float height = static_cast<float>(measure(rest).height_m);
+  const LeanResponse response = measureLeanResponse(pine, 3, 0.7, 0.0, lods.lods[0]);
+  EXPECT_LT(response.bend[0], 0.9f * 3.0f);
+  EXPECT_LT(response.bend[1], 0.8f * 6.0f);
+  for (float lean : {3.0f, 4.5f, 6.0f}) {
+    const float exact = foliageEast(pine, 0.7, lean);
+    const float drawn = foliageEast(lods.lods[0], response.basesFor({lean, 0.0f}).x);
+    const float line = foliageEast(lods.lods[0], lean / static_cast<float>(kBendBasis_wg));
+    EXPECT_NEAR(drawn, exact, 0.01f * height) << lean;
+    EXPECT_GT(line - exact, 0.02f * height) << lean;
+  }
+}
+
 }  // namespace
 }  // namespace eco

@@ -30,6 +30,14 @@ const TreeLibrary& smallLibrary() {
   return library;
 }
 
+const TreeLibrary& shapedLibrary() {
+  LibrarySettings settings = LibrarySettings::shaped(true);
+  settings.variants = 1;
+  settings.ageClasses = {1.0};
+  static const TreeLibrary library({namedLibrarySpecies("beech")}, settings);
+  return library;
+}
+
 glm::vec3 linearised(const TreeVertex& v, const TreeWind& wind, double t) {
   const float sway = static_cast<float>(wind.sway_ws / kSwayBasis_ws);
   return v.position +

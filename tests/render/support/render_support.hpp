@@ -22,6 +22,8 @@ LibrarySpecies namedLibrarySpecies(const std::string& name);
 // A library of the named species with one variant and two age classes (young, mature):
 // small enough to build in a moment. Built once per program and shared.
 const TreeLibrary& smallLibrary();
+// Mature beech, one variant, with shaping (LibrarySettings::shaped): one type per crown class.
+const TreeLibrary& shapedLibrary();
 
 // A flat terrain of size x size cells of `cell_m`, at altitude 100 m.
 Terrain flatTerrain(int size, double cell_m);

@@ -10,7 +10,8 @@
 //    model's, all in % of the tree's height: with the bases along their straight line
 //    (lean / kBendBasis_wg) and as drawn (the type's measured LeanResponse).
 // 2. A run (its last snapshot), drawn with shaping on and off: the tree library's build time
-//    and type count, what it holds on the GPU (meshes, impostor atlases), and the frame time
+//    and type count, the renderer's setup (uploading the meshes, baking the impostors), what
+//    it holds on the GPU (meshes, impostor atlases), and the frame time
 //    of the low and overview views (best of three, this machine's OpenGL: llvmpipe without a
 //    GPU).
 //
@@ -181,16 +182,18 @@ int main(int argc, char** argv) {
   std::printf("\n%s, year %d, %zu trees; %s, %dx%d, %s\n", run.dir.c_str(), year,
               snapshot.trees.size(), eco::glDescription().c_str(), size.width, size.height,
               qualityName.c_str());
-  std::printf("%-8s | %7s %10s | %10s %13s | %13s %13s\n", "shaping", "types", "library ms",
-              "mesh MiB", "impostor MiB", "low frame ms", "overview ms");
+  std::printf("%-8s | %7s %10s %11s | %10s %13s | %13s %13s\n", "shaping", "types", "library ms",
+              "renderer ms", "mesh MiB", "impostor MiB", "low frame ms", "overview ms");
   for (bool shaping : {false, true}) {
     auto start = std::chrono::steady_clock::now();
     const eco::TreeLibrary library(eco::loadLibrarySpecies(run.scenario),
                                    eco::LibrarySettings::shaped(shaping));
     const double libraryMs = millisecondsSince(start);
     const eco::Forest forest = eco::forestFromSnapshot(snapshot, library, run.dir.string());
+    start = std::chrono::steady_clock::now();
     eco::SceneRenderer renderer(terrain, run.scenario.climate.latitude_deg, &library,
                                 eco::impostorSettingsFor(*quality));
+    const double rendererMs = millisecondsSince(start);
     renderer.setForestFloor(forest);
     double frameMs[2];
     int view = 0;
@@ -204,9 +207,10 @@ int main(int argc, char** argv) {
       ++view;
     }
     const eco::ForestGpuMemory& memory = renderer.forest()->gpuMemory();
-    std::printf("%-8s | %7zu %10.0f | %10.1f %13.1f | %13.1f %13.1f\n", shaping ? "on" : "off",
-                library.types().size(), libraryMs, mebibytes(memory.meshBytes),
-                mebibytes(memory.impostorBytes), frameMs[0], frameMs[1]);
+    std::printf("%-8s | %7zu %10.0f %11.0f | %10.1f %13.1f | %13.1f %13.1f\n",
+                shaping ? "on" : "off", library.types().size(), libraryMs, rendererMs,
+                mebibytes(memory.meshBytes), mebibytes(memory.impostorBytes), frameMs[0],
+                frameMs[1]);
   }
   return 0;
 }

@@ -30,6 +30,8 @@ TEST(RenderCommand, ARunFolderRendersAStillWithItsStatistics) {
   EXPECT_GT(drawn, 0u);
   EXPECT_GT(json["tree_triangles_all_lod0"].get<double>(), json["tree_triangles"].get<double>());
   EXPECT_GT(json["frame_ms"].get<double>(), 0.0);
+  EXPECT_GT(json["tree_gpu_mib"]["meshes"].get<double>(), 0.0);
+  EXPECT_GT(json["tree_gpu_mib"]["impostors"].get<double>(), 0.0);
 }
 
 TEST(RenderCommand, AScenarioRendersItsTerrainWithAnOverlay) {

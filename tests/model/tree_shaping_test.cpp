@@ -87,7 +87,9 @@ TEST(TreeShaping, OneSidedLightMovesTheCrownTowardIt) {
       const glm::dvec2 offset = crownOffset(buildTree(species, shaped(site))) - upright;
       EXPECT_GT(offset.x, previous) << name << " " << sidedness;  // more one-sided, further east
       EXPECT_NEAR(offset.y, 0.0, 0.3 * offset.x) << name << " " << sidedness;
-      if (sidedness == 0.65) EXPECT_GT(offset.x, atEdge) << name;
+      if (sidedness == 0.65) {
+        EXPECT_GT(offset.x, atEdge) << name;
+      }
       previous = offset.x;
     }
   }

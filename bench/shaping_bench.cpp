@@ -70,32 +70,21 @@ std::optional<LeanFidelity> leanFidelity(const eco::Species& species, std::uint6
                      skeleton);
   eco::TreeMesh exact;
   eco::buildLodInto(skeleton, species, 0, exact);
-  if (exact.parts.size() != rest.parts.size()) return std::nullopt;
+  if (!eco::sameTopology(rest, exact)) return std::nullopt;
   std::vector<double> distances;
-  glm::dvec3 restCentre(0.0), exactCentre(0.0), instanceCentre(0.0);
-  std::size_t leaves = 0;
-  for (std::size_t p = 0; p < rest.parts.size(); ++p) {
-    const eco::WindPart& part = rest.parts[p];
-    const eco::MeshPart& other = exact.parts[p];
-    if (other.positions.size() != part.vertices.size()) return std::nullopt;
-    for (std::size_t v = 0; v < part.vertices.size(); ++v) {
-      const eco::TreeVertex& r = part.vertices[v];
-      const glm::vec3 instance = r.position + bases * r.bendEast;
-      distances.push_back(glm::length(instance - other.positions[v]));
-      if (part.material == eco::MaterialKind::Bark) continue;
-      restCentre += glm::dvec3(r.position);
-      exactCentre += glm::dvec3(other.positions[v]);
-      instanceCentre += glm::dvec3(instance);
-      ++leaves;
+  for (std::size_t p = 0; p < rest.parts.size(); ++p)
+    for (std::size_t v = 0; v < rest.parts[p].vertices.size(); ++v) {
+      const eco::TreeVertex& r = rest.parts[p].vertices[v];
+      distances.push_back(
+          glm::length(r.position + bases * r.bendEast - exact.parts[p].positions[v]));
     }
-  }
   LeanFidelity f;
   const double percent = 100.0 / height_m;
-  if (leaves > 0) {
-    const double n = static_cast<double>(leaves);
-    f.exactShift = glm::length((exactCentre - restCentre) / n) * percent;
-    f.centreError = glm::length((instanceCentre - exactCentre) / n) * percent;
-  }
+  const eco::FoliageCentre restCentre = eco::foliageCentre(rest);
+  const glm::dvec3 exactCentre = eco::foliageCentre(exact);
+  const glm::dvec3 instanceCentre = restCentre.position + double(bases) * restCentre.bendEast;
+  f.exactShift = glm::length(exactCentre - restCentre.position) * percent;
+  f.centreError = glm::length(instanceCentre - exactCentre) * percent;
   if (!distances.empty()) {
     double sum = 0.0;
     for (double d : distances) sum += d;

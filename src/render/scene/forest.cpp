@@ -100,25 +100,29 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
   const std::vector<int> librarySpecies = librarySpeciesOf(snapshot, library, where);
   Forest forest;
   forest.reserve(snapshot.trees.size());
-  const bool shaped = library.settings().shaping;
   for (const TreeRow& tree : snapshot.trees) {
     const int species = librarySpecies[tree.species];
-    const SiteShaping site = shaped ? siteShapingOf(tree) : SiteShaping{};
+    const SiteShaping site = siteShapingOf(tree, library);
     const int type = library.typeFor(species, tree.variantSeed, tree.height_m,
                                      library.maxHeight_m(species), site.clearBole);
     forest.add(library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), tree.height_m,
                tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
-    forest.lean.back() = library.types()[type].leanResponse.basesFor(glm::vec2(shapingLean(site)));
+    forest.lean.back() = drawnLean(library, type, site);
   }
   return forest;
 }
 
-SiteShaping siteShapingOf(const TreeRow& tree) {
+SiteShaping siteShapingOf(const TreeRow& tree, const TreeLibrary& library) {
   SiteShaping site;
+  if (!library.settings().shaping) return site;
   site.light = {tree.site.light.x, -tree.site.light.y};
   site.wind = {tree.site.wind.x, -tree.site.wind.y};
   site.clearBole = tree.height_m > 0.0f ? tree.crownBase_m / tree.height_m : 0.0;
   return site;
+}
+
+glm::vec2 drawnLean(const TreeLibrary& library, int type, const SiteShaping& site) {
+  return library.types()[type].leanResponse.basesFor(glm::vec2(shapingLean(site)));
 }
 
 Forest demoForest(const Terrain& terrain, const TreeLibrary& library, std::size_t count,

@@ -56,9 +56,12 @@ std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrar
 Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
                           const std::string& where);
 
-// The model's shaping of a snapshot's tree: its light and wind turned into the tree frame
-// (east, south), and the share of its height below the crown base.
-SiteShaping siteShapingOf(const TreeRow& tree);
+// The model's shaping of a snapshot's tree as `library` draws it: its light and wind turned
+// into the tree frame (east, south), and the share of its height below the crown base;
+// neutral in a library without shaping.
+SiteShaping siteShapingOf(const TreeRow& tree, const TreeLibrary& library);
+// The lean of a tree of `type` on `site` as the shaders draw it (Forest::lean).
+glm::vec2 drawnLean(const TreeLibrary& library, int type, const SiteShaping& site);
 
 // `count` trees spread uniformly over the terrain with species drawn evenly and heights from
 // seedlings to mature (the terrain-with-trees view of a scenario without a run).

@@ -126,15 +126,10 @@ TreeMesh billboardMesh(const TreeType& type, int frames) {
 namespace {
 
 // How far a type's foliage moves sideways per multiple of its bend bases, relative to its
-// height above the stem base: the mean of the east bend over LOD0's leaf vertices over their
-// mean height.
+// height above the stem base (LOD0's foliage centre).
 float crownShiftPerBases(const TreeType& type) {
-  double shift = 0.0, height = 0.0;
-  for (const WindPart& part : type.meshes.lods[0].parts) {
-    if (part.material == MaterialKind::Bark) continue;
-    for (const TreeVertex& v : part.vertices) shift += v.bendEast.x, height += v.position.y;
-  }
-  return height > 0.0 ? static_cast<float>(shift / height) : 0.0f;
+  const FoliageCentre centre = foliageCentre(type.meshes.lods[0]);
+  return centre.position.y > 0.0 ? static_cast<float>(centre.bendEast.x / centre.position.y) : 0.0f;
 }
 
 // A glTF node cannot bend as the renderer's vertex shader does: the lean becomes a rigid

@@ -24,10 +24,9 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
   forest.reserve(before.trees.size() + after.trees.size());
   // The site's shaping, as the later snapshot has it where there is one (a tree's site
   // changes little in a few years; its form follows the later).
-  const bool shaped = library.settings().shaping;
   auto add = [&](const TreeRow& tree, const TreeRow& shapedAs, int species, float height,
                  float crown, float vigor, float presence) {
-    const SiteShaping site = shaped ? siteShapingOf(shapedAs) : SiteShaping{};
+    const SiteShaping site = siteShapingOf(shapedAs, library);
     const TreeLibrary::Blend blend = library.blendFor(species, tree.variantSeed, height,
                                                       library.maxHeight_m(species), site.clearBole);
     forest.add(library, blend.type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), height,
@@ -35,8 +34,7 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
     forest.blendType.back() = blend.blendType;
     forest.blendWeight.back() = blend.blendWeight;
     forest.presence.back() = presence;
-    forest.lean.back() =
-        library.types()[blend.type].leanResponse.basesFor(glm::vec2(shapingLean(site)));
+    forest.lean.back() = drawnLean(library, blend.type, site);
   };
 
   std::vector<char> matched(after.trees.size(), 0);

@@ -54,15 +54,15 @@ std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed
   }
   for (std::size_t m = 0; m < meshers.size(); ++m) {
     const TreeMesh& rest = meshes[0][m];
-    bool sameTopology = windBases;
+    bool topologyKept = windBases;
     for (std::size_t w = 1; w < poses; ++w) {
       const TreeMesh& other = meshes[w][m];
-      sameTopology = sameTopology && other.parts.size() == rest.parts.size();
-      for (std::size_t p = 0; sameTopology && p < rest.parts.size(); ++p)
-        sameTopology = other.parts[p].positions.size() == rest.parts[p].positions.size() &&
+      topologyKept = topologyKept && other.parts.size() == rest.parts.size();
+      for (std::size_t p = 0; topologyKept && p < rest.parts.size(); ++p)
+        topologyKept = other.parts[p].positions.size() == rest.parts[p].positions.size() &&
                        other.parts[p].material == rest.parts[p].material;
     }
-    if (!sameTopology && windBases && windless) ++*windless;
+    if (!topologyKept && windBases && windless) ++*windless;
     WindMesh& out = result[m];
     for (std::size_t p = 0; p < rest.parts.size(); ++p) {
       const MeshPart& part = rest.parts[p];
@@ -76,7 +76,7 @@ std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed
         vertex.normal = part.normals[v];
         vertex.uv = part.uvs[v];
         auto offset = [&](std::size_t w) {
-          return sameTopology ? meshes[w][m].parts[p].positions[v] - part.positions[v]
+          return topologyKept ? meshes[w][m].parts[p].positions[v] - part.positions[v]
                               : glm::vec3(0.0f);
         };
         vertex.swaySin = offset(1);
@@ -104,37 +104,47 @@ glm::vec2 LeanResponse::basesFor(glm::vec2 lean_wg) const {
   return lean_wg / length * bases;
 }
 
-namespace {
-
-// The mean east offset of a mesh's foliage (every part but bark) from `rest`'s, or of the
-// bend bases when `mesh` is null.
-double foliageEastShift(const WindMesh& rest, const TreeMesh* mesh) {
-  double shift = 0.0;
+FoliageCentre foliageCentre(const WindMesh& mesh) {
+  FoliageCentre centre;
   std::size_t count = 0;
-  for (std::size_t p = 0; p < rest.parts.size(); ++p) {
-    const WindPart& part = rest.parts[p];
+  for (const WindPart& part : mesh.parts) {
     if (part.material == MaterialKind::Bark) continue;
-    for (std::size_t v = 0; v < part.vertices.size(); ++v)
-      shift += mesh ? mesh->parts[p].positions[v].x - part.vertices[v].position.x
-                    : part.vertices[v].bendEast.x;
+    for (const TreeVertex& v : part.vertices)
+      centre.position += glm::dvec3(v.position), centre.bendEast += glm::dvec3(v.bendEast);
     count += part.vertices.size();
   }
-  return count > 0 ? shift / static_cast<double>(count) : 0.0;
+  if (count > 0) {
+    centre.position /= static_cast<double>(count);
+    centre.bendEast /= static_cast<double>(count);
+  }
+  return centre;
+}
+
+glm::dvec3 foliageCentre(const TreeMesh& mesh) {
+  glm::dvec3 sum(0.0);
+  std::size_t count = 0;
+  for (const MeshPart& part : mesh.parts) {
+    if (part.material == MaterialKind::Bark) continue;
+    for (const glm::vec3& p : part.positions) sum += glm::dvec3(p);
+    count += part.positions.size();
+  }
+  return count > 0 ? sum / static_cast<double>(count) : sum;
 }
 
 bool sameTopology(const WindMesh& rest, const TreeMesh& mesh) {
   if (mesh.parts.size() != rest.parts.size()) return false;
   for (std::size_t p = 0; p < rest.parts.size(); ++p)
-    if (mesh.parts[p].positions.size() != rest.parts[p].vertices.size()) return false;
+    if (mesh.parts[p].positions.size() != rest.parts[p].vertices.size() ||
+        mesh.parts[p].material != rest.parts[p].material)
+      return false;
   return true;
 }
-
-}  // namespace
 
 LeanResponse measureLeanResponse(const Species& species, std::uint64_t seed, double age,
                                  double clearBole, const WindMesh& lod0) {
   LeanResponse response;
-  const double perBasis = foliageEastShift(lod0, nullptr);
+  const FoliageCentre rest = foliageCentre(lod0);
+  const double perBasis = rest.bendEast.x;
   if (std::abs(perBasis) < 1e-6) return response;
   TreeSkeleton skeleton;
   TreeMesh mesh;
@@ -145,7 +155,7 @@ LeanResponse measureLeanResponse(const Species& species, std::uint64_t seed, dou
     buildTreeInto(species, options, skeleton);
     buildLodInto(skeleton, species, 0, mesh);
     if (!sameTopology(lod0, mesh)) return LeanResponse{};
-    response.bend[i] = static_cast<float>(foliageEastShift(lod0, &mesh) / perBasis);
+    response.bend[i] = static_cast<float>((foliageCentre(mesh).x - rest.position.x) / perBasis);
   }
   return response;
 }

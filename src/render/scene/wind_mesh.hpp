@@ -96,6 +96,17 @@ struct LeanResponse {
   // The multiples of (bendEast, bendSouth) that draw a lean (east, south; w_g).
   glm::vec2 basesFor(glm::vec2 lean_wg) const;
 };
+// The mean of a mesh's foliage vertices (every part but bark): the crown's centre, and how
+// far the east bend basis moves it. Zero for a mesh without foliage.
+struct FoliageCentre {
+  glm::dvec3 position{0.0};
+  glm::dvec3 bendEast{0.0};
+};
+FoliageCentre foliageCentre(const WindMesh& mesh);
+glm::dvec3 foliageCentre(const TreeMesh& mesh);
+// Whether a posed mesh has the parts and vertices of `rest`, vertex for vertex.
+bool sameTopology(const WindMesh& rest, const TreeMesh& mesh);
+
 // Measures a type's response from its LOD0 with bases and the model grown with a lean of
 // each sample toward east (a tree whose foliage the bases do not move keeps the line).
 LeanResponse measureLeanResponse(const Species& species, std::uint64_t seed, double age,

@@ -1,5 +1,7 @@
 #include "render/scene/forest_export.hpp"
 
+#include <optional>
+
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 #include <glm/gtc/quaternion.hpp>
@@ -273,11 +275,11 @@ TEST(ForestGltf, AllLevelsOfDetailThroughMsftLod) {
   EXPECT_EQ(withLods, summary.treeMeshes);
 }
 
-// The instance rotation turns a tree as the renderer does (rotateYaw in common.glsl).
-TEST(ForestGltf, InstanceRotationMatchesTheRenderersYaw) {
-  Scene scene = smallScene();
-  scene.forest.yaw[0] = 0.7f;
-  const auto file = test::freshDirectory("forest_gltf_yaw") / "forest.glb";
+// The scene exported with GPU instancing into a fresh folder, and the instance rotation of
+// its first tree as written; nullopt if its instance is not found.
+std::optional<glm::quat> exportedRotationOfFirstTree(const Scene& scene,
+                                                     const std::string& folder) {
+  const auto file = test::freshDirectory(folder) / "forest.glb";
   exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file, kGpu);
   const tinygltf::Model model = test::loadGltf(file);
   for (const tinygltf::Node& node : model.nodes) {
@@ -289,12 +291,20 @@ TEST(ForestGltf, InstanceRotationMatchesTheRenderersYaw) {
     if (translations[0] != scene.forest.position[0]) continue;
     const glm::vec4 q =
         accessorValues<glm::vec4>(model, attributes.Get("ROTATION").GetNumberAsInt())[0];
-    const glm::vec3 turned = glm::quat(q.w, q.x, q.y, q.z) * glm::vec3(1, 0, 0);
-    const float c = std::cos(0.7f), s = std::sin(0.7f);
-    EXPECT_NEAR(glm::distance(turned, glm::vec3(c, 0, s)), 0.0f, 1e-5f);
-    return;
+    return glm::quat(q.w, q.x, q.y, q.z);
   }
-  FAIL() << "the first tree's instance was not found";
+  return std::nullopt;
+}
+
+// The instance rotation turns a tree as the renderer does (rotateYaw in common.glsl).
+TEST(ForestGltf, InstanceRotationMatchesTheRenderersYaw) {
+  Scene scene = smallScene();
+  scene.forest.yaw[0] = 0.7f;
+  const std::optional<glm::quat> rotation = exportedRotationOfFirstTree(scene, "forest_gltf_yaw");
+  ASSERT_TRUE(rotation) << "the first tree's instance was not found";
+  const glm::vec3 turned = *rotation * glm::vec3(1, 0, 0);
+  const float c = std::cos(0.7f), s = std::sin(0.7f);
+  EXPECT_NEAR(glm::distance(turned, glm::vec3(c, 0, s)), 0.0f, 1e-5f);
 }
 
 // A glTF node cannot bend: a leaning tree tilts toward its lean, and an upright one does not.
@@ -317,24 +327,11 @@ TEST(ForestGltf, ALeaningTreeTiltsTowardItsLean) {
   EXPECT_GT(tilt, 0.02f);
   EXPECT_LT(tilt, 0.5f);
 
-  const auto file = test::freshDirectory("forest_gltf_tilt") / "forest.glb";
-  exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file, kGpu);
-  const tinygltf::Model model = test::loadGltf(file);
-  for (const tinygltf::Node& node : model.nodes) {
-    if (!node.extensions.count("EXT_mesh_gpu_instancing")) continue;
-    const tinygltf::Value& attributes =
-        node.extensions.at("EXT_mesh_gpu_instancing").Get("attributes");
-    const auto translations =
-        accessorValues<glm::vec3>(model, attributes.Get("TRANSLATION").GetNumberAsInt());
-    if (translations[0] != scene.forest.position[0]) continue;
-    const glm::vec4 q =
-        accessorValues<glm::vec4>(model, attributes.Get("ROTATION").GetNumberAsInt())[0];
-    const glm::vec3 up = glm::quat(q.w, q.x, q.y, q.z) * glm::vec3(0, 1, 0);
-    EXPECT_NEAR(std::atan2(up.x, up.y), tilt, 1e-5f);  // the stem leans east by the tilt
-    EXPECT_NEAR(up.z, 0.0f, 1e-5f);
-    return;
-  }
-  FAIL() << "the first tree's instance was not found";
+  const std::optional<glm::quat> rotation = exportedRotationOfFirstTree(scene, "forest_gltf_tilt");
+  ASSERT_TRUE(rotation) << "the first tree's instance was not found";
+  const glm::vec3 up = *rotation * glm::vec3(0, 1, 0);
+  EXPECT_NEAR(std::atan2(up.x, up.y), tilt, 1e-5f);  // the stem leans east by the tilt
+  EXPECT_NEAR(up.z, 0.0f, 1e-5f);
 }
 
 }  // namespace

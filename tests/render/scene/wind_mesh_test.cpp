@@ -127,25 +127,18 @@ TEST(LeanResponse, IsLinearThroughTheBasisAndTheMeasuredSamples) {
   EXPECT_EQ(LeanResponse{}.basesFor({6.0f, 0.0f}).x, 6.0f);  // unmeasured: the straight line
 }
 
-// The foliage's mean east offset, drawn with `bases` multiples of bendEast and in the model.
+// The foliage centre's east offset as drawn with `bases` multiples of bendEast, and in the
+// model grown with the lean.
 float foliageEast(const WindMesh& mesh, float bases) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (const WindPart& part : mesh.parts)
-    if (part.material != MaterialKind::Bark)
-      for (const TreeVertex& v : part.vertices) sum += v.position.x + bases * v.bendEast.x, ++n;
-  return static_cast<float>(sum / static_cast<double>(n));
+  const FoliageCentre centre = foliageCentre(mesh);
+  return static_cast<float>(centre.position.x + bases * centre.bendEast.x);
 }
 float foliageEast(const Species& species, double age, double lean_wg) {
-  const TreeMesh mesh = buildLod(
-      buildStrandTree(species, windBuildOptions(species, 3, age, {0.0, {lean_wg, 0.0}}, 0.0)),
-      species, 0);
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (const MeshPart& part : mesh.parts)
-    if (part.material != MaterialKind::Bark)
-      for (const glm::vec3& p : part.positions) sum += p.x, ++n;
-  return static_cast<float>(sum / static_cast<double>(n));
+  return static_cast<float>(
+      foliageCentre(buildLod(buildStrandTree(species, windBuildOptions(species, 3, age,
+                                                                       {0.0, {lean_wg, 0.0}}, 0.0)),
+                             species, 0))
+          .x);
 }
 
 // EcoMod turns branches toward the directed vector, so a strong lean moves a crown less than

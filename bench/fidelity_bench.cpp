@@ -16,6 +16,9 @@
 //                       [VIEWS = low,ground,300m]
 // (a scenario: the planted scene only, on its terrain)
 //        fidelity_bench --compare A.png B.png   (the same measures of two saved pictures)
+// --reuse-references (anywhere): read the references already saved in OUT_DIR instead of
+// drawing them again (they take minutes; the qualities seconds), e.g. while tuning a level.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -87,7 +90,8 @@ eco::RenderOptions referenceOptions(float minPixels) {
 void compareScene(const std::string& scene, const eco::Terrain& terrain, const eco::Forest& forest,
                   const eco::TreeLibrary& library, Renderers& renderers,
                   const eco::RenderTarget& target, float referenceMinPixels,
-                  const std::filesystem::path& out, bool checkReference, const std::string& only) {
+                  const std::filesystem::path& out, bool checkReference, const std::string& only,
+                  bool reuseReferences) {
   for (auto* r : {&renderers.lod0Baked, &renderers.lod1Baked}) r->setForestFloor(forest);
   eco::SceneRenderer& renderer = renderers.lod0Baked;  // the reference's
   for (const View& view : viewsOf(terrain, forest, library)) {
@@ -98,9 +102,11 @@ void compareScene(const std::string& scene, const eco::Terrain& terrain, const e
     std::printf("%s, %s view: --camera %.9g,%.9g,%.9g,%.9g,%.9g\n", scene.c_str(),
                 view.name.c_str(), at.x, at.y, at.z, view.camera.yaw_deg, view.camera.pitch_deg);
     renderer.render(&forest, view.camera, eco::RenderOptions{}, target);  // warm-up
+    const bool reuse = reuseReferences && std::filesystem::exists(stem + "reference.png");
     const Picture reference =
-        draw(renderer, forest, view.camera, referenceOptions(referenceMinPixels), target);
-    eco::writeRgb8Image(stem + "reference.png", reference.image);
+        reuse ? Picture{eco::readColorImage(stem + "reference.png"), {}}
+              : draw(renderer, forest, view.camera, referenceOptions(referenceMinPixels), target);
+    if (!reuse) eco::writeRgb8Image(stem + "reference.png", reference.image);
     const eco::Image referenceSmall = eco::downsampled(reference.image, 4);
     auto row = [&](const char* label, const Picture& p) {
       std::printf("  %-10s %10.0f ms %14zu triangles   mean diff %6.2f   SSIM %.3f (4x: %.3f)\n",
@@ -110,7 +116,7 @@ void compareScene(const std::string& scene, const eco::Terrain& terrain, const e
                   eco::structuralSimilarity(eco::downsampled(p.image, 4), referenceSmall));
     };
     row("reference", reference);
-    if (checkReference && referenceMinPixels > 0.0f) {
+    if (checkReference && referenceMinPixels > 0.0f && !reuse) {
       const Picture all = draw(renderer, forest, view.camera, referenceOptions(0.0f), target);
       eco::writeRgb8Image(stem + "all_lod0.png", all.image);
       row("all LOD0", all);
@@ -131,22 +137,27 @@ void compareScene(const std::string& scene, const eco::Terrain& terrain, const e
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc == 4 && std::string(argv[1]) == "--compare") {  // two saved pictures
-    const eco::Image a = eco::readColorImage(argv[2]), b = eco::readColorImage(argv[3]);
+  std::vector<std::string> args(argv, argv + argc);
+  const auto reuseFlag = std::find(args.begin(), args.end(), "--reuse-references");
+  const bool reuseReferences = reuseFlag != args.end();
+  if (reuseReferences) args.erase(reuseFlag);
+  argc = static_cast<int>(args.size());
+  if (argc == 4 && args[1] == "--compare") {  // two saved pictures
+    const eco::Image a = eco::readColorImage(args[2]), b = eco::readColorImage(args[3]);
     std::printf("mean diff %.2f   SSIM %.3f (4x: %.3f)\n", eco::meanAbsoluteDifference(a, b),
                 eco::structuralSimilarity(a, b),
                 eco::structuralSimilarity(eco::downsampled(a, 4), eco::downsampled(b, 4)));
     return 0;
   }
   const std::filesystem::path source =
-      argc > 1 ? std::filesystem::path(argv[1])
+      argc > 1 ? std::filesystem::path(args[1])
                : std::filesystem::path(ECOFOREST_DATA_DIR) / "valley.toml";
   const eco::FrameSize size =
-      argc > 2 ? eco::parseFrameSize(argv[2]).value_or(eco::FrameSize{}) : eco::FrameSize{};
-  const float referenceMinPixels = argc > 3 ? std::stof(argv[3]) : 8.0f;
-  const std::filesystem::path out = argc > 4 ? argv[4] : "fidelity";
-  const std::size_t planted = argc > 5 ? std::stoul(argv[5]) : 10000;
-  const std::string only = argc > 6 ? argv[6] : "";  // some of low,ground,300m: those only
+      argc > 2 ? eco::parseFrameSize(args[2]).value_or(eco::FrameSize{}) : eco::FrameSize{};
+  const float referenceMinPixels = argc > 3 ? std::stof(args[3]) : 8.0f;
+  const std::filesystem::path out = argc > 4 ? args[4] : "fidelity";
+  const std::size_t planted = argc > 5 ? std::stoul(args[5]) : 10000;
+  const std::string only = argc > 6 ? args[6] : "";  // some of low,ground,300m: those only
   std::filesystem::create_directories(out);
 
   std::optional<eco::RunFolder> run;
@@ -165,13 +176,13 @@ int main(int argc, char** argv) {
 
   const eco::Forest plantedForest = eco::demoForest(terrain, library, planted, scenario.seed);
   compareScene("planted", terrain, plantedForest, library, renderers, target, referenceMinPixels,
-               out, true, only);
+               out, true, only, reuseReferences);
   if (run) {
     const int year = run->snapshotYears.back();
     const eco::Forest forest =
         eco::forestFromSnapshot(eco::readSnapshot(*run, year), library, source.string());
     compareScene("run_year" + std::to_string(year), terrain, forest, library, renderers, target,
-                 referenceMinPixels, out, false, only);
+                 referenceMinPixels, out, false, only, reuseReferences);
   }
   return 0;
 }

@@ -40,6 +40,7 @@ void frameAxes(glm::vec3 f, glm::vec3& right, glm::vec3& up) {
 ImpostorSettings impostorSettingsFor(RenderQuality quality) {
   ImpostorSettings settings;
   settings.bakeLod = quality == RenderQuality::High ? 0 : 1;
+  settings.blendFrames = quality != RenderQuality::High;
   return settings;
 }
 

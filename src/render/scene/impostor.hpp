@@ -2,9 +2,9 @@
 // billboards, 000_...txt section 3.5, taken to many directions). Each species and age class
 // is rendered from frames x frames directions spread over the hemisphere by the
 // hemi-octahedral map into an atlas of albedo and normal tiles; a far tree is a point sprite
-// showing the frame whose direction is nearest to the direction it is seen from, lit per
-// pixel from the baked normals, so it agrees with the mesh under any sun. hemiOctEncode
-// exists in shaders/common.glsl too.
+// showing the frames around the direction it is seen from, lit per pixel from the baked
+// normals, so it agrees with the mesh under any sun. hemiOctEncode exists in
+// shaders/common.glsl too.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -18,11 +18,18 @@ struct ImpostorSettings {
   int frames = 8;       // per side of the atlas: frames^2 directions
   int tilePixels = 64;  // per frame
   int bakeLod = 1;  // the mesh the frames show (LOD1: the look of LOD0 at a fraction of the cost)
+  // Blend the three frames around the seen direction (barycentric over the frame grid), so
+  // the picture turns smoothly with the view instead of jumping from frame to frame; false:
+  // the nearest frame alone.
+  bool blendFrames = true;
 };
 
 // High quality bakes its frames from LOD0: far trees look like the full model (the 300 m
 // view's SSIM against LOD0 rises from 0.83 to 0.87) for about four times the baking time;
-// the others bake LOD1.
+// the others bake LOD1. Draft and balanced (view, where the camera moves and impostors stand
+// for trees up to 220-300 pixels tall) blend frames; high, whose impostors are under 60
+// pixels, shows the nearest: blending softened its LOD0 frames' fine branches and measured
+// further from the full model in still pictures (docs/rendering.md, "Impostors").
 ImpostorSettings impostorSettingsFor(RenderQuality quality);
 
 // Unit direction with y >= 0 -> [0, 1]^2, and back.

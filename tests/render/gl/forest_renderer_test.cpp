@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include "core/image_metrics.hpp"
 #include "gl_support.hpp"
 #include "render/gl/frame_uniforms.hpp"
 #include "render/gl/scene_renderer.hpp"
@@ -283,6 +284,53 @@ TEST(Impostor, MatchesTheMeshAtEachQualitysSwitchingSize) {
         << "mesh " << meshColor.r << "," << meshColor.g << "," << meshColor.b << " impostor "
         << impostorColor.r << "," << impostorColor.g << "," << impostorColor.b;
   }
+}
+
+// As a tree turns (or the camera moves round it) in steps of a degree, its impostor at the
+// balanced switching size changes by less than its mesh does, with frame blending; showing
+// the nearest frame alone, it stands still and then jumps where the frames change (every 13
+// degrees around the horizon ring). Measured, the largest step's mean difference (of 255):
+// mesh 1.37, blended 0.29, nearest frame 2.41.
+TEST(Impostor, BlendingFramesTurnsTheTreeWithoutJumps) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  const int type = library.typeIndex(1, 0, 1);
+  const float height = library.types()[type].height_m;
+  Forest forest;
+  forest.add(library, type, worldFromMap(160, 160, 100), height, 0.0f, 1.0f, 1);
+  const float switchPixels = switchPixelsFor(RenderQuality::Balanced)[2];
+  const int size = static_cast<int>(2.0f * switchPixels);
+  Camera camera;
+  const float distance = height * camera.pixelsPerRadian(size) / switchPixels;
+  camera.position = worldFromMap(160, 160 - distance, 100 + 0.5 * height);
+  RenderOptions options;
+  options.shadows = false;
+  const RenderTarget target = RenderTarget::create(size, size);
+  // The largest change of the picture (mean over its pixels) from one degree to the next.
+  auto largestStep = [&](SceneRenderer& renderer, int level) {
+    options.lod.forcedLevel = level;
+    double largest = 0.0;
+    Image previous;
+    for (int degree = 0; degree <= 30; ++degree) {
+      forest.yaw[0] = glm::radians(static_cast<float>(degree));
+      renderer.render(&forest, camera, options, target);
+      Image picture = readPixels(size, size);
+      if (degree > 0) largest = std::max(largest, meanAbsoluteDifference(picture, previous));
+      previous = std::move(picture);
+    }
+    return largest;
+  };
+  ImpostorSettings blended = impostorSettingsFor(RenderQuality::Balanced), nearest = blended;
+  ASSERT_TRUE(blended.blendFrames);
+  nearest.blendFrames = false;
+  SceneRenderer blending(terrain, 46.0, &library, blended);
+  SceneRenderer jumping(terrain, 46.0, &library, nearest);
+  const double mesh = largestStep(blending, 0);
+  const double blend = largestStep(blending, kLevelImpostor);
+  const double jump = largestStep(jumping, kLevelImpostor);
+  EXPECT_LT(blend, mesh);
+  EXPECT_GT(jump, 4.0 * blend);
 }
 
 // The vertex shader itself, read back with transform feedback: the displaced vertices of

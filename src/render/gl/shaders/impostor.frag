@@ -1,6 +1,7 @@
 flat in vec3 vCentre;
 flat in vec3 vRight, vUp, vToward;
-flat in vec2 vCell;
+flat in vec2 vCell[3];
+flat in vec3 vWeight;
 flat in vec3 vTint;
 flat in vec2 vKeep;
 flat in float vYaw;
@@ -15,11 +16,24 @@ out vec4 outColor;
 void main() {
   if (!ditherKeeps(vKeep)) discard;
   // gl_PointCoord runs downward; the atlas (OpenGL's convention) upward.
-  vec2 uv = (vCell + vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y)) / float(uFrames);
+  vec2 inFrame = vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y);
   // The atlases hold values times coverage (alpha), filtered and mipmapped as such: a
   // texel's alpha is the share of it that the tree covers, and dividing by it gives the
-  // mean over what covers it.
-  vec4 albedo = texture(uAlbedoAtlas, uv);
+  // mean over what covers it. The frames blend by their weights before the division, so a
+  // pixel that only one frame covers keeps that frame's colour at its weight's coverage:
+  // the silhouettes dissolve into each other as the view turns. (Each frame is shown as
+  // it is: reprojecting it onto the sprite's plane, right for a flat card, measured further
+  // from the mesh for a crown, which looks about as wide from every side.)
+  vec4 albedo = vec4(0.0), packedNormal = vec4(0.0), depthAndSky = vec4(0.0);
+  for (int i = 0; i < 3; ++i) {
+    if (vWeight[i] <= 0.0) continue;  // the same for the whole sprite
+    vec2 uv = (vCell[i] + inFrame) / float(uFrames);
+    albedo += vWeight[i] * texture(uAlbedoAtlas, uv);
+#ifndef SHADOW_PASS
+    packedNormal += vWeight[i] * texture(uNormalAtlas, uv);
+    depthAndSky += vWeight[i] * texture(uDepthAtlas, uv);
+#endif
+  }
   // A hashed alpha test: a far texel half covered by twigs keeps half its pixels, as the
   // mesh's thin branches hit about that share of pixel centres, instead of vanishing at a
   // fixed threshold of one half.
@@ -27,14 +41,14 @@ void main() {
 #ifdef SHADOW_PASS
   return;
 #else
-  vec4 packedNormal = texture(uNormalAtlas, uv) / albedo.a;
+  packedNormal /= albedo.a;
   // Not normalised: at the coarser mip levels the mean of many leaves' normals is shorter
   // than one, and shade() lights it as leaves facing many ways.
   vec3 normal = rotateYaw(packedNormal.xyz * 2.0 - 1.0, vYaw);
   // The pixel's own place in the crown, so that it takes its own shadow and fog: inner
   // and far-side leaves fall in the shadow of the tree and its neighbours as a mesh's do.
-  vec2 onSprite = vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y) * 2.0 - 1.0;
-  vec4 depthAndSky = texture(uDepthAtlas, uv) / albedo.a;
+  vec2 onSprite = inFrame * 2.0 - 1.0;
+  depthAndSky /= albedo.a;
   float toward = depthAndSky.r * 2.0 - 1.0;
   vec3 world = vCentre + onSprite.x * vRight + onSprite.y * vUp + toward * vToward;
   outColor = vec4(

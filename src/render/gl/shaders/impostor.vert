@@ -1,19 +1,21 @@
-// Hemi-octahedral impostors: one point sprite per tree, showing the baked frame whose
-// direction is nearest to the direction the tree is seen from. A sprite is one vertex where a
-// quad would be four: at a hundred thousand far trees the vertex stage is the cost.
+// Hemi-octahedral impostors: one point sprite per tree, showing the baked frames around the
+// direction the tree is seen from. A sprite is one vertex where a quad would be four: at a
+// hundred thousand far trees the vertex stage is the cost.
 layout(location = 8) in vec4 iPositionYaw;
 layout(location = 9) in vec4 iScale;
 layout(location = 10) in vec4 iTint;
 
 uniform vec4 uBounds;  // xyz centre of the baked bounding sphere (tree frame), w its radius
 uniform int uFrames;   // frames per side of the atlas
+uniform int uBlendFrames;      // 1: the three frames around the seen direction; 0: the nearest
 uniform float uPixelsPerUnit;  // viewport height / 2 times projection[1][1]
 
 flat out vec3 vCentre;
 // The sprite's world axes (right and up on the screen, toward the camera), each as long as
 // the tree's bounding radius: where each of its pixels lies.
 flat out vec3 vRight, vUp, vToward;
-flat out vec2 vCell;
+flat out vec2 vCell[3];  // the frames shown (column, row), with these weights
+flat out vec3 vWeight;
 flat out vec3 vTint;
 flat out vec2 vKeep;  // the dither thresholds this draw keeps: [lo, hi)
 flat out float vYaw;
@@ -24,19 +26,31 @@ void main() {
   vec3 centreWorld = iPositionYaw.xyz + rotateYaw(uBounds.xyz * scale, yaw);
 #ifdef SHADOW_PASS
   // Seen from the sun, through the shadow map's orthographic view.
-  vec3 local = rotateYaw(uToSun.xyz, -yaw);
-#else
-  vec3 local = rotateYaw(normalize(uCamera.xyz - centreWorld), -yaw);
-#endif
-  local.y = max(local.y, 0.0);  // seen from below the horizon: the horizon frame
-  vCell = clamp(floor(hemiOctEncode(local) * float(uFrames)), 0.0, float(uFrames - 1));
-  vCentre = centreWorld;
-  float radius = uBounds.w * max(scale.x, scale.y);
-#ifdef SHADOW_PASS
   vec3 toward = uToSun.xyz;
 #else
   vec3 toward = normalize(uCamera.xyz - centreWorld);
 #endif
+  vec3 local = rotateYaw(toward, -yaw);
+  local.y = max(local.y, 0.0);  // seen from below the horizon: the horizon frames
+  // Frame centres at whole numbers of the grid. Blending: the triangle of frame centres
+  // around the seen direction, by barycentric weights (as octahedral impostors blend), so
+  // the picture turns with the view instead of jumping from one frame to the next.
+  vec2 grid = hemiOctEncode(local) * float(uFrames) - 0.5;
+  vec2 base = floor(grid), f = grid - base;
+  if (uBlendFrames == 0) {
+    vCell[0] = vCell[1] = vCell[2] = floor(grid + 0.5);
+    vWeight = vec3(1.0, 0.0, 0.0);
+  } else {
+    bool lower = f.x + f.y <= 1.0;
+    vCell[0] = lower ? base : base + 1.0;
+    vCell[1] = base + vec2(1.0, 0.0);
+    vCell[2] = base + vec2(0.0, 1.0);
+    vWeight = lower ? vec3(1.0 - f.x - f.y, f.x, f.y) : vec3(f.x + f.y - 1.0, 1.0 - f.y, 1.0 - f.x);
+  }
+  for (int i = 0; i < 3; ++i) vCell[i] = clamp(vCell[i], 0.0, float(uFrames - 1));
+
+  vCentre = centreWorld;
+  float radius = uBounds.w * max(scale.x, scale.y);
   vec3 right = cross(-toward, vec3(0.0, 1.0, 0.0));
   right = length(right) > 1e-4 ? normalize(right) : vec3(1.0, 0.0, 0.0);
   vRight = radius * right;

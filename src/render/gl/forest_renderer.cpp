@@ -445,7 +445,8 @@ void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
   program.set("uFrames", impostorSettings_.frames);
   // Shadows take the nearest frame: the frame a caster shows the sun does not change as the
   // camera moves, so blending would cost three texture reads for no jump it smooths.
-  program.set("uBlendFrames", impostorSettings_.blendFrames && &program == &impostorProgram_);
+  const bool blend = impostorSettings_.blendFrames && &program == &impostorProgram_;
+  program.set("uBlendFrames", blend ? 1 : 0);
   program.set("uPixelsPerUnit", pixelsPerUnit);
   for (std::size_t t = 0; t < types.size(); ++t) {
     const Bucket bucket = bucketOf(t);

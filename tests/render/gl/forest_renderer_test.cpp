@@ -219,6 +219,28 @@ TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
   EXPECT_NEAR(glm::unpackUnorm1x16(p.skyVisibility), 0.37f, 1e-4f);
 }
 
+// One mature maple on flat ground, and a camera level with its middle, from the south, that
+// sees it `pixels` tall in a picture twice that size (the tree fills half its height).
+struct LoneMaple {
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  Forest forest;
+  float height_m = 0.0f;
+
+  LoneMaple() {
+    const int type = library.typeIndex(1, 0, 1);
+    height_m = library.types()[type].height_m;
+    forest.add(library, type, worldFromMap(160, 160, 100), height_m, 0.0f, 1.0f, 1);
+  }
+  static int pictureSize(float pixels) { return static_cast<int>(2.0f * pixels); }
+  Camera seenAt(float pixels) const {
+    Camera camera;
+    const float distance = height_m * camera.pixelsPerRadian(pictureSize(pixels)) / pixels;
+    camera.position = worldFromMap(160, 160 - distance, 100 + 0.5 * height_m);
+    return camera;
+  }
+};
+
 // At its switching size the impostor stands in for the meshes: the mature maple rendered at
 // 60 pixels high as LOD0 and as its impostor, compared as a whole, since single leaves fall
 // on different pixels. Tolerances: the two cover the same number of pixels to within 20 %
@@ -230,22 +252,16 @@ TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
 // and their mean colours differ by less than 20 of 255.
 TEST(Impostor, MatchesTheMeshAtEachQualitysSwitchingSize) {
   test::useHeadlessGl();
-  const TreeLibrary& library = test::smallLibrary();
-  const Terrain terrain = test::flatTerrain(33, 10.0);
-  const int type = library.typeIndex(1, 0, 1);
-  const float height = library.types()[type].height_m;
-  Forest forest;
-  forest.add(library, type, worldFromMap(160, 160, 100), height, 0.0f, 1.0f, 1);
+  const LoneMaple maple;
+  const Forest& forest = maple.forest;
   for (RenderQuality quality : {RenderQuality::Balanced, RenderQuality::High}) {
     SCOPED_TRACE(std::string(toString(quality)));
-    SceneRenderer renderer(terrain, 46.0, &library, impostorSettingsFor(quality));
+    SceneRenderer renderer(maple.terrain, 46.0, &maple.library, impostorSettingsFor(quality));
     const float switchPixels = switchPixelsFor(quality)[2];
-    const int size = static_cast<int>(2.0f * switchPixels);  // the tree fills half the height
-    Camera camera;
+    const int size = LoneMaple::pictureSize(switchPixels);
+    const Camera camera = maple.seenAt(switchPixels);
     RenderOptions options;
     options.shadows = false;
-    const float distance = height * camera.pixelsPerRadian(size) / switchPixels;
-    camera.position = worldFromMap(160, 160 - distance, 100 + 0.5 * height);
     const RenderTarget target = RenderTarget::create(size, size);
     Forest empty;
     renderer.render(&empty, camera, options, target);
@@ -293,17 +309,11 @@ TEST(Impostor, MatchesTheMeshAtEachQualitysSwitchingSize) {
 // mesh 1.37, blended 0.30, nearest frame 2.30.
 TEST(Impostor, BlendingFramesTurnsTheTreeWithoutJumps) {
   test::useHeadlessGl();
-  const TreeLibrary& library = test::smallLibrary();
-  const Terrain terrain = test::flatTerrain(33, 10.0);
-  const int type = library.typeIndex(1, 0, 1);
-  const float height = library.types()[type].height_m;
-  Forest forest;
-  forest.add(library, type, worldFromMap(160, 160, 100), height, 0.0f, 1.0f, 1);
+  LoneMaple maple;
+  Forest& forest = maple.forest;
   const float switchPixels = switchPixelsFor(RenderQuality::Balanced)[2];
-  const int size = static_cast<int>(2.0f * switchPixels);
-  Camera camera;
-  const float distance = height * camera.pixelsPerRadian(size) / switchPixels;
-  camera.position = worldFromMap(160, 160 - distance, 100 + 0.5 * height);
+  const int size = LoneMaple::pictureSize(switchPixels);
+  const Camera camera = maple.seenAt(switchPixels);
   RenderOptions options;
   options.shadows = false;
   const RenderTarget target = RenderTarget::create(size, size);
@@ -324,8 +334,8 @@ TEST(Impostor, BlendingFramesTurnsTheTreeWithoutJumps) {
   ImpostorSettings blended = impostorSettingsFor(RenderQuality::Balanced), nearest = blended;
   ASSERT_TRUE(blended.blendFrames);
   nearest.blendFrames = false;
-  SceneRenderer blending(terrain, 46.0, &library, blended);
-  SceneRenderer jumping(terrain, 46.0, &library, nearest);
+  SceneRenderer blending(maple.terrain, 46.0, &maple.library, blended);
+  SceneRenderer jumping(maple.terrain, 46.0, &maple.library, nearest);
   const double mesh = largestStep(blending, 0);
   const double blend = largestStep(blending, kLevelImpostor);
   const double jump = largestStep(jumping, kLevelImpostor);

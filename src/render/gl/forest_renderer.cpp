@@ -443,10 +443,7 @@ void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
   glVertexArrayVertexBuffer(impostorArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
   program.use();
   program.set("uFrames", impostorSettings_.frames);
-  // Shadows take the nearest frame: the frame a caster shows the sun does not change as the
-  // camera moves, so blending would cost three texture reads for no jump it smooths.
-  const bool blend = impostorSettings_.blendFrames && &program == &impostorProgram_;
-  program.set("uBlendFrames", blend ? 1 : 0);
+  program.set("uBlendFrames", impostorSettings_.blendFrames ? 1 : 0);
   program.set("uPixelsPerUnit", pixelsPerUnit);
   for (std::size_t t = 0; t < types.size(); ++t) {
     const Bucket bucket = bucketOf(t);

@@ -37,7 +37,14 @@ void main() {
   // the picture turns with the view instead of jumping from one frame to the next.
   vec2 grid = hemiOctEncode(local) * float(uFrames) - 0.5;
   vec2 base = floor(grid), f = grid - base;
-  if (uBlendFrames == 0) {
+#ifdef SHADOW_PASS
+  // Shadows take the nearest frame: the frame a caster shows the sun does not change as the
+  // camera moves, so blending would cost three texture reads for no jump it smooths.
+  bool blend = false;
+#else
+  bool blend = uBlendFrames != 0;
+#endif
+  if (!blend) {
     vCell[0] = vCell[1] = vCell[2] = floor(grid + 0.5);
     vWeight = vec3(1.0, 0.0, 0.0);
   } else {

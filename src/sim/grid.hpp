@@ -45,4 +45,8 @@ struct FieldStats {
 // Over the finite values (NaN marks cells outside the landscape); all zero when none is.
 FieldStats statsOf(const Field& field);
 
+// A field's value at a map position, interpolated bilinearly between the four nearest cell
+// centres; positions beyond the outer centres take the edge's values.
+float sampleBilinear(const Grid& grid, const Field& field, double east_m, double north_m);
+
 }  // namespace eco

@@ -21,4 +21,20 @@ TEST(Grid, Stats) {
   EXPECT_DOUBLE_EQ(s.max, 6.0);
 }
 
+TEST(Grid, SampleBilinearIsExactForAPlaneAndClampsAtTheEdges) {
+  // A plane v = 2 east + 3 north + 1 on 4 x 3 cells of 10 x 20 m: bilinear interpolation
+  // reproduces it anywhere between the cell centres.
+  Grid g{4, 3, 10.0, 20.0};
+  Field plane(g.cellCount());
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x)
+      plane[g.index(x, y)] = static_cast<float>(2.0 * g.eastOf(x) + 3.0 * g.northOf(y) + 1.0);
+  for (double east : {0.0, 4.0, 15.5, 30.0})
+    for (double north : {0.0, 7.0, 33.0, 40.0})
+      EXPECT_NEAR(sampleBilinear(g, plane, east, north), 2.0 * east + 3.0 * north + 1.0, 1e-3);
+  // Beyond the outer centres: the edge's value.
+  EXPECT_NEAR(sampleBilinear(g, plane, -5.0, 50.0), sampleBilinear(g, plane, 0.0, 40.0), 1e-4);
+  EXPECT_NEAR(sampleBilinear(g, plane, 99.0, -9.0), sampleBilinear(g, plane, 30.0, 0.0), 1e-4);
+}
+
 }  // namespace eco

@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "core/angles.hpp"
+#include "sim/conditions/slope.hpp"
 
 namespace eco {
 namespace {
@@ -115,6 +116,13 @@ void computeMoisture(const Terrain& terrain, const Field& slope_deg, double prec
       f = std::max(f, kPondMoisture);
     moisture[c] = static_cast<float>(std::clamp(f, kDriestMoisture, kWettestMoisture));
   }
+}
+
+Field moistureOf(const Terrain& terrain, double precipitation_mm) {
+  Field slope_deg, aspect_deg, moisture;
+  computeSlopeAspect(terrain, slope_deg, aspect_deg);
+  computeMoisture(terrain, slope_deg, precipitation_mm, moisture);
+  return moisture;
 }
 
 }  // namespace eco

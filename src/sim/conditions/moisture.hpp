@@ -38,5 +38,8 @@ inline constexpr double kPondMoisture = 9.0, kDriestMoisture = 1.0, kWettestMois
 double climateMoisture(double precipitation_mm);
 void computeMoisture(const Terrain& terrain, const Field& slope_deg, double precipitation_mm,
                      Field& moisture);
+// The same from the terrain alone (its slope computed here): for those that need no other
+// condition, such as the renderer's ground cover.
+Field moistureOf(const Terrain& terrain, double precipitation_mm);
 
 }  // namespace eco

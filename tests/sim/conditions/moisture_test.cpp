@@ -114,4 +114,12 @@ TEST(Moisture, WetterClimateIsWetter) {
   for (std::size_t c = 0; c < dry.size(); ++c) ASSERT_LT(dry[c], wet[c]);
 }
 
+TEST(Moisture, MoistureOfTheTerrainAloneIsTheConditionsField) {
+  const Terrain bowl = bowlTerrain();
+  Field slope, aspect, moisture;
+  computeSlopeAspect(bowl, slope, aspect);
+  computeMoisture(bowl, slope, 900.0, moisture);
+  EXPECT_EQ(moistureOf(bowl, 900.0), moisture);
+}
+
 }  // namespace eco

@@ -46,6 +46,7 @@ nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
           {"tree_triangles", s.forest.triangles},
           {"tree_triangles_all_lod0", s.forest.lod0Triangles},
           {"terrain_triangles", s.terrainTriangles},
+          {"ground_tufts", s.groundTufts},
           {"tree_gpu_mib",
            {{"meshes", mebibytes(still.treeMemory.meshBytes)},
             {"impostors", mebibytes(still.treeMemory.impostorBytes)}}},
@@ -91,17 +92,16 @@ Image drawStill(const SceneSource& source, const Forest& forest, const Camera& c
                 const ViewOptions& view, const std::optional<Field>& overlay, StillStats* stats) {
   const auto rendererStart = std::chrono::steady_clock::now();
   HeadlessGl gl;
-  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg, source.library.get(),
-                         impostorSettingsFor(view.quality));
-  if (overlay) renderer.terrain().setOverlay(view.overlay, *overlay);
-  renderer.setForestFloor(forest);
+  const std::unique_ptr<SceneRenderer> renderer = sceneRendererFor(source, view);
+  if (overlay) renderer->terrain().setOverlay(view.overlay, *overlay);
+  renderer->setForestFloor(forest);
   RenderTarget target = RenderTarget::create(view.size.width, view.size.height);
   const double setupMs = millisecondsSince(rendererStart);
   const FrameStats frame =
-      renderer.render(&forest, camera, renderOptionsFrom(view, source.scenario), target);
+      renderer->render(&forest, camera, renderOptionsFrom(view, source.scenario), target);
   if (stats)
     *stats = {frame, setupMs, glDescription(),
-              renderer.forest() ? renderer.forest()->gpuMemory() : ForestGpuMemory{}};
+              renderer->forest() ? renderer->forest()->gpuMemory() : ForestGpuMemory{}};
   return readPixels(target);
 }
 

@@ -88,12 +88,11 @@ void runTimelapse(const TimelapseArgs& args) {
       mp4 ? mp4Sink(out, settings.frame, settings.fps) : pngFolderSink(out);
   source.buildLibrary(LibrarySettings::shaped(!args.view.noShaping));
   HeadlessGl gl;
-  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg, source.library.get(),
-                         impostorSettingsFor(args.view.quality));
+  const std::unique_ptr<SceneRenderer> renderer = sceneRendererFor(source, args.view);
   const bool terminal = Progress::stderrIsTerminal();
   const auto start = std::chrono::steady_clock::now();
   const TimelapseTimings t = renderTimelapse(
-      run, *source.library, source.terrain, frameDrawer(renderer, settings.frame), settings, *sink,
+      run, *source.library, source.terrain, frameDrawer(*renderer, settings.frame), settings, *sink,
       [&](int done, int frames) {
         if (!terminal) return;
         const double elapsed =

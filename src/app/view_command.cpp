@@ -87,9 +87,8 @@ void runView(const ViewArgs& args) {
 
   Window window("ecoforest — " + source.scenario.name, args.view.size, "`view`",
                 "`ecoforest render` draws stills without one");
-  SceneRenderer renderer(source.terrain, source.scenario.climate.latitude_deg, source.library.get(),
-                         impostorSettingsFor(args.view.quality));
-  if (overlay) renderer.terrain().setOverlay(args.view.overlay, *overlay);
+  const std::unique_ptr<SceneRenderer> renderer = sceneRendererFor(source, args.view);
+  if (overlay) renderer->terrain().setOverlay(args.view.overlay, *overlay);
   RenderOptions options = renderOptionsFrom(args.view, source.scenario);
   std::optional<LodBudget> budget;
   if (args.targetFps > 0.0 && args.view.forceLevel < 0)
@@ -101,7 +100,7 @@ void runView(const ViewArgs& args) {
                           : Forest{};
   };
   Forest forest = shownForest();
-  renderer.setForestFloor(forest);
+  renderer->setForestFloor(forest);
   CameraController controller(cameraFrom(args.view, source.terrain, &forest, source.library.get()),
                               args.view.view == "ground");
   RenderTarget target;
@@ -130,20 +129,20 @@ void runView(const ViewArgs& args) {
     screenshot = screenshot || changed.screenshot;
     if (changed.overlay) {
       if (state.showOverlay)
-        renderer.terrain().setOverlay(args.view.overlay, *overlay);
+        renderer->terrain().setOverlay(args.view.overlay, *overlay);
       else
-        renderer.terrain().clearOverlay();
+        renderer->terrain().clearOverlay();
     }
     if (yearStepped || changed.year || changed.species) {
       forest = shownForest();
-      renderer.setForestFloor(forest);
+      renderer->setForestFloor(forest);
     }
 
     const FrameSize size = window.framebufferSize();
     if (size.width > 0 && size.height > 0) {
       if (target.width != size.width || target.height != size.height)
         target = RenderTarget::create(size.width, size.height);
-      stats = renderer.render(&forest, controller.camera(), options, target);
+      stats = renderer->render(&forest, controller.camera(), options, target);
     }
     if (screenshot) saveScreenshot(target, args.screenshot);
     window.present(target);

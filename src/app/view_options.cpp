@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "render/scene/tree_clearance.hpp"
+#include "sim/conditions/moisture.hpp"
 
 namespace eco {
 
@@ -105,7 +106,17 @@ RenderOptions renderOptionsFrom(const ViewOptions& o, const Scenario& scenario) 
   r.lod.forcedLevel = o.forceLevel;
   r.lod.impostors = !o.noImpostors;
   r.shadows = !o.noShadows;
+  r.groundCover = groundCoverFor(o.quality);
   return r;
+}
+
+std::unique_ptr<SceneRenderer> sceneRendererFor(const SceneSource& source, const ViewOptions& o) {
+  auto renderer =
+      std::make_unique<SceneRenderer>(source.terrain, source.scenario.climate.latitude_deg,
+                                      source.library.get(), impostorSettingsFor(o.quality));
+  renderer->setGroundMoisture(
+      moistureOf(source.terrain, source.scenario.climate.annualPrecipitation_mm));
+  return renderer;
 }
 
 }  // namespace eco

@@ -3,11 +3,13 @@
 // settings in one place.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "app/scene_source.hpp"
 #include "render/gl/scene_renderer.hpp"
 #include "render/scene/camera.hpp"
 #include "render/scene/forest.hpp"
@@ -51,5 +53,9 @@ void checkCameraOption(const ViewOptions& options);
 Camera cameraFrom(const ViewOptions& options, const Terrain& terrain, const Forest* trees = nullptr,
                   const TreeLibrary* library = nullptr);
 RenderOptions renderOptionsFrom(const ViewOptions& options, const Scenario& scenario);
+// The renderer of a scene at the options' quality (an OpenGL context current), its ground
+// cover following the moisture the scenario's terrain and climate give.
+std::unique_ptr<SceneRenderer> sceneRendererFor(const SceneSource& source,
+                                                const ViewOptions& options);
 
 }  // namespace eco

@@ -26,6 +26,7 @@ SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
     : terrainData_(terrain),
       latitude_deg_(latitude_deg),
       terrain_(terrain),
+      groundCover_(terrain),
       sky_({{GL_VERTEX_SHADER, "sky.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}),
       skyArray_(makeVertexArray()) {
   if (library) forest_ = std::make_unique<ForestRenderer>(*library, impostors, uniforms_);
@@ -127,7 +128,9 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDepthMask(GL_TRUE);
   glEnable(GL_DEPTH_TEST);
-  stats.terrainTriangles = terrain_.draw(Frustum::fromMatrix(viewProj), false);
+  const Frustum frustum = Frustum::fromMatrix(viewProj);
+  stats.terrainTriangles = terrain_.draw(frustum, false);
+  stats.groundTufts = groundCover_.draw(camera.position, frustum, options.groundCover);
   if (forest_ && forest) forest_->draw();
   glFinish();
   checkGl("SceneRenderer::render");
@@ -136,7 +139,10 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
 }
 
 void SceneRenderer::setForestFloor(const Forest& forest) {
-  if (forest_) terrain_.setCanopyCover(canopyCover(forest, forest_->library(), terrainData_.grid));
+  if (!forest_) return;
+  Field cover = canopyCover(forest, forest_->library(), terrainData_.grid);
+  terrain_.setCanopyCover(cover);
+  groundCover_.cover().setCanopyCover(std::move(cover));
 }
 
 DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size) {

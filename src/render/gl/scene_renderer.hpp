@@ -9,6 +9,7 @@
 #include "render/gl/forest_renderer.hpp"
 #include "render/gl/frame_uniforms.hpp"
 #include "render/gl/gl_objects.hpp"
+#include "render/gl/ground_cover_renderer.hpp"
 #include "render/gl/shader.hpp"
 #include "render/gl/terrain_renderer.hpp"
 #include "render/scene/camera.hpp"
@@ -33,12 +34,16 @@ class SceneRenderer {
                     const RenderTarget& target);
 
   // Lays the forest floor under these trees (leaf litter where crowns cover the ground,
-  // forest_floor.hpp); kept until called again, for the forest shown.
+  // forest_floor.hpp, and the ground cover's light); kept until called again.
   void setForestFloor(const Forest& forest);
+  // The ground's moisture on Ellenberg's F scale (sim's moistureOf), which the ground cover
+  // follows; without it the ground is fresh everywhere.
+  void setGroundMoisture(Field moisture) { groundCover_.cover().setMoisture(std::move(moisture)); }
   // The library's meshes changed (ForestRenderer::reloadMeshes).
   void reloadTrees(bool bakeImpostors);
 
   TerrainRenderer& terrain() { return terrain_; }
+  GroundCover& groundCover() { return groundCover_.cover(); }
   const Terrain& terrainData() const { return terrainData_; }
   ForestRenderer* forest() { return forest_.get(); }
 
@@ -51,6 +56,7 @@ class SceneRenderer {
   double latitude_deg_;
   FrameUniformBuffer uniforms_;
   TerrainRenderer terrain_;
+  GroundCoverRenderer groundCover_;
   std::unique_ptr<ForestRenderer> forest_;
   Program sky_;
   GlName skyArray_;

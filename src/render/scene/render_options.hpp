@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "render/scene/culling.hpp"
+#include "render/scene/ground_cover.hpp"
 #include "render/scene/shadow_cascades.hpp"
 #include "render/scene/sun.hpp"
 #include "sim/scenario.hpp"
@@ -32,6 +33,7 @@ struct RenderOptions {
   ShadowReach shadowReach;  // the nearest and the farthest cascade's squares
   int shadowMapSize = 2048;
   std::optional<float> fogDensity;  // per metre; default clear air (100 km visibility)
+  GroundCoverSettings groundCover;  // default none; the command line's by quality
 };
 
 struct ForestStats {
@@ -49,8 +51,9 @@ struct ForestStats {
 struct FrameStats {
   ForestStats forest;
   std::size_t terrainTriangles = 0;
-  double prepareMs = 0.0;  // culling, LOD choice, instance upload (CPU)
-  double frameMs = 0.0;    // the whole frame until the GPU finished
+  std::size_t groundTufts = 0;  // grass and herb tufts drawn
+  double prepareMs = 0.0;       // culling, LOD choice, instance upload (CPU)
+  double frameMs = 0.0;         // the whole frame until the GPU finished
   std::size_t triangles() const { return forest.triangles + terrainTriangles; }
 };
 

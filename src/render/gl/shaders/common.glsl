@@ -129,6 +129,28 @@ float coverageThreshold() {
 }
 #endif
 
+// Smooth value noise in the ground plane (no blocks: each cell blends into its
+// neighbours), and a sum of octaves of it.
+float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
+float valueNoise(vec2 p) {
+  vec2 i = floor(p), f = fract(p);
+  f = f * f * (3.0 - 2.0 * f);
+  return mix(mix(hash(i), hash(i + vec2(1, 0)), f.x), mix(hash(i + vec2(0, 1)), hash(i + vec2(1, 1)), f.x),
+             f.y);
+}
+float octaves(vec2 p) {
+  return 0.5 * valueNoise(p) + 0.3 * valueNoise(2.03 * p + 17.0) + 0.2 * valueNoise(4.01 * p + 41.0);
+}
+
+// The ground's patches of about 3 m (0..1), and the meadow's colour there: olive higher up
+// (`altitudeShare` 0 at the map's lowest point, 1 at its highest), drier and lighter in
+// patches. The terrain and the grass tufts standing on it (ground_cover.vert) share it.
+float groundPatches(vec2 ground) { return octaves(ground * 0.33); }
+vec3 meadowGrass(float altitudeShare, float patches) {
+  vec3 grass = mix(vec3(0.045, 0.09, 0.018), vec3(0.10, 0.10, 0.035), altitudeShare);
+  return grass * mix(vec3(0.8, 0.85, 0.8), vec3(1.2, 1.15, 1.0), patches);
+}
+
 // Hemi-octahedral impostor frames (impostor.hpp): unit direction (y >= 0) -> [0, 1]^2.
 vec2 hemiOctEncode(vec3 d) {
   d /= abs(d.x) + abs(d.y) + abs(d.z);

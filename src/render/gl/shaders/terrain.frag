@@ -12,19 +12,6 @@ uniform int uHasCanopyCover;
 
 out vec4 outColor;
 
-// Smooth value noise in the ground plane (no blocks: each cell blends into its
-// neighbours), and a sum of octaves of it.
-float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
-float valueNoise(vec2 p) {
-  vec2 i = floor(p), f = fract(p);
-  f = f * f * (3.0 - 2.0 * f);
-  return mix(mix(hash(i), hash(i + vec2(1, 0)), f.x), mix(hash(i + vec2(0, 1)), hash(i + vec2(1, 1)), f.x),
-             f.y);
-}
-float octaves(vec2 p) {
-  return 0.5 * valueNoise(p) + 0.3 * valueNoise(2.03 * p + 17.0) + 0.2 * valueNoise(4.01 * p + 41.0);
-}
-
 void main() {
 #ifdef SHADOW_PASS
   return;
@@ -38,10 +25,8 @@ void main() {
     float height = clamp((vWorld.y - uAltitudeRange.x) / max(uAltitudeRange.y - uAltitudeRange.x, 1.0), 0.0, 1.0);
     // Detail at three scales, so that no facet or cell shows from eye height to a
     // kilometre: tufts (0.3 m), patches (3 m) and swathes (30 m).
-    float tufts = octaves(ground * 3.0), patches = octaves(ground * 0.33), swathes = octaves(ground * 0.033);
-    // Open ground: meadow grass, olive higher up, drier and lighter in patches.
-    vec3 grass = mix(vec3(0.045, 0.09, 0.018), vec3(0.10, 0.10, 0.035), height);
-    grass *= mix(vec3(0.8, 0.85, 0.8), vec3(1.2, 1.15, 1.0), patches);
+    float tufts = octaves(ground * 3.0), patches = groundPatches(ground), swathes = octaves(ground * 0.033);
+    vec3 grass = meadowGrass(height, patches);
     // Forest floor: brown leaf litter with moss, the mix changing patch by patch.
     vec3 litter = mix(vec3(0.085, 0.050, 0.022), vec3(0.060, 0.045, 0.025), tufts);
     vec3 moss = vec3(0.035, 0.060, 0.015);

@@ -76,7 +76,7 @@ std::size_t GroundCoverRenderer::draw(glm::vec3 eye, const Frustum& frustum,
   staging_.clear();
   for (const GroundTuft& t : tufts)
     staging_.push_back({glm::vec4(t.position, t.height_m),
-                        glm::vec4(t.yaw, static_cast<float>(t.plant), t.variation, 0.0f)});
+                        glm::vec4(t.yaw, static_cast<float>(t.plant), t.variation, t.moisture)});
   if (staging_.size() > capacity_) {
     capacity_ = staging_.size() + staging_.size() / 2;
     glNamedBufferData(instances_.id(), static_cast<GLsizeiptr>(capacity_ * sizeof(Instance)),

@@ -29,7 +29,7 @@ class GroundCoverRenderer {
  private:
   struct Instance {
     glm::vec4 foot;  // xyz world, w height
-    glm::vec4 look;  // yaw, plant, variation, unused
+    glm::vec4 look;  // yaw, plant, variation, moisture
   };
   GroundCover cover_;
   Program program_;

@@ -145,6 +145,11 @@ void SceneRenderer::setForestFloor(const Forest& forest) {
   groundCover_.cover().setCanopyCover(std::move(cover));
 }
 
+void SceneRenderer::setGroundMoisture(Field moisture) {
+  terrain_.setMoisture(moisture);
+  groundCover_.cover().setMoisture(std::move(moisture));
+}
+
 DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size) {
   auto target = std::make_shared<RenderTarget>(RenderTarget::create(size.width, size.height));
   return [&renderer, target](const Forest& forest, const Camera& camera,

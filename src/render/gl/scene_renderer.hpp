@@ -36,9 +36,9 @@ class SceneRenderer {
   // Lays the forest floor under these trees (leaf litter where crowns cover the ground,
   // forest_floor.hpp, and the ground cover's light); kept until called again.
   void setForestFloor(const Forest& forest);
-  // The ground's moisture on Ellenberg's F scale (sim's moistureOf), which the ground cover
-  // follows; without it the ground is fresh everywhere.
-  void setGroundMoisture(Field moisture) { groundCover_.cover().setMoisture(std::move(moisture)); }
+  // The ground's moisture on Ellenberg's F scale (sim's moistureOf), which the meadow's colour
+  // and the ground cover follow; without it the ground is fresh everywhere.
+  void setGroundMoisture(Field moisture);
   // The library's meshes changed (ForestRenderer::reloadMeshes).
   void reloadTrees(bool bakeImpostors);
 

@@ -118,6 +118,16 @@ void TerrainRenderer::setCanopyCover(const Field& cover) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
 }
 
+void TerrainRenderer::setMoisture(const Field& moisture) {
+  // Floats, filtered between cell centres; an outside cell (NaN) is fresh.
+  std::vector<float> values(moisture.size());
+  for (std::size_t c = 0; c < moisture.size(); ++c)
+    values[c] = std::isfinite(moisture[c]) ? moisture[c] : 5.0f;
+  moisture_ = makeTextureStorage(GL_R32F, grid_.width, grid_.height);
+  glTextureSubImage2D(moisture_.id(), 0, 0, 0, grid_.width, grid_.height, GL_RED, GL_FLOAT,
+                      values.data());
+}
+
 std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass) const {
   counts_.clear();
   offsets_.clear();
@@ -135,6 +145,8 @@ std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass) const
   if (hasOverlay()) glBindTextureUnit(3, overlay_.id());
   program.set("uHasCanopyCover", canopyCover_ ? 1 : 0);
   if (canopyCover_) glBindTextureUnit(6, canopyCover_.id());
+  program.set("uHasMoisture", moisture_ ? 1 : 0);
+  if (moisture_) glBindTextureUnit(8, moisture_.id());
   glBindVertexArray(vertexArray_.id());
   glMultiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(),
                       static_cast<GLsizei>(counts_.size()));

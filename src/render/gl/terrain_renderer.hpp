@@ -27,6 +27,9 @@ class TerrainRenderer {
   // The share of each cell under crowns (forest_floor.hpp): leaf litter and moss there,
   // grass in the open. Without it the ground is open everywhere.
   void setCanopyCover(const Field& cover);
+  // The ground's moisture (Ellenberg F, sim's moistureOf): dry meadows brown toward straw,
+  // wet ones are lusher. Without it the ground is fresh (F 5) everywhere.
+  void setMoisture(const Field& moisture);
   bool hasOverlay() const { return static_cast<bool>(overlay_); }
 
   // Draws the chunks in the frustum; returns the triangles drawn.
@@ -39,7 +42,7 @@ class TerrainRenderer {
   Grid grid_;
   float lowest_m_ = 0.0f, highest_m_ = 0.0f;
   Program program_, shadowProgram_;
-  GlName vertices_, indices_, vertexArray_, overlay_, canopyCover_;
+  GlName vertices_, indices_, vertexArray_, overlay_, canopyCover_, moisture_;
   GLsizei indexCount_ = 0;
   struct Chunk {
     std::size_t firstIndex = 0;

@@ -186,6 +186,7 @@ std::vector<GroundTuft> GroundCover::scatter(glm::vec3 eye, const Frustum& frust
         continue;
       tuft.yaw = static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi));
       tuft.variation = static_cast<float>(rng.uniform());
+      tuft.moisture = moisture;
       tufts.push_back(tuft);
     }
   return tufts;

@@ -42,6 +42,7 @@ struct GroundTuft {
   float height_m = 0.0f;
   float yaw = 0.0f;        // radians about the vertical
   float variation = 0.0f;  // 0..1: the tuft's own shade of its colour
+  float moisture = 5.0f;   // of the ground it stands on (Ellenberg F), for its colour
   GroundPlant plant = GroundPlant::Grass;
 };
 

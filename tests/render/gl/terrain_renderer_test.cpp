@@ -105,5 +105,33 @@ TEST(TerrainRenderer, GroundUnderCrownsIsLeafLitterAndOpenGroundGrass) {
   EXPECT_GT(std::sqrt(variance / (20 * 48)), 0.01);
 }
 
+TEST(TerrainRenderer, DryMeadowsBrownTowardStrawAndWetOnesAreDarkerGreen) {
+  test::useHeadlessGl();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer renderer(terrain, 46.0, nullptr);
+  const Image unset = renderFromAbove(renderer, 64);
+  // Fresh everywhere (F 5) is the ground without a moisture field.
+  renderer.terrain().setMoisture(Field(terrain.grid.cellCount(), 5.0f));
+  EXPECT_EQ(test::compareImages(unset, renderFromAbove(renderer, 64)).max, 0);
+  // Dry (F 2.5) in the west half, wet (F 8) in the east.
+  Field moisture(terrain.grid.cellCount(), 2.5f);
+  for (int y = 0; y < 33; ++y)
+    for (int x = 17; x < 33; ++x) moisture[terrain.grid.index(x, y)] = 8.0f;
+  renderer.terrain().setMoisture(moisture);
+  const Image image = renderFromAbove(renderer, 64);
+  auto meanOver = [&](const Image& picture, int x0, int x1) {
+    glm::vec3 sum(0.0f);
+    for (int y = 8; y < 56; ++y)
+      for (int x = x0; x < x1; ++x) sum += glm::vec3(picture.get(x, y));
+    return sum / static_cast<float>((x1 - x0) * 48);
+  };
+  const glm::vec3 fresh = meanOver(unset, 4, 24), dry = meanOver(image, 4, 24),
+                  wet = meanOver(image, 40, 60);
+  // Straw: redder for its green than a fresh meadow; wet: darker and greener for its red.
+  EXPECT_GT(dry.r / dry.g, 1.15f * fresh.r / fresh.g);
+  EXPECT_LT(wet.r + wet.g, 0.95f * (fresh.r + fresh.g));
+  EXPECT_LT(wet.r / wet.g, 0.95f * fresh.r / fresh.g);
+}
+
 }  // namespace
 }  // namespace eco

@@ -144,10 +144,14 @@ float octaves(vec2 p) {
 
 // The ground's patches of about 3 m (0..1), and the meadow's colour there: olive higher up
 // (`altitudeShare` 0 at the map's lowest point, 1 at its highest), drier and lighter in
-// patches. The terrain and the grass tufts standing on it (ground_cover.vert) share it.
+// patches; by the ground's `moisture` (Ellenberg F), browning toward straw on dry ground
+// (F 4 down to 2.5) and lusher, darker and bluer on wet ground (F 6 up to 8). The terrain
+// and the grass tufts standing on it (ground_cover.vert) share it.
 float groundPatches(vec2 ground) { return octaves(ground * 0.33); }
-vec3 meadowGrass(float altitudeShare, float patches) {
+vec3 meadowGrass(float altitudeShare, float patches, float moisture) {
   vec3 grass = mix(vec3(0.045, 0.09, 0.018), vec3(0.10, 0.10, 0.035), altitudeShare);
+  grass = mix(grass, vec3(0.12, 0.10, 0.045), 0.8 * smoothstep(4.0, 2.5, moisture));
+  grass = mix(grass, vec3(0.025, 0.065, 0.025), 0.8 * smoothstep(6.0, 8.0, moisture));
   return grass * mix(vec3(0.8, 0.85, 0.8), vec3(1.2, 1.15, 1.0), patches);
 }
 

@@ -3,7 +3,8 @@
 // none pops in, their tips swaying in the wind.
 layout(location = 0) in vec3 aCorner;  // x across the card (-0.5..0.5), y up (0..1), z its angle
 layout(location = 1) in vec4 iFoot;    // world position of the tuft's foot; w its height (m)
-layout(location = 2) in vec4 iLook;    // x yaw (radians), y plant (0 grass, 1 herb), z variation
+layout(location = 2) in vec4 iLook;    // x yaw (radians), y plant (0 grass, 1 herb), z variation,
+                                       // w the ground's moisture (Ellenberg F)
 
 uniform float uRadius;        // of the ground cover (m)
 uniform vec2 uAltitudeRange;  // lowest and highest altitude of the map
@@ -37,7 +38,7 @@ void main() {
   if (iLook.y < 0.5) {
     // The meadow's own colour where the tuft stands, as the terrain shows it.
     float altitudeShare = clamp((iFoot.y - uAltitudeRange.x) / max(uAltitudeRange.y - uAltitudeRange.x, 1.0), 0.0, 1.0);
-    vAlbedo = meadowGrass(altitudeShare, groundPatches(iFoot.xz)) * variation;
+    vAlbedo = meadowGrass(altitudeShare, groundPatches(iFoot.xz), iLook.w) * variation;
   } else {
     vAlbedo = vec3(0.030, 0.070, 0.018) * variation;  // a woodland herb's deeper green
   }

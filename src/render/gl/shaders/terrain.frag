@@ -1,5 +1,5 @@
-// Ground coloured by altitude, slope and the crowns above it (grass in the open, leaf litter
-// and moss under trees, rock on steep slopes), or by a condition map (the overlay).
+// Ground coloured by altitude, slope, moisture and the crowns above it (grass in the open,
+// leaf litter and moss under trees, rock on steep slopes), or by a condition map (the overlay).
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vMapUv;
@@ -9,6 +9,8 @@ uniform int uHasOverlay;
 uniform vec2 uAltitudeRange;  // lowest and highest altitude of the map
 layout(binding = 6) uniform sampler2D uCanopyCover;  // share of each cell under crowns
 uniform int uHasCanopyCover;
+layout(binding = 8) uniform sampler2D uMoisture;  // Ellenberg F of each cell
+uniform int uHasMoisture;
 
 out vec4 outColor;
 
@@ -26,7 +28,8 @@ void main() {
     // Detail at three scales, so that no facet or cell shows from eye height to a
     // kilometre: tufts (0.3 m), patches (3 m) and swathes (30 m).
     float tufts = octaves(ground * 3.0), patches = groundPatches(ground), swathes = octaves(ground * 0.033);
-    vec3 grass = meadowGrass(height, patches);
+    float moisture = uHasMoisture != 0 ? texture(uMoisture, vMapUv).r : 5.0;  // fresh
+    vec3 grass = meadowGrass(height, patches, moisture);
     // Forest floor: brown leaf litter with moss, the mix changing patch by patch.
     vec3 litter = mix(vec3(0.085, 0.050, 0.022), vec3(0.060, 0.045, 0.025), tufts);
     vec3 moss = vec3(0.035, 0.060, 0.015);

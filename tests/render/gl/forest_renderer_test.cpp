@@ -242,12 +242,12 @@ struct LoneMaple {
 };
 
 // At its switching size the impostor stands in for the meshes: the mature maple rendered at
-// 60 pixels high as LOD0 and as its impostor, compared as a whole, since single leaves fall
+// that size as LOD0 and as its impostor, compared as a whole, since single leaves fall
 // on different pixels. Tolerances: the two cover the same number of pixels to within 20 %
 // (leaf cards flicker in and out at this size), and their mean colours over the tree differ
 // by less than 20 of 255 (RMS over the channels; the impostor shows LOD1's clustered leaves
 // from up to 11 degrees off, out of 64-pixel tiles).
-// At each quality's switching size to impostors (balanced 220 px, high 60 px), drawn with
+// At each quality's switching size to impostors (balanced 220 px, high 40 px), drawn with
 // the impostors that quality bakes, the impostor covers the mesh's pixels to within 20 %
 // and their mean colours differ by less than 20 of 255.
 TEST(Impostor, MatchesTheMeshAtEachQualitysSwitchingSize) {

@@ -119,11 +119,11 @@ void TerrainRenderer::setCanopyCover(const Field& cover) {
 }
 
 void TerrainRenderer::setMoisture(const Field& moisture) {
-  // Floats, filtered between cell centres; an outside cell (NaN) is fresh.
+  // Half floats (F to a hundredth), filtered between cell centres; an outside cell (NaN) is fresh.
   std::vector<float> values(moisture.size());
   for (std::size_t c = 0; c < moisture.size(); ++c)
     values[c] = std::isfinite(moisture[c]) ? moisture[c] : 5.0f;
-  moisture_ = makeTextureStorage(GL_R32F, grid_.width, grid_.height);
+  moisture_ = makeTextureStorage(GL_R16F, grid_.width, grid_.height);
   glTextureSubImage2D(moisture_.id(), 0, 0, 0, grid_.width, grid_.height, GL_RED, GL_FLOAT,
                       values.data());
 }

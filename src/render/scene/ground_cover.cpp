@@ -138,7 +138,8 @@ float groundTuftHeight(GroundPlant plant, float moisture, float draw) {
          (1.0f + 0.5f * smoothstep(6.5f, 8.5f, moisture));
 }
 
-GroundCover::GroundCover(const Terrain& terrain) : terrain_(terrain) {
+GroundCover::GroundCover(const Terrain& terrain)
+    : terrain_(terrain), highest_m_(static_cast<float>(statsOf(terrain.height_m).max)) {
   Field aspect_deg;
   computeSlopeAspect(terrain, slope_deg_, aspect_deg);
 }
@@ -147,6 +148,7 @@ std::vector<GroundTuft> GroundCover::scatter(glm::vec3 eye, const Frustum& frust
                                              const GroundCoverSettings& settings) const {
   std::vector<GroundTuft> tufts;
   if (settings.radius_m <= 0.0f || settings.spacing_m <= 0.0f) return tufts;
+  if (eye.y - highest_m_ > settings.radius_m) return tufts;  // above every tuft's reach
   const Grid& grid = terrain_.grid;
   const glm::dvec3 eyeMap = mapFromWorld(eye);
   const double spacing = settings.spacing_m, radius = settings.radius_m;

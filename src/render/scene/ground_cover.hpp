@@ -62,6 +62,7 @@ class GroundCover {
 
  private:
   const Terrain& terrain_;
+  float highest_m_;  // the terrain's highest altitude
   Field slope_deg_, cover_, moisture_;
 };
 

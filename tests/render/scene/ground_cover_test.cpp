@@ -83,6 +83,9 @@ TEST(GroundCover, TuftsStandOnTheGroundWithinTheRadiusAtTheMeadowsDensity) {
   const double expected =
       0.9 * std::numbers::pi * reach * reach / (kNear.spacing_m * kNear.spacing_m);
   EXPECT_NEAR(static_cast<double>(tufts.size()), expected, 0.03 * expected);
+  // From higher than the radius above the ground there are none; just under it, a few.
+  EXPECT_TRUE(cover.scatter(worldFromMap(160.0, 160.0, 112.5), everywhere(), kNear).empty());
+  EXPECT_FALSE(cover.scatter(worldFromMap(160.0, 160.0, 111.0), everywhere(), kNear).empty());
 }
 
 TEST(GroundCover, ATuftStaysWhereItIsAsTheCameraMoves) {

@@ -12,6 +12,7 @@
 
 #include "render/scene/camera.hpp"
 #include "sim/conditions/condition_maps.hpp"
+#include "sim/conditions/moisture.hpp"
 #include "sim/terrain_mesh.hpp"
 
 namespace eco {
@@ -122,7 +123,7 @@ void TerrainRenderer::setMoisture(const Field& moisture) {
   // Half floats (F to a hundredth), filtered between cell centres; an outside cell (NaN) is fresh.
   std::vector<float> values(moisture.size());
   for (std::size_t c = 0; c < moisture.size(); ++c)
-    values[c] = std::isfinite(moisture[c]) ? moisture[c] : 5.0f;
+    values[c] = std::isfinite(moisture[c]) ? moisture[c] : kFreshMoisture;
   moisture_ = makeTextureStorage(GL_R16F, grid_.width, grid_.height);
   glTextureSubImage2D(moisture_.id(), 0, 0, 0, grid_.width, grid_.height, GL_RED, GL_FLOAT,
                       values.data());

@@ -10,6 +10,7 @@
 
 #include "core/frames.hpp"
 #include "core/random.hpp"
+#include "sim/conditions/moisture.hpp"
 #include "sim/conditions/slope.hpp"
 
 namespace eco {
@@ -22,7 +23,6 @@ float smoothstep(float edge0, float edge1, float x) {
 
 // Where the terrain shader shows rock instead of a meadow (a normal's y below about 0.62).
 constexpr float kBareSlope_deg = 50.0f, kCoveredSlope_deg = 40.0f;
-constexpr float kFreshMoisture = 5.0f;  // F 5, where a scene gives no moisture
 
 constexpr int kAtlasHalf = 256;  // each plant's square of the atlas
 

@@ -12,6 +12,7 @@
 
 #include "core/image.hpp"
 #include "render/scene/culling.hpp"
+#include "sim/conditions/moisture.hpp"
 #include "sim/grid.hpp"
 #include "sim/terrain.hpp"
 
@@ -40,9 +41,9 @@ float groundTuftHeight(GroundPlant plant, float moisture, float draw);
 struct GroundTuft {
   glm::vec3 position{0.0f};  // world: the foot of the tuft, on the terrain's triangles
   float height_m = 0.0f;
-  float yaw = 0.0f;        // radians about the vertical
-  float variation = 0.0f;  // 0..1: the tuft's own shade of its colour
-  float moisture = 5.0f;   // of the ground it stands on (Ellenberg F), for its colour
+  float yaw = 0.0f;                 // radians about the vertical
+  float variation = 0.0f;           // 0..1: the tuft's own shade of its colour
+  float moisture = kFreshMoisture;  // of the ground it stands on (Ellenberg F), for its colour
   GroundPlant plant = GroundPlant::Grass;
 };
 

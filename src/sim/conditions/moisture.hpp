@@ -35,6 +35,8 @@ Field wetnessIndex(const Terrain& terrain, const Field& accumulation, const Fiel
 inline constexpr double kMoistureAt1100mm = 5.0, kPrecipitationPerUnit_mm = 400.0;
 inline constexpr double kMoisturePerWetness = 0.25, kReferenceWetness = 6.0;
 inline constexpr double kPondMoisture = 9.0, kDriestMoisture = 1.0, kWettestMoisture = 12.0;
+// Fresh ground (F 5): what the renderer assumes where it is given no moisture.
+inline constexpr float kFreshMoisture = 5.0f;
 double climateMoisture(double precipitation_mm);
 void computeMoisture(const Terrain& terrain, const Field& slope_deg, double precipitation_mm,
                      Field& moisture);

@@ -28,7 +28,8 @@ void main() {
     // Detail at three scales, so that no facet or cell shows from eye height to a
     // kilometre: tufts (0.3 m), patches (3 m) and swathes (30 m).
     float tufts = octaves(ground * 3.0), patches = groundPatches(ground), swathes = octaves(ground * 0.033);
-    float moisture = uHasMoisture != 0 ? texture(uMoisture, vMapUv).r : 5.0;  // fresh
+    // Without a moisture field: fresh, F 5 (kFreshMoisture in sim/conditions/moisture.hpp).
+    float moisture = uHasMoisture != 0 ? texture(uMoisture, vMapUv).r : 5.0;
     vec3 grass = meadowGrass(height, patches, moisture);
     // Forest floor: brown leaf litter with moss, the mix changing patch by patch.
     vec3 litter = mix(vec3(0.085, 0.050, 0.022), vec3(0.060, 0.045, 0.025), tufts);

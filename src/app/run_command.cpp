@@ -58,8 +58,11 @@ int runScenario(const RunArguments& args) {
   std::cout << fmt::format("{}: {} years -> {}\n", options.scenarioFile.stem().string(),
                            summary.lastYear, summary.folder.string());
   for (const SpeciesCount& c : summary.counts)
-    std::cout << fmt::format("  {:<10} {:>8} plants, {:>8} taller than 5 m\n", c.name, c.alive,
-                             c.over5m);
+    std::cout << fmt::format(
+        "  {:<10} {:>8} plants, {:>8} taller than 5 m, stems in gaps or at their edges {:.0f} %\n",
+        c.name, c.alive, c.over5m, 100.0 * c.gaps.shares.gapsOrEdges);
+  std::cout << fmt::format("  canopy gaps and their edges: {:.0f} % of the map\n",
+                           100.0 * summary.canopyGaps.gapsOrEdges);
   std::cout << fmt::format(
       "  conditions {:.1f} s, simulation {:.1f} s ({:.0f} plant-years/s)\n",
       summary.conditionsSeconds, summary.simulationSeconds,

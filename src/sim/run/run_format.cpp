@@ -322,9 +322,14 @@ void writeRunJson(const RunPaths& run, const RunRecord& r) {
   for (const SpeciesCount& c : r.counts)
     counts[c.name] = {{"alive", c.alive},
                       {"taller_than_5m", c.over5m},
-                      {"mean_site_taller_than_5m", siteJson(c.meanSiteOver5m)}};
+                      {"mean_site_taller_than_5m", siteJson(c.meanSiteOver5m)},
+                      {"stems_1_3m_and_taller", c.gaps.stems},
+                      {"stems_in_gaps", c.gaps.shares.gaps},
+                      {"stems_in_gaps_or_edges", c.gaps.shares.gapsOrEdges}};
   json["final_counts"] = counts;
   json["mean_site_of_map"] = siteJson(r.meanSite);
+  json["canopy_gaps"] = {{"map_in_gaps", r.canopyGaps.gaps},
+                         {"map_in_gaps_or_edges", r.canopyGaps.gapsOrEdges}};
   AtomicFile out(run.runJson());
   out.write(json.dump(2) + "\n");
   out.commit();

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/ecology/canopy_gaps.hpp"
 #include "sim/ecology/ecosystem.hpp"
 
 namespace eco {
@@ -113,6 +114,8 @@ struct SpeciesCount {
   // Where those taller than 5 m stand: the mean of each condition field over their cells,
   // in conditionFieldInfo() order (empty where none is that tall).
   std::vector<double> meanSiteOver5m;
+  // Where its stems (1.3 m and taller) stand: in canopy gaps and at their edges.
+  GapStems gaps;
 };
 
 // run.json: what ran, how far it got, and what grew.
@@ -131,6 +134,7 @@ struct RunRecord {
   double conditionsSeconds = 0.0, simulationSeconds = 0.0, plantYearsPerSecond = 0.0;
   std::vector<SpeciesCount> counts;
   std::vector<double> meanSite;  // each condition field's mean over the map
+  CanopyGapShares canopyGaps;    // of the map at the last year
 };
 
 void writeRunJson(const RunPaths& run, const RunRecord& record);

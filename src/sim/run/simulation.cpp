@@ -31,11 +31,15 @@ std::string fileBytes(const std::filesystem::path& file) {
   return readFileBytes(file).value_or(std::string());
 }
 
-std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem, const ConditionFields& fields) {
+std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem, const ConditionFields& fields,
+                                   const CanopyGapMap& gaps) {
   const std::vector<FieldInfo>& info = conditionFieldInfo();
+  const auto speciesCount = static_cast<int>(ecosystem.species().size());
+  const std::vector<GapStems> gapStems = gapStemsOf(ecosystem.plants(), gaps, speciesCount);
   std::vector<SpeciesCount> counts;
-  for (const EcosystemSpecies& s : ecosystem.species())
-    counts.push_back({s.species.name, 0, 0, std::vector<double>(info.size(), 0.0)});
+  for (int s = 0; s < speciesCount; ++s)
+    counts.push_back({ecosystem.species()[s].species.name, 0, 0,
+                      std::vector<double>(info.size(), 0.0), gapStems[s]});
   const Plants& p = ecosystem.plants();
   for (std::size_t i = 0; i < p.size(); ++i) {
     SpeciesCount& c = counts[p.species[i]];
@@ -50,6 +54,13 @@ std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem, const ConditionFi
     for (double& sum : c.meanSiteOver5m) sum /= static_cast<double>(c.over5m);
   }
   return counts;
+}
+
+// What grows where, into the summary (run.json's final_counts and canopy_gaps).
+void recordCounts(RunSummary& summary, const Ecosystem& ecosystem, const ConditionFields& fields) {
+  const CanopyGapMap gaps(ecosystem.plants(), ecosystem.terrain());
+  summary.counts = countsOf(ecosystem, fields, gaps);
+  summary.canopyGaps = gaps.shares();
 }
 
 std::vector<double> meanSiteOf(const ConditionFields& fields) {
@@ -77,6 +88,7 @@ RunRecord runRecord(const Scenario& scenario, const RunOptions& options, std::ui
       summary.simulationSeconds > 0.0 ? summary.plantYears / summary.simulationSeconds : 0.0;
   r.counts = summary.counts;
   r.meanSite = summary.meanSite;
+  r.canopyGaps = summary.canopyGaps;
   return r;
 }
 
@@ -238,7 +250,7 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
   }
   summary.lastYear = ecosystem.year();
   summary.meanSite = meanSiteOf(fields);
-  summary.counts = countsOf(ecosystem, fields);
+  recordCounts(summary, ecosystem, fields);
   claimed = runRecord(scenario, options, fingerprint, summary, "running");
   writeRunJson(run, *claimed);
 
@@ -274,7 +286,7 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
     }
   }
   summary.simulationSeconds = secondsSince(start);
-  summary.counts = countsOf(ecosystem, fields);
+  recordCounts(summary, ecosystem, fields);
   if (!summary.interrupted)
     writeFieldMap(run.mapsFolder(), "canopy_height", "m",
                   maskOutside(terrain, canopyHeight(ecosystem)), terrain.grid);

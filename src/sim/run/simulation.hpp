@@ -47,6 +47,7 @@ struct RunSummary {
   bool interrupted = false;
   std::vector<SpeciesCount> counts;
   std::vector<double> meanSite;  // each condition field's mean over the whole map
+  CanopyGapShares canopyGaps;    // of the map at the last year
   double conditionsSeconds = 0.0;
   double simulationSeconds = 0.0;
   double plantYears = 0.0;  // plants stepped, summed over this session's years

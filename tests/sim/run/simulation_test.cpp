@@ -114,6 +114,21 @@ TEST(Simulation, WritesTheRunFolder) {
     }
   }
   EXPECT_GT(speciesWithTallPlants, 0);
+  // Where the stems stand (canopy_gaps.hpp): shares, each species' stems among its plants,
+  // and the same in run.json.
+  EXPECT_NE(json.find("\"canopy_gaps\""), std::string::npos);
+  EXPECT_NE(json.find("\"stems_in_gaps_or_edges\""), std::string::npos);
+  EXPECT_GE(summary.canopyGaps.gapsOrEdges, summary.canopyGaps.gaps);
+  EXPECT_LE(summary.canopyGaps.gapsOrEdges, 1.0);
+  std::int64_t stems = 0;
+  for (const SpeciesCount& c : summary.counts) {
+    EXPECT_LE(c.gaps.stems, c.alive);
+    EXPECT_GE(c.gaps.shares.gaps, 0.0);
+    EXPECT_LE(c.gaps.shares.gaps, c.gaps.shares.gapsOrEdges);
+    EXPECT_LE(c.gaps.shares.gapsOrEdges, 1.0);
+    stems += c.gaps.stems;
+  }
+  EXPECT_GT(stems, 0);
 }
 
 TEST(Simulation, SameOutputsWithOneAndTwoThreads) {

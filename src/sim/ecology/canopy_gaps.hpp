@@ -10,16 +10,17 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/ecology/light_grid.hpp"
 #include "sim/ecology/plants.hpp"
 #include "sim/terrain.hpp"
 
 namespace eco {
 
-inline constexpr double kGapCell_m = 5.0;            // a cell of the gap map (the light column)
-inline constexpr double kCanopyTreeHeight_m = 10.0;  // trees this tall make the canopy
-inline constexpr double kGapCover = 0.5;             // a gap: canopy cover under this...
-inline constexpr int kGapNeighbourhoodCells = 1;     // ...over the cell and this many around it
-inline constexpr double kEdgeReach_m = 10.0;         // an edge: within this of a gap
+inline constexpr double kGapCell_m = kLightColumn_m;  // a cell of the gap map
+inline constexpr double kCanopyTreeHeight_m = 10.0;   // trees this tall make the canopy
+inline constexpr double kGapCover = 0.5;              // a gap: canopy cover under this...
+inline constexpr int kGapNeighbourhoodCells = 1;      // ...over the cell and this many around it
+inline constexpr double kEdgeReach_m = 10.0;          // an edge: within this of a gap
 
 enum class CanopyPlace : std::uint8_t { Closed, Edge, Gap, Outside };
 
@@ -38,13 +39,11 @@ class CanopyGapMap {
   CanopyPlace at(double east_m, double north_m) const;
   CanopyGapShares shares() const;
 
-  int width() const { return width_; }
-  int height() const { return height_; }
+ private:
   CanopyPlace place(int x, int y) const {
     return places_[static_cast<std::size_t>(y) * width_ + x];
   }
 
- private:
   int width_ = 0, height_ = 0;  // cells; row 0 in the south
   double originEast_m_ = 0.0, originNorth_m_ = 0.0;
   std::vector<CanopyPlace> places_;

@@ -1,13 +1,17 @@
-// Reading comma-separated text (the run folder's CSV files, yield tables): its lines with
-// their numbers, a line's fields, and a field parsed whole as a number.
+// Comma-separated text (the run folder's CSV files, yield tables): reading its lines with
+// their numbers, a line's fields and a field parsed whole as a number; writing a number
+// with a fixed count of decimals.
 #pragma once
 
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
 #include <type_traits>
+
+#include "core/error.hpp"
 
 namespace eco {
 
@@ -46,6 +50,18 @@ bool parseField(std::string_view field, T& value) {
   if constexpr (std::is_floating_point_v<T>)
     if (!std::isfinite(value)) return false;
   return ec == std::errc() && ptr == end;
+}
+
+// Appends `value` with `decimals` digits after the point: the text of fmt's "{:.Nf}" and
+// printf's "%.Nf" (rounded half to even), from the standard library's to_chars, about twice
+// as fast as fmt's (a snapshot of a landscape's trees writes hundreds of millions of them).
+// 64 characters hold any float (39 digits before the point) with up to 20 decimals.
+inline void appendFixed(std::string& out, float value, int decimals) {
+  ECO_ASSERT(decimals >= 0 && decimals <= 20, "decimals that fit the buffer");
+  char text[64];
+  char* end =
+      std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, decimals).ptr;
+  out.append(text, end);
 }
 
 }  // namespace eco

@@ -1,5 +1,8 @@
 #include "core/csv_text.hpp"
 
+#include <cstdio>
+#include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -50,6 +53,36 @@ TEST(CsvText, NonFiniteNumbersAreRefused) {
     EXPECT_FALSE(parseField(field, f)) << field;
   }
   EXPECT_FALSE(parseField("1e39", f));  // beyond a float
+}
+
+// printf's "%.*f" is the oracle: the exact decimal value of the float, rounded half to even.
+std::string printed(float value, int decimals) {
+  char text[128];
+  std::snprintf(text, sizeof text, "%.*f", decimals, static_cast<double>(value));
+  return text;
+}
+
+TEST(CsvText, FixedDecimalsAreRoundedAsPrintfRoundsThem) {
+  auto fixed = [](float value, int decimals) {
+    std::string out = "x";
+    appendFixed(out, value, decimals);
+    return out.substr(1);  // appended, not replaced
+  };
+  EXPECT_EQ(fixed(12.3456f, 3), "12.346");
+  EXPECT_EQ(fixed(0.0625f, 3), "0.062");  // exactly halfway: to the even digit
+  EXPECT_EQ(fixed(0.1875f, 3), "0.188");
+  EXPECT_EQ(fixed(-0.0001f, 2), "-0.00");  // the sign stays, as printf keeps it
+  EXPECT_EQ(fixed(-0.0f, 2), "-0.00");
+  EXPECT_EQ(fixed(7.0f, 0), "7");
+  EXPECT_EQ(fixed(std::numeric_limits<float>::max(), 20),
+            printed(std::numeric_limits<float>::max(), 20));
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> coordinate(-5.0e4f, 5.0e4f);
+  for (int i = 0; i < 20000; ++i) {
+    const float value = i % 2 ? coordinate(random) : coordinate(random) * 1e-4f;
+    for (int decimals = 0; decimals <= 4; ++decimals)
+      ASSERT_EQ(fixed(value, decimals), printed(value, decimals)) << value << " " << decimals;
+  }
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <tbb/parallel_for.h>
+
 namespace eco {
 
 double basalAreaOf(double dbh_m) {
@@ -33,18 +35,19 @@ std::vector<StandMeasures> measureStands(const Plants& p,
                                          const std::vector<EcosystemSpecies>& species,
                                          double area_ha) {
   const std::size_t all = species.size();
-  std::vector<StandTally> tallies(all + 1);
-  std::vector<std::vector<float>> heights(all + 1);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t group : {static_cast<std::size_t>(p.species[i]), all}) {
-      heights[group].push_back(p.height_m[i]);
-      tallies[group].add(p.dbh_m[i], p.height_m[i], species[p.species[i]].ecology.life.formFactor);
+  std::vector<StandMeasures> measures(all + 1);
+  // Each species, and all of them (the last group), side by side; each sums in plant order.
+  tbb::parallel_for(std::size_t{0}, all + 1, [&](std::size_t group) {
+    StandTally tally;
+    std::vector<float> h;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (group != all && p.species[i] != group) continue;
+      h.push_back(p.height_m[i]);
+      tally.add(p.dbh_m[i], p.height_m[i], species[p.species[i]].ecology.life.formFactor);
     }
-  std::vector<StandMeasures> measures;
-  for (std::size_t group = 0; group <= all; ++group) {
-    StandMeasures m = tallies[group].perHectare(area_ha);
+    StandMeasures& m = measures[group];
+    m = tally.perHectare(area_ha);
     // The 100 tallest per hectare (all of them on a smaller stand).
-    std::vector<float>& h = heights[group];
     const std::size_t tallest =
         std::min(h.size(), static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
     if (tallest > 0 && area_ha > 0.0) {
@@ -54,8 +57,7 @@ std::vector<StandMeasures> measureStands(const Plants& p,
       for (std::size_t k = 0; k < tallest; ++k) sum += h[k];
       m.dominantHeight_m = sum / static_cast<double>(tallest);
     }
-    measures.push_back(m);
-  }
+  });
   return measures;
 }
 

@@ -5,6 +5,9 @@
 #include <numbers>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
 #include "sim/ecology/stand_measures.hpp"
 
 namespace eco {
@@ -37,16 +40,28 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem, const PlanYear& pl
   const double area_ha = g.area_m2() / 1e4;
   std::vector<StatsRow> rows(static_cast<std::size_t>(speciesCount) + 1);
   std::vector<double> heightSum(rows.size(), 0.0);
-  // Cover per species, and of the stand (the last row).
-  std::vector<std::vector<std::uint8_t>> covered(rows.size(),
-                                                 std::vector<std::uint8_t>(g.cellCount(), 0));
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t r : {static_cast<std::size_t>(p.species[i]), rows.size() - 1}) {
-      ++rows[r].alive;
-      heightSum[r] += p.height_m[i];
-      forCellsUnderCrown(g, p, i, [&](std::size_t cell) { covered[r][cell] = 1; });
-    }
-  const std::vector<StandMeasures> measures = measureStands(p, ecosystem.species(), area_ha);
+  std::vector<std::size_t> coveredCells(rows.size(), 0);
+  std::vector<StandMeasures> measures;
+  double densest_m2PerHa = 0.0;
+  // Each species' row, the stand's (the last row), the forester's measures and the densest
+  // hectare are independent: they run side by side, each summing in plant order, so the
+  // figures do not depend on the thread count.
+  tbb::parallel_invoke(
+      [&] {
+        tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t r) {
+          const bool stand = r + 1 == rows.size();
+          std::vector<std::uint8_t> covered(g.cellCount(), 0);
+          for (std::size_t i = 0; i < p.size(); ++i) {
+            if (!stand && p.species[i] != r) continue;
+            ++rows[r].alive;
+            heightSum[r] += p.height_m[i];
+            forCellsUnderCrown(g, p, i, [&](std::size_t cell) { covered[cell] = 1; });
+          }
+          coveredCells[r] = static_cast<std::size_t>(std::count(covered.begin(), covered.end(), 1));
+        });
+      },
+      [&] { measures = measureStands(p, ecosystem.species(), area_ha); },
+      [&] { densest_m2PerHa = densestBlockBasalArea(p, g); });
   for (std::size_t r = 0; r < rows.size(); ++r) {
     StatsRow& row = rows[r];
     const bool stand = r + 1 == rows.size();
@@ -69,9 +84,8 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem, const PlanYear& pl
     row.dominantHeight_m = m.dominantHeight_m;
     row.sdi = m.sdi;
     row.volume_m3PerHa = m.volume_m3PerHa;
-    row.coverFraction = static_cast<double>(std::count(covered[r].begin(), covered[r].end(), 1)) /
-                        static_cast<double>(g.cellCount());
-    if (stand) row.densestHectareBasalArea_m2PerHa = densestBlockBasalArea(p, g);
+    row.coverFraction = static_cast<double>(coveredCells[r]) / static_cast<double>(g.cellCount());
+    if (stand) row.densestHectareBasalArea_m2PerHa = densest_m2PerHa;
   }
   return rows;
 }

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
@@ -223,11 +224,10 @@ void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
   ECO_ASSERT(sites.size() == p.size(), "a site per plant");
   // Formatted in parallel chunks and written in order, a batch of chunks at a time: a
   // landscape's 50 million rows would otherwise be gigabytes of text in memory at once.
+  // While one batch is written out, the next is formatted.
   constexpr std::size_t kRowsPerChunk = 16384, kChunksPerBatch = 64;
-  AtomicFile out(file);
-  out.write(std::string(kTreesCsvHeader) + "\n");
-  std::vector<std::string> chunks(kChunksPerBatch);
-  for (std::size_t first = 0; first < p.size(); first += kRowsPerChunk * kChunksPerBatch) {
+  constexpr std::size_t kRowsPerBatch = kRowsPerChunk * kChunksPerBatch;
+  auto formatBatch = [&](std::size_t first, std::vector<std::string>& chunks) {
     tbb::parallel_for(std::size_t{0}, kChunksPerBatch, [&](std::size_t c) {
       std::string& text = chunks[c];
       text.clear();
@@ -259,7 +259,18 @@ void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
         text += '\n';
       }
     });
-    for (const std::string& text : chunks) out.write(text);
+  };
+  AtomicFile out(file);
+  out.write(std::string(kTreesCsvHeader) + "\n");
+  std::vector<std::string> ready(kChunksPerBatch), next(kChunksPerBatch);
+  formatBatch(0, ready);
+  for (std::size_t first = 0; first < p.size(); first += kRowsPerBatch) {
+    tbb::task_group formatting;
+    if (first + kRowsPerBatch < p.size())
+      formatting.run([&] { formatBatch(first + kRowsPerBatch, next); });
+    for (const std::string& text : ready) out.write(text);
+    formatting.wait();
+    std::swap(ready, next);
   }
   out.commit();
 }

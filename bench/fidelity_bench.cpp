@@ -18,6 +18,8 @@
 //        fidelity_bench --compare A.png B.png   (the same measures of two saved pictures)
 // --reuse-references (anywhere): read the references already saved in OUT_DIR instead of
 // drawing them again (they take minutes; the qualities seconds), e.g. while tuning a level.
+// --antialias N (anywhere): every picture, references included, with N samples a pixel
+// (render's --antialias), so both sides are measured without their aliasing.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -141,6 +143,12 @@ int main(int argc, char** argv) {
   const auto reuseFlag = std::find(args.begin(), args.end(), "--reuse-references");
   const bool reuseReferences = reuseFlag != args.end();
   if (reuseReferences) args.erase(reuseFlag);
+  int samples = 1;
+  if (const auto flag = std::find(args.begin(), args.end(), "--antialias");
+      flag != args.end() && flag + 1 != args.end()) {
+    samples = std::stoi(*(flag + 1));
+    args.erase(flag, flag + 2);
+  }
   argc = static_cast<int>(args.size());
   if (argc == 4 && args[1] == "--compare") {  // two saved pictures
     const eco::Image a = eco::readColorImage(args[2]), b = eco::readColorImage(args[3]);
@@ -170,9 +178,10 @@ int main(int argc, char** argv) {
                        eco::impostorSettingsFor(eco::RenderQuality::High)},
                       {terrain, scenario.climate.latitude_deg, &library,
                        eco::impostorSettingsFor(eco::RenderQuality::Balanced)}};
-  const eco::RenderTarget target = eco::RenderTarget::create(size.width, size.height);
-  std::printf("%s, %dx%d, reference: LOD0 down to %.0f px\n", eco::glDescription().c_str(),
-              size.width, size.height, referenceMinPixels);
+  const eco::RenderTarget target = eco::RenderTarget::create(size.width, size.height, 0, samples);
+  std::printf("%s, %dx%d, %d sample%s a pixel, reference: LOD0 down to %.0f px\n",
+              eco::glDescription().c_str(), size.width, size.height, samples,
+              samples == 1 ? "" : "s", referenceMinPixels);
 
   const eco::Forest plantedForest = eco::demoForest(terrain, library, planted, scenario.seed);
   compareScene("planted", terrain, plantedForest, library, renderers, target, referenceMinPixels,

@@ -95,7 +95,7 @@ Image drawStill(const SceneSource& source, const Forest& forest, const Camera& c
   const std::unique_ptr<SceneRenderer> renderer = sceneRendererFor(source, view);
   if (overlay) renderer->terrain().setOverlay(view.overlay, *overlay);
   renderer->setForestFloor(forest);
-  RenderTarget target = RenderTarget::create(view.size.width, view.size.height);
+  RenderTarget target = RenderTarget::create(view.size.width, view.size.height, 0, view.antialias);
   const double setupMs = millisecondsSince(rendererStart);
   const FrameStats frame =
       renderer->render(&forest, camera, renderOptionsFrom(view, source.scenario), target);

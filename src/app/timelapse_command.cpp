@@ -92,7 +92,8 @@ void runTimelapse(const TimelapseArgs& args) {
   const bool terminal = Progress::stderrIsTerminal();
   const auto start = std::chrono::steady_clock::now();
   const TimelapseTimings t = renderTimelapse(
-      run, *source.library, source.terrain, frameDrawer(*renderer, settings.frame), settings, *sink,
+      run, *source.library, source.terrain,
+      frameDrawer(*renderer, settings.frame, args.view.antialias), settings, *sink,
       [&](int done, int frames) {
         if (!terminal) return;
         const double elapsed =

@@ -141,7 +141,7 @@ void runView(const ViewArgs& args) {
     const FrameSize size = window.framebufferSize();
     if (size.width > 0 && size.height > 0) {
       if (target.width != size.width || target.height != size.height)
-        target = RenderTarget::create(size.width, size.height);
+        target = RenderTarget::create(size.width, size.height, 0, args.view.antialias);
       stats = renderer->render(&forest, controller.camera(), options, target);
     }
     if (screenshot) saveScreenshot(target, args.screenshot);

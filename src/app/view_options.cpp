@@ -53,6 +53,12 @@ void addFrameOptions(CLI::App& command, ViewOptions& o) {
           "How much is drawn at full detail: draft, balanced or high")
       ->default_str(std::string(toString(o.quality)));
   command
+      .add_option("--antialias", o.antialias,
+                  "Samples a pixel, multisample anti-aliasing: 1 (none), 2, 4, 8 or 16 (as the "
+                  "OpenGL allows; llvmpipe 4)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16}))
+      ->capture_default_str();
+  command
       .add_option("--level", o.forceLevel, "Draw every tree at one level: 0-2 meshes, 3 impostors")
       ->check(CLI::Range(0, 3));
   command.add_flag("--no-impostors", o.noImpostors,

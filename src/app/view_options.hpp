@@ -32,6 +32,7 @@ struct ViewOptions {
   int forceLevel = -1;  // -1: by size on screen
   bool noImpostors = false, noShadows = false;
   bool noShaping = false;  // a run's trees upright and open-grown, not shaped by their sites
+  int antialias = 1;       // samples a pixel (multisample anti-aliasing); 1: none
   // render and view only:
   std::string camera;             // X,Y,Z,YAW,PITCH
   std::string view = "overview";  // a camera preset
@@ -40,7 +41,7 @@ struct ViewOptions {
 
 // --size WIDTHxHEIGHT alone (the designer's window).
 void addSizeOption(CLI::App& command, FrameSize& size);
-// --size, --day, --hour, --wind-from, --wind-wg, --wind-ws, --quality, --level,
+// --size, --day, --hour, --wind-from, --wind-wg, --wind-ws, --quality, --antialias, --level,
 // --no-impostors, --no-shadows, --no-shaping: what every command that draws frames takes.
 void addFrameOptions(CLI::App& command, ViewOptions& options);
 // --camera, --view, --wind-time, --overlay: the still and the window.

@@ -70,19 +70,61 @@ GlName makeTexture(const Image& image, bool repeat) {
   return texture;
 }
 
-RenderTarget RenderTarget::create(int width, int height, int extraColors) {
+namespace {
+
+GlName makeFramebuffer() {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  return {GlKind::Framebuffer, id};
+}
+
+void checkComplete(const GlName& framebuffer, int width, int height) {
+  if (glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error(fmt::format("OpenGL: incomplete {}x{} framebuffer", width, height));
+}
+
+}  // namespace
+
+int maxSamples() {
+  GLint samples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &samples);
+  return samples;
+}
+
+RenderTarget RenderTarget::create(int width, int height, int extraColors, int samples) {
+  ECO_ASSERT(samples >= 1 && (samples == 1 || extraColors == 0),
+             "samples=" << samples << " extraColors=" << extraColors);
+  if (samples > maxSamples())
+    throw EnvironmentError(fmt::format(
+        "anti-aliasing with {} samples a pixel: this OpenGL draws at most {} ({})", samples,
+        maxSamples(), reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
   RenderTarget t;
   t.width = width;
   t.height = height;
-  GLuint id = 0;
-  glCreateFramebuffers(1, &id);
-  t.framebuffer = GlName(GlKind::Framebuffer, id);
+  t.samples = samples;
+  t.framebuffer = makeFramebuffer();
+  const GLuint id = t.framebuffer.id();
   auto attach = [&](GLenum format, GLenum attachment) {
-    GlName texture = makeTextureStorage(format, width, height);
-    glNamedFramebufferTexture(id, attachment, texture.id(), 0);
-    return texture;
+    if (samples == 1) {
+      GlName texture = makeTextureStorage(format, width, height);
+      glNamedFramebufferTexture(id, attachment, texture.id(), 0);
+      return texture;
+    }
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &texture);
+    glTextureStorage2DMultisample(texture, samples, format, width, height, GL_TRUE);
+    glNamedFramebufferTexture(id, attachment, texture, 0);
+    return GlName(GlKind::Texture, texture);
   };
-  t.color = attach(GL_SRGB8_ALPHA8, GL_COLOR_ATTACHMENT0);
+  if (samples > 1) {
+    t.multisampleColor = attach(GL_SRGB8_ALPHA8, GL_COLOR_ATTACHMENT0);
+    t.resolved = makeFramebuffer();
+    t.color = makeTextureStorage(GL_SRGB8_ALPHA8, width, height);
+    glNamedFramebufferTexture(t.resolved.id(), GL_COLOR_ATTACHMENT0, t.color.id(), 0);
+    checkComplete(t.resolved, width, height);
+  } else {
+    t.color = attach(GL_SRGB8_ALPHA8, GL_COLOR_ATTACHMENT0);
+  }
   if (extraColors > 0) {
     std::vector<GLenum> buffers{GL_COLOR_ATTACHMENT0};
     for (int k = 1; k <= extraColors; ++k) {
@@ -92,9 +134,14 @@ RenderTarget RenderTarget::create(int width, int height, int extraColors) {
     glNamedFramebufferDrawBuffers(id, static_cast<GLsizei>(buffers.size()), buffers.data());
   }
   t.depth = attach(GL_DEPTH_COMPONENT32F, GL_DEPTH_ATTACHMENT);
-  if (glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error(fmt::format("OpenGL: incomplete {}x{} framebuffer", width, height));
+  checkComplete(t.framebuffer, width, height);
   return t;
+}
+
+void RenderTarget::resolve() const {
+  if (samples == 1) return;
+  glBlitNamedFramebuffer(framebuffer.id(), resolved.id(), 0, 0, width, height, 0, 0, width, height,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void RenderTarget::bind() const {
@@ -116,11 +163,16 @@ Image readPixels(int width, int height, GLenum attachment) {
 }
 
 Image readPixels(const RenderTarget& target) {
+  target.resolve();
+  glBindFramebuffer(GL_FRAMEBUFFER,
+                    target.samples > 1 ? target.resolved.id() : target.framebuffer.id());
+  Image image = readPixels(target.width, target.height);
   target.bind();
-  return readPixels(target.width, target.height);
+  return image;
 }
 
 void writePixels(const RenderTarget& target, const Image& image) {
+  ECO_ASSERT(target.samples == 1, "samples=" << target.samples);
   ECO_ASSERT(
       image.width == target.width && image.height == target.height,
       image.width << "x" << image.height << " into " << target.width << "x" << target.height);

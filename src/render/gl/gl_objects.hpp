@@ -58,24 +58,34 @@ GlName makeTexture(const Image& image, bool repeat);
 
 // sRGB colour plus depth. The shaders write linear colour, which OpenGL encodes as sRGB
 // (GL_FRAMEBUFFER_SRGB), so every target holds what a PNG or a screen expects.
+// With more than one sample a pixel (multisample anti-aliasing), what is drawn goes into
+// multisampled colour and depth, and resolve() averages the samples into `color`.
 struct RenderTarget {
   int width = 0, height = 0;
-  GlName framebuffer;
-  GlName color;
+  int samples = 1;
+  GlName framebuffer;  // what draws bind
+  GlName color;        // what the target shows (after resolve() when multisampled)
   // Linear RGBA8 attachments 1, 2, ... when asked for (the impostors' normals and depths).
   std::vector<GlName> extraColors;
   GlName depth;
+  GlName multisampleColor, resolved;  // samples > 1: the drawn samples; `color`'s framebuffer
 
-  static RenderTarget create(int width, int height, int extraColors = 0);
+  // An EnvironmentError where the driver draws fewer samples than asked for.
+  static RenderTarget create(int width, int height, int extraColors = 0, int samples = 1);
   void bind() const;
+  void resolve() const;
 };
+
+// The most samples a pixel this OpenGL draws (GL_MAX_SAMPLES; 4 on llvmpipe).
+int maxSamples();
 
 // Reads the colour attachment of the bound framebuffer; row 0 of the image is the top row.
 Image readPixels(int width, int height, GLenum attachment = GL_COLOR_ATTACHMENT0);
 
-// The colour of a target (bound for it): what it shows, row 0 at the top.
+// The colour of a target (resolved, and bound for it): what it shows, row 0 at the top.
 Image readPixels(const RenderTarget& target);
-// The inverse: an image (row 0 at the top) of the target's size into its colour.
+// The inverse: an image (row 0 at the top) of the target's size into its colour (a target
+// of one sample).
 void writePixels(const RenderTarget& target, const Image& image);
 
 // Throws std::runtime_error naming `where` if OpenGL reported an error.

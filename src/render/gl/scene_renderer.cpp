@@ -150,8 +150,9 @@ void SceneRenderer::setGroundMoisture(Field moisture) {
   groundCover_.cover().setMoisture(std::move(moisture));
 }
 
-DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size) {
-  auto target = std::make_shared<RenderTarget>(RenderTarget::create(size.width, size.height));
+DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size, int samples) {
+  auto target =
+      std::make_shared<RenderTarget>(RenderTarget::create(size.width, size.height, 0, samples));
   return [&renderer, target](const Forest& forest, const Camera& camera,
                              const RenderOptions& options) {
     renderer.setForestFloor(forest);  // each frame's trees: the floor grows with them

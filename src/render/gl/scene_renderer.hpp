@@ -64,8 +64,8 @@ class SceneRenderer {
   int shadowSize_ = 0;
 };
 
-// The renderer as a time-lapse's back end: each call draws into one target of `size` and
-// reads the pixels back.
-DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size);
+// The renderer as a time-lapse's back end: each call draws into one target of `size` (with
+// `samples` a pixel) and reads the pixels back.
+DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size, int samples = 1);
 
 }  // namespace eco

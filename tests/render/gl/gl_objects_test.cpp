@@ -1,7 +1,11 @@
 #include "render/gl/gl_objects.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "gl_support.hpp"
 
 namespace eco {
@@ -14,6 +18,77 @@ TEST(GlObjects, WritePixelsIsTheInverseOfReadPixels) {
   const RenderTarget target = RenderTarget::create(7, 5);
   writePixels(target, image);
   EXPECT_EQ(readPixels(target).rgba, image.rgba);
+}
+
+namespace {
+
+GLuint compile(GLenum type, const char* source) {
+  const GLuint shader = glCreateShader(type);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  return shader;
+}
+
+// A white triangle over the lower-left half of a square target (its hypotenuse the diagonal
+// from the top-left to the bottom-right corner), read back as the red channel.
+std::vector<int> drawHalfSquare(int size, int samples) {
+  const GlName program(GlKind::Program, glCreateProgram());
+  const GLuint vertex = compile(GL_VERTEX_SHADER, R"(#version 450
+    const vec2 corners[3] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(-1, 1));
+    void main() { gl_Position = vec4(corners[gl_VertexID], 0, 1); })");
+  const GLuint fragment = compile(GL_FRAGMENT_SHADER, R"(#version 450
+    out vec4 colour;
+    void main() { colour = vec4(1); })");
+  glAttachShader(program.id(), vertex);
+  glAttachShader(program.id(), fragment);
+  glLinkProgram(program.id());
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  const GlName vertexArray = makeVertexArray();
+
+  const RenderTarget target = RenderTarget::create(size, size, 0, samples);
+  target.bind();
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glUseProgram(program.id());
+  glBindVertexArray(vertexArray.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  const Image image = readPixels(target);
+  std::vector<int> red;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) red.push_back(image.rgba[i]);
+  return red;
+}
+
+}  // namespace
+
+// One sample a pixel: every pixel is in or out (the staircase along the diagonal). Four:
+// the pixels the diagonal crosses take part of the colour, the rest stay whole.
+TEST(GlObjects, AMultisampledTargetResolvesEdgesToPartialCoverage) {
+  test::useHeadlessGl();
+  ASSERT_GE(maxSamples(), 4);
+  constexpr int kSize = 16;
+  const auto partial = [](const std::vector<int>& red) {
+    return std::count_if(red.begin(), red.end(), [](int v) { return v > 0 && v < 255; });
+  };
+  const std::vector<int> aliased = drawHalfSquare(kSize, 1);
+  const std::vector<int> smooth = drawHalfSquare(kSize, 4);
+  EXPECT_EQ(partial(aliased), 0);
+  EXPECT_GE(partial(smooth), kSize - 2);  // the diagonal crosses one pixel a row
+  EXPECT_LE(partial(smooth), 2 * kSize);
+  // Far from the edge both agree: the top-right corner out, the bottom-left one in (row 0 of
+  // the image is the top).
+  for (const std::vector<int>* red : {&aliased, &smooth}) {
+    EXPECT_EQ((*red)[kSize - 1], 0);
+    EXPECT_EQ((*red)[(kSize - 1) * kSize], 255);
+  }
+}
+
+TEST(GlObjects, MoreSamplesThanTheDriverDrawsIsAnEnvironmentError) {
+  test::useHeadlessGl();
+  EXPECT_THROW(RenderTarget::create(8, 8, 0, 2 * maxSamples()), EnvironmentError);
 }
 
 }  // namespace eco

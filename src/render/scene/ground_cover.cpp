@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -12,17 +13,10 @@
 #include "core/random.hpp"
 #include "sim/conditions/moisture.hpp"
 #include "sim/conditions/slope.hpp"
+#include "sim/ecology/seedbed.hpp"
 
 namespace eco {
 namespace {
-
-float smoothstep(float edge0, float edge1, float x) {
-  const float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
-
-// Where the terrain shader shows rock instead of a meadow (a normal's y below about 0.62).
-constexpr float kBareSlope_deg = 50.0f, kCoveredSlope_deg = 40.0f;
 
 constexpr int kAtlasHalf = 256;  // each plant's square of the atlas
 
@@ -115,18 +109,15 @@ GroundCoverSettings groundCoverFor(RenderQuality quality) {
 }
 
 GroundCoverShares groundCoverShares(float canopyCover, float moisture, float slope_deg) {
-  const float onSlope = smoothstep(kBareSlope_deg, kCoveredSlope_deg, slope_deg);
-  const float light = 1.0f - std::clamp(canopyCover, 0.0f, 1.0f);
+  const float canopy = std::clamp(canopyCover, 0.0f, 1.0f);
   GroundCoverShares shares;
-  // Meadow grasses need light (Ellenberg L 7-8): a closing canopy shades them out. On dry
-  // ground (F 3 and less) they thin to a sparse dry grassland.
-  shares.grass = 0.9f * smoothstep(0.4f, 0.9f, light) * smoothstep(2.0f, 4.0f, moisture) * onSlope;
+  // The sward the simulation's seeds fall into (sim/ecology/seedbed.hpp).
+  shares.grass = swardShare(1.0f - canopy, moisture, slope_deg);
   // Woodland herbs (L 2-5, F 5-6: wood anemone, woodruff, dog's mercury) carpet fresh soils
   // under an open canopy; under the deepest shade the floor is bare litter.
-  const float canopy = 1.0f - light;
-  shares.herb = 0.3f * smoothstep(0.2f, 0.6f, canopy) *
-                (1.0f - 0.7f * smoothstep(0.85f, 1.0f, canopy)) * smoothstep(3.0f, 5.0f, moisture) *
-                onSlope;
+  shares.herb = 0.3f * glm::smoothstep(0.2f, 0.6f, canopy) *
+                (1.0f - 0.7f * glm::smoothstep(0.85f, 1.0f, canopy)) *
+                glm::smoothstep(3.0f, 5.0f, moisture) * soilShareOnSlope(slope_deg);
   return shares;
 }
 
@@ -134,8 +125,8 @@ float groundTuftHeight(GroundPlant plant, float moisture, float draw) {
   if (plant == GroundPlant::Herb) return 0.12f + 0.12f * draw;
   // Full height on fresh ground (F 5), shorter on dry; the sedges and rushes of wet ground
   // stand taller.
-  return (0.25f + 0.3f * draw) * (0.7f + 0.3f * smoothstep(3.0f, 5.0f, moisture)) *
-         (1.0f + 0.5f * smoothstep(6.5f, 8.5f, moisture));
+  return (0.25f + 0.3f * draw) * (0.7f + 0.3f * glm::smoothstep(3.0f, 5.0f, moisture)) *
+         (1.0f + 0.5f * glm::smoothstep(6.5f, 8.5f, moisture));
 }
 
 GroundCover::GroundCover(const Terrain& terrain)

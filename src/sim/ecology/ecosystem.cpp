@@ -9,6 +9,7 @@
 #include "core/frames.hpp"
 #include "core/random.hpp"
 #include "sim/ecology/growth.hpp"
+#include "sim/ecology/seedbed.hpp"
 
 namespace eco {
 namespace {
@@ -22,9 +23,6 @@ constexpr double kMinCrownShare = 0.1;
 // lasting factor 1 - spread |z|, z standard normal within 3 (ours, docs/ecology.md). Without
 // it a planted stand of identical trees would never differentiate and never thin itself.
 constexpr double kGrowthFactorSpread = 0.15;
-// Under a canopy that takes more than half the light the ground is covered in litter
-// (docs/ecology.md: where litter hinders a species' establishment).
-constexpr double kLitterLight = 0.5;
 
 Field terrainLightOf(const ConditionFields& fields) {
   Field light(fields.sunniness.size());
@@ -65,6 +63,8 @@ Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
       settings_(settings),
       light_(terrain.grid, terrainLightOf(fields)),
       windiness_(fields.windiness),
+      moisture_(fields.moisture),
+      slope_deg_(fields.slope_deg),
       seeds_(terrain.grid, livesOf(species_), mapDownwindOf(settings.windFrom_deg)),
       regenerationX_(static_cast<int>(
           std::ceil(terrain.grid.width * terrain.grid.dx_m / kRegenerationCell_m))),
@@ -361,7 +361,10 @@ void Ecosystem::establish() {
       const long cell = g.cellAt(east, north);
       if (cell < 0 || terrain_.isOutside(static_cast<std::size_t>(cell))) continue;
       const double ground = light_.groundLightAt(east, north);
-      const bool litter = ground < kLitterLight * light_.skyLightAt(east, north);
+      const double sky = light_.skyLightAt(east, north);
+      const double groundLight = sky > 0.0 ? ground / sky : 1.0;  // relative to the open
+      const double sward =
+          swardShare(static_cast<float>(groundLight), moisture_[cell], slope_deg_[cell]);
       double total = 0.0;
       for (std::size_t s = 0; s < species_.size(); ++s) {
         const EcosystemSpecies& sp = species_[s];
@@ -371,7 +374,7 @@ void Ecosystem::establish() {
             cellArea;
         chance[s] = seeds * life.germination * sp.suitability[cell] *
                     std::clamp(sp.ecology.lightResponse(ground), 0.0, 1.0) *
-                    (litter ? life.litterEstablishment : 1.0);
+                    seedbedEstablishment(life, groundLight, sward);
         total += chance[s];
       }
       if (total <= 0.0) continue;

@@ -131,6 +131,7 @@ class Ecosystem {
   LightGrid light_;
   bool lightComputed_ = false;  // the light grid holds a year's canopy
   Field windiness_;             // the conditions', for the plants' sites
+  Field moisture_, slope_deg_;  // the conditions', for the sward on the open ground
   SeedMap seeds_;
   int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;

@@ -72,6 +72,7 @@ void parseReproduction(TomlTable& life, LifeHistory& h) {
   h.nonMastFraction = life.number("non_mast_fraction", h.nonMastFraction, {0.0, 1.0});
   h.germination = life.number("germination", h.germination, {0.0, 1.0});
   h.litterEstablishment = life.number("litter_establishment", h.litterEstablishment, {0.0, 1.0});
+  h.swardEstablishment = life.number("sward_establishment", h.swardEstablishment, {0.0, 1.0});
   h.seedlingHeight_m = life.number("seedling_height_m", h.seedlingHeight_m, {0.01, 2.0});
   if (h.seedlingHeight_m >= h.height_m.max)
     life.fail("seedling_height_m", "must be below max_height_m");

@@ -111,8 +111,10 @@ struct LifeHistory {
   int mastIntervalYears = 1;     // mean years between mast years
   double nonMastFraction = 1.0;  // seed production in other years, share of a mast year's
   double germination = 0.1;  // seeds that become one-year seedlings on a free, suitable, lit spot
-  double litterEstablishment = 1.0;  // establishment under a closed canopy's litter, relative
-  double seedlingHeight_m = 0.15;    // height in the year a seed establishes
+  // Establishment on litter and in a sward, relative to bare mineral soil (seedbed.hpp).
+  double litterEstablishment = 1.0;
+  double swardEstablishment = 1.0;
+  double seedlingHeight_m = 0.15;  // height in the year a seed establishes
   DispersalVector dispersal = DispersalVector::Gravity;
   double dispersalMean_m = 15.0;  // mean distance of the seed kernel
   double downwindBias = 0.0;      // wind-dispersed: drift downwind per metre travelled

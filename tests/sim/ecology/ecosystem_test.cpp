@@ -96,6 +96,30 @@ TEST(Ecosystem, SpeciesExcludedFromTheUpperHalfNeverEstablishesThere) {
     EXPECT_LT(p.ground_m[i], 500.0f) << "plant " << p.id[i];
 }
 
+// Pine's small seeds take on bare mineral soil and few in a meadow's sward: on open fresh
+// ground (a sward over 0.9 of it) a species with a sward establishment of 0.2 gets about
+// 0.1 + 0.9 x 0.2 of the seedlings it gets on dry ground, where the grasses leave the soil
+// bare (seedbed.hpp). The test species is indifferent to moisture, so only the seedbed
+// differs.
+TEST(Ecosystem, SmallSeedsTakeOnBareSoilAndFewInASward) {
+  const Terrain terrain = flat(100, 2.0);  // 200 m across: 10,000 regeneration cells
+  auto bornOn = [&](float moisture) {
+    ConditionFields fields = test::uniformConditions(terrain);
+    fields.moisture.assign(fields.moisture.size(), moisture);
+    EcosystemSpecies species = test::inEcosystem(test::testSpecies("pinelike", {}), fields, 500.0);
+    species.ecology.life.swardEstablishment = 0.2;
+    Ecosystem ecosystem(terrain, fields, {species}, settings());
+    ecosystem.step();
+    return ecosystem.bornLastYear()[0];
+  };
+  const int bare = bornOn(1.0f), sward = bornOn(5.0f);
+  // 500 seeds a hectare on 4 m2 cells, half of them germinating: a Poisson mean of 0.1 a
+  // cell on bare soil, 0.028 in the sward.
+  const double cells = 100.0 * 100.0;
+  EXPECT_NEAR(bare, cells * -std::expm1(-0.1), 0.15 * cells * 0.095);
+  EXPECT_NEAR(static_cast<double>(sward) / bare, std::expm1(-0.028) / std::expm1(-0.1), 0.06);
+}
+
 TEST(Ecosystem, NoPlantGrowsTallerThanItsSpeciesMaximum) {
   const Terrain terrain = flat(24, 10.0);
   const ConditionFields fields = test::uniformConditions(terrain);

@@ -152,6 +152,25 @@ slope_deg = [[10, 1], [20, 0]]
   EXPECT_DOUBLE_EQ(e.life.height_m.max, 20.0);
   EXPECT_EQ(e.life.longDistanceFraction, 0.0);  // a plain exponential kernel by default
   EXPECT_EQ(e.life.aging.halfAt, 0.0);          // and no aging
+  EXPECT_EQ(e.life.litterEstablishment, 1.0);   // seeds take on any ground by default
+  EXPECT_EQ(e.life.swardEstablishment, 1.0);
+}
+
+TEST(Ecology, SeedbedEstablishmentIsAShareOfBareSoils) {
+  const std::string file = std::string(kHead) + kLife;
+  const TomlDocument document = TomlDocument::parse(
+      file + "litter_establishment = 0.3\nsward_establishment = 0.4\n", "eco.toml");
+  TomlTable root = document.root();
+  std::optional<TomlTable> table = root.table("ecology");
+  const Ecology e = parseEcology(*table);
+  EXPECT_DOUBLE_EQ(e.life.litterEstablishment, 0.3);
+  EXPECT_DOUBLE_EQ(e.life.swardEstablishment, 0.4);
+  const std::string tooMuch = file + "sward_establishment = 1.5\n";
+  EXPECT_NE(errorOf(tooMuch).find(fmt::format(
+                "eco.toml:{}: ecology.life.sward_establishment: value 1.5 is outside [0, 1]",
+                lineOf(tooMuch, "sward_establishment"))),
+            std::string::npos)
+      << errorOf(tooMuch);
 }
 
 TEST(Ecology, AgingIsReadAsILandsCurve) {

@@ -38,6 +38,7 @@ nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
   const FrameStats& s = still.frame;
   const auto& n = s.forest.instances;
   return {{"renderer", still.renderer},
+          {"antialias_samples", still.samples},
           {"instances", {{"lod0", n[0]}, {"lod1", n[1]}, {"lod2", n[2]}, {"impostor", n[3]}}},
           {"culled", s.forest.culled},
           {"too_small", s.forest.tooSmall},
@@ -101,7 +102,8 @@ Image drawStill(const SceneSource& source, const Forest& forest, const Camera& c
       renderer->render(&forest, camera, renderOptionsFrom(view, source.scenario), target);
   if (stats)
     *stats = {frame, setupMs, glDescription(),
-              renderer->forest() ? renderer->forest()->gpuMemory() : ForestGpuMemory{}};
+              renderer->forest() ? renderer->forest()->gpuMemory() : ForestGpuMemory{},
+              target.samples};
   return readPixels(target);
 }
 

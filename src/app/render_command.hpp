@@ -22,6 +22,7 @@ struct StillStats {
   double setupMs = 0.0;
   std::string renderer;
   ForestGpuMemory treeMemory;  // the library's meshes and impostors on the GPU
+  int samples = 1;             // a pixel, as drawn (--antialias auto resolved)
 };
 
 // Draws a forest on its source's terrain (its library built) from a camera, headless, into

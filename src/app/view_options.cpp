@@ -1,5 +1,9 @@
 #include "app/view_options.hpp"
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include "core/error.hpp"
 #include "render/scene/tree_clearance.hpp"
 #include "sim/conditions/moisture.hpp"
@@ -53,11 +57,22 @@ void addFrameOptions(CLI::App& command, ViewOptions& o) {
           "How much is drawn at full detail: draft, balanced or high")
       ->default_str(std::string(toString(o.quality)));
   command
-      .add_option("--antialias", o.antialias,
-                  "Samples a pixel, multisample anti-aliasing: 1 (none), 2, 4, 8 or 16 (as the "
-                  "OpenGL allows; llvmpipe 4)")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16}))
-      ->capture_default_str();
+      .add_option_function<std::string>(
+          "--antialias",
+          [&o](const std::string& text) {
+            static const std::vector<std::string> counts{"1", "2", "4", "8", "16"};
+            if (text == "auto")
+              o.antialias = kAutoSamples;
+            else if (std::find(counts.begin(), counts.end(), text) != counts.end())
+              o.antialias = std::stoi(text);
+            else
+              throw CLI::ValidationError("--antialias",
+                                         "expected auto, 1, 2, 4, 8 or 16, got '" + text + "'");
+          },
+          "Samples a pixel, multisample anti-aliasing: auto (4 on a GPU, none on a software "
+          "rasteriser such as llvmpipe), 1 (none), 2, 4, 8 or 16 (as the OpenGL allows; "
+          "llvmpipe 4)")
+      ->default_str("auto");
   command
       .add_option("--level", o.forceLevel, "Draw every tree at one level: 0-2 meshes, 3 impostors")
       ->check(CLI::Range(0, 3));

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/scene_source.hpp"
+#include "render/gl/gl_objects.hpp"
 #include "render/gl/scene_renderer.hpp"
 #include "render/scene/camera.hpp"
 #include "render/scene/forest.hpp"
@@ -31,8 +32,8 @@ struct ViewOptions {
   RenderQuality quality = RenderQuality::High;
   int forceLevel = -1;  // -1: by size on screen
   bool noImpostors = false, noShadows = false;
-  bool noShaping = false;  // a run's trees upright and open-grown, not shaped by their sites
-  int antialias = 1;       // samples a pixel (multisample anti-aliasing); 1: none
+  bool noShaping = false;        // a run's trees upright and open-grown, not shaped by their sites
+  int antialias = kAutoSamples;  // samples a pixel (multisample anti-aliasing); 1: none
   // render and view only:
   std::string camera;             // X,Y,Z,YAW,PITCH
   std::string view = "overview";  // a camera preset

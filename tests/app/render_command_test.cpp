@@ -48,15 +48,21 @@ TEST(RenderCommand, AScenarioRendersItsTerrainWithAnOverlay) {
 }
 
 // --antialias 4 draws the same picture with smoother edges: it differs from the aliased one
-// only along edges (a small mean difference). (A sample count beyond the driver's is an
-// EnvironmentError, exit 3: gl_objects_test.)
+// only along edges (a small mean difference). The default, auto, draws no samples on
+// llvmpipe, where the tests run, and --stats says how many a pixel were drawn. (A sample
+// count beyond the driver's is an EnvironmentError, exit 3: gl_objects_test.)
 TEST(RenderCommand, AntialiasingSmoothsEdgesOfTheSamePicture) {
   const auto dir = eco::test::freshDirectory("app_render_antialias");
   const std::string still =
-      "render default --demo-trees 20 --size 320x180 --view low --quality draft";
-  ASSERT_EQ(ecoforest(still + " --out " + (dir / "1.png").string()).exitCode, 0);
+      "render default --demo-trees 20 --size 320x180 --view low --quality draft --stats";
+  CommandResult plain = ecoforest(still + " --out " + (dir / "1.png").string());
+  ASSERT_EQ(plain.exitCode, 0) << plain.output;
   CommandResult smooth = ecoforest(still + " --antialias 4 --out " + (dir / "4.png").string());
   ASSERT_EQ(smooth.exitCode, 0) << smooth.output;
+  EXPECT_NE(smooth.output.find("\"antialias_samples\": 4"), std::string::npos) << smooth.output;
+  if (plain.output.find("llvmpipe") != std::string::npos) {
+    EXPECT_NE(plain.output.find("\"antialias_samples\": 1"), std::string::npos) << plain.output;
+  }
   const eco::Image a = eco::readColorImage(dir / "1.png"), b = eco::readColorImage(dir / "4.png");
   ASSERT_EQ(a.rgba.size(), b.rgba.size());
   std::size_t changed = 0;

@@ -2,7 +2,9 @@
 
 #include "core/error.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -91,7 +93,21 @@ int maxSamples() {
   return samples;
 }
 
+bool isSoftwareRasteriser() {
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string renderer = name ? name : "";
+  for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
+    if (renderer.find(software) != std::string::npos) return true;
+  return false;
+}
+
+int samplesFor(int requested) {
+  if (requested != kAutoSamples) return requested;
+  return isSoftwareRasteriser() ? 1 : std::min(4, std::max(1, maxSamples()));
+}
+
 RenderTarget RenderTarget::create(int width, int height, int extraColors, int samples) {
+  samples = samplesFor(samples);
   ECO_ASSERT(samples >= 1 && (samples == 1 || extraColors == 0),
              "samples=" << samples << " extraColors=" << extraColors);
   if (samples > maxSamples())

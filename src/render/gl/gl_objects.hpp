@@ -70,7 +70,8 @@ struct RenderTarget {
   GlName depth;
   GlName multisampleColor, resolved;  // samples > 1: the drawn samples; `color`'s framebuffer
 
-  // An EnvironmentError where the driver draws fewer samples than asked for.
+  // An EnvironmentError where the driver draws fewer samples than asked for;
+  // kAutoSamples: samplesFor()'s choice.
   static RenderTarget create(int width, int height, int extraColors = 0, int samples = 1);
   void bind() const;
   void resolve() const;
@@ -78,6 +79,16 @@ struct RenderTarget {
 
 // The most samples a pixel this OpenGL draws (GL_MAX_SAMPLES; 4 on llvmpipe).
 int maxSamples();
+
+// Whether this OpenGL draws on the CPU (Mesa's llvmpipe and softpipe, SwiftShader).
+bool isSoftwareRasteriser();
+
+// `--antialias auto`: 4 samples a pixel where a GPU draws them, nearly free, and none on a
+// software rasteriser, where 4 samples cost 3-4 times the frame (docs/rendering.md).
+inline constexpr int kAutoSamples = 0;
+// The samples a pixel to draw with: kAutoSamples as above (fewer where the driver draws
+// fewer), any other count as asked.
+int samplesFor(int requested);
 
 // Reads the colour attachment of the bound framebuffer; row 0 of the image is the top row.
 Image readPixels(int width, int height, GLenum attachment = GL_COLOR_ATTACHMENT0);

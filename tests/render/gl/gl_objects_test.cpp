@@ -1,6 +1,7 @@
 #include "render/gl/gl_objects.hpp"
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -89,6 +90,20 @@ TEST(GlObjects, AMultisampledTargetResolvesEdgesToPartialCoverage) {
 TEST(GlObjects, MoreSamplesThanTheDriverDrawsIsAnEnvironmentError) {
   test::useHeadlessGl();
   EXPECT_THROW(RenderTarget::create(8, 8, 0, 2 * maxSamples()), EnvironmentError);
+}
+
+// --antialias auto: none on a software rasteriser (the tests run on llvmpipe), where
+// samples cost 3-4 times the frame; a count asked for is kept.
+TEST(GlObjects, AutomaticAntialiasingDrawsNoSamplesOnASoftwareRasteriser) {
+  test::useHeadlessGl();
+  EXPECT_EQ(samplesFor(1), 1);
+  EXPECT_EQ(samplesFor(4), 4);
+  const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (renderer.find("llvmpipe") == std::string::npos)
+    GTEST_SKIP() << "the OpenGL is not llvmpipe: " << renderer;
+  EXPECT_TRUE(isSoftwareRasteriser());
+  EXPECT_EQ(samplesFor(kAutoSamples), 1);
+  EXPECT_EQ(RenderTarget::create(8, 8, 0, kAutoSamples).samples, 1);
 }
 
 }  // namespace eco

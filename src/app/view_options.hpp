@@ -32,8 +32,9 @@ struct ViewOptions {
   RenderQuality quality = RenderQuality::High;
   int forceLevel = -1;  // -1: by size on screen
   bool noImpostors = false, noShadows = false;
-  bool noShaping = false;        // a run's trees upright and open-grown, not shaped by their sites
-  int antialias = kAutoSamples;  // samples a pixel (multisample anti-aliasing); 1: none
+  bool noShaping = false;  // a run's trees upright and open-grown, not shaped by their sites
+  // Samples a pixel (multisample anti-aliasing): kAutoSamples by the OpenGL; 1 none.
+  int antialias = kAutoSamples;
   // render and view only:
   std::string camera;             // X,Y,Z,YAW,PITCH
   std::string view = "overview";  // a camera preset

@@ -363,8 +363,7 @@ void Ecosystem::establish() {
       const double ground = light_.groundLightAt(east, north);
       const double sky = light_.skyLightAt(east, north);
       const double groundLight = sky > 0.0 ? ground / sky : 1.0;  // relative to the open
-      const double sward =
-          swardShare(static_cast<float>(groundLight), moisture_[cell], slope_deg_[cell]);
+      const Seedbed seedbed = seedbedAt(groundLight, moisture_[cell], slope_deg_[cell]);
       double total = 0.0;
       for (std::size_t s = 0; s < species_.size(); ++s) {
         const EcosystemSpecies& sp = species_[s];
@@ -374,7 +373,7 @@ void Ecosystem::establish() {
             cellArea;
         chance[s] = seeds * life.germination * sp.suitability[cell] *
                     std::clamp(sp.ecology.lightResponse(ground), 0.0, 1.0) *
-                    seedbedEstablishment(life, groundLight, sward);
+                    seedbedEstablishment(life, seedbed);
         total += chance[s];
       }
       if (total <= 0.0) continue;

@@ -19,9 +19,14 @@ float swardShare(float groundLight, float moisture, float slope_deg) {
          glm::smoothstep(2.0f, 4.0f, moisture) * soilShareOnSlope(slope_deg);
 }
 
-double seedbedEstablishment(const LifeHistory& life, double groundLight, double sward) {
-  if (groundLight < kLitterLight) return life.litterEstablishment;
-  const double s = std::clamp(sward, 0.0, 1.0);
+Seedbed seedbedAt(double groundLight, float moisture, float slope_deg) {
+  if (groundLight < kLitterLight) return {true, 0.0};
+  return {false, swardShare(static_cast<float>(groundLight), moisture, slope_deg)};
+}
+
+double seedbedEstablishment(const LifeHistory& life, const Seedbed& seedbed) {
+  if (seedbed.litter) return life.litterEstablishment;
+  const double s = std::clamp(seedbed.sward, 0.0, 1.0);
   return 1.0 - s * (1.0 - life.swardEstablishment);
 }
 

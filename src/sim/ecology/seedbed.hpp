@@ -24,9 +24,18 @@ float soilShareOnSlope(float slope_deg);
 // scale, `slope_deg` the terrain's.
 float swardShare(float groundLight, float moisture, float slope_deg);
 
+// The ground at a spot: litter, or the share of it a sward covers (the rest bare soil).
+struct Seedbed {
+  bool litter = false;
+  double sward = 0.0;  // without litter
+};
+// The seedbed where `groundLight` reaches the ground (relative to the open), on ground of
+// this moisture and slope: under litter the sward is not looked up.
+Seedbed seedbedAt(double groundLight, float moisture, float slope_deg);
+
 // How well a species' seeds take on this ground, relative to bare mineral soil: its litter
 // establishment on litter; elsewhere bare soil where the sward leaves it and the species'
 // sward establishment in the sward.
-double seedbedEstablishment(const LifeHistory& life, double groundLight, double sward);
+double seedbedEstablishment(const LifeHistory& life, const Seedbed& seedbed);
 
 }  // namespace eco

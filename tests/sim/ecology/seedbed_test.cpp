@@ -29,20 +29,32 @@ TEST(Seedbed, OpenFreshGroundIsASwardThatShadeDryGroundAndRockThin) {
   EXPECT_FLOAT_EQ(swardShare(1.0f, 5.0f, 55.0f), 0.0f);
 }
 
+TEST(Seedbed, LitterUnderACanopyThatTakesMoreThanHalfTheLightElseTheSward) {
+  const Seedbed shaded = seedbedAt(0.49, 5.0f, 5.0f);
+  EXPECT_TRUE(shaded.litter);
+  EXPECT_EQ(shaded.sward, 0.0);
+  for (double light : {0.5, 0.7, 1.0}) {
+    const Seedbed lit = seedbedAt(light, 5.0f, 5.0f);
+    EXPECT_FALSE(lit.litter) << light;
+    EXPECT_EQ(lit.sward, swardShare(static_cast<float>(light), 5.0f, 5.0f)) << light;
+  }
+}
+
 TEST(Seedbed, ASpeciesTakesOnLitterSwardAndBareSoilByItsShares) {
   LifeHistory pine;
   pine.litterEstablishment = 0.2;
   pine.swardEstablishment = 0.3;
   // Under a canopy that takes more than half the light: litter, whatever the sward.
-  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, 0.49, 0.0), 0.2);
+  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, seedbedAt(0.49, 5.0f, 5.0f)), 0.2);
+  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, {true, 0.9}), 0.2);
   // In the light: bare soil where the sward leaves it.
-  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, 1.0, 0.0), 1.0);
-  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, 1.0, 0.9), 0.1 + 0.9 * 0.3);
-  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, 0.6, 1.0), 0.3);
+  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, {false, 0.0}), 1.0);
+  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, {false, 0.9}), 0.1 + 0.9 * 0.3);
+  EXPECT_DOUBLE_EQ(seedbedEstablishment(pine, {false, 1.0}), 0.3);
   // A species whose seeds take anywhere takes exactly as on bare soil.
   const LifeHistory beech;
   for (double sward : {0.0, 0.37, 0.9, 1.0})
-    EXPECT_EQ(seedbedEstablishment(beech, 0.8, sward), 1.0) << sward;
+    EXPECT_EQ(seedbedEstablishment(beech, {false, sward}), 1.0) << sward;
 }
 
 }  // namespace

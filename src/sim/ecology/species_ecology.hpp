@@ -106,11 +106,14 @@ struct LifeHistory {
   int saplingStressYears = 3;            // saplings die after this many poor years in a row
   double saplingStressThreshold = 0.05;  // a poor year grows less than this share of potential
   // Reproduction.
-  int maturityAge_years = 40;    // first year of seed production
-  double fecundity_m2 = 40.0;    // seeds per m2 of crown projection in a mast year
+  int maturityAge_years = 40;  // first year of seed production
+  // Seeds per m2 of crown projection in a mast year. iLand's fecundity_m2 counts potential
+  // seedlings, the seeds that survive to germinate (cf. Moles et al. 2004), so by default
+  // none of them is lost again before the site, light and seedbed decide.
+  double fecundity_m2 = 40.0;
   int mastIntervalYears = 1;     // mean years between mast years
   double nonMastFraction = 1.0;  // seed production in other years, share of a mast year's
-  double germination = 0.1;  // seeds that become one-year seedlings on a free, suitable, lit spot
+  double germination = 1.0;  // seeds that become one-year seedlings on a free, suitable, lit spot
   // Establishment on litter and in a sward, relative to bare mineral soil (seedbed.hpp).
   double litterEstablishment = 1.0;
   double swardEstablishment = 1.0;

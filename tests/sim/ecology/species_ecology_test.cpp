@@ -173,6 +173,21 @@ TEST(Ecology, SeedbedEstablishmentIsAShareOfBareSoils) {
       << errorOf(tooMuch);
 }
 
+// iLand's fecundity counts potential seedlings, seeds that survive to germinate, so a
+// species file that takes it loses none of them again unless it says so.
+TEST(Ecology, FecundityCountsSeedlingsSoNoSeedIsLostByDefault) {
+  auto germinationOf = [](const std::string& life) {
+    const TomlDocument document = TomlDocument::parse(std::string(kHead) + life, "eco.toml");
+    TomlTable root = document.root();
+    std::optional<TomlTable> table = root.table("ecology");
+    return parseEcology(*table).life.germination;
+  };
+  std::string withoutGermination = kLife;
+  withoutGermination.erase(withoutGermination.find("germination = 0.4\n"), 18);
+  EXPECT_DOUBLE_EQ(germinationOf(withoutGermination), 1.0);
+  EXPECT_DOUBLE_EQ(germinationOf(kLife), 0.4);
+}
+
 TEST(Ecology, AgingIsReadAsILandsCurve) {
   const std::string file = std::string(kHead) + kLife;
   const TomlDocument document = TomlDocument::parse(file + "aging = [0.8, 2.0]\n", "eco.toml");

@@ -18,8 +18,8 @@
 //        fidelity_bench --compare A.png B.png   (the same measures of two saved pictures)
 // --reuse-references (anywhere): read the references already saved in OUT_DIR instead of
 // drawing them again (they take minutes; the qualities seconds), e.g. while tuning a level.
-// --antialias N (anywhere): every picture, references included, with N samples a pixel
-// (render's --antialias), so both sides are measured without their aliasing.
+// --antialias N|auto (anywhere): every picture, references included, with N samples a
+// pixel (render's --antialias), so both sides are measured without their aliasing.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -29,6 +29,7 @@
 #include "core/frames.hpp"
 #include "core/image_metrics.hpp"
 #include "render/gl/gl_context.hpp"
+#include "render/gl/gl_objects.hpp"
 #include "render/gl/scene_renderer.hpp"
 #include "render/scene/camera.hpp"
 #include "render/scene/frame_size.hpp"
@@ -146,7 +147,7 @@ int main(int argc, char** argv) {
   int samples = 1;
   if (const auto flag = std::find(args.begin(), args.end(), "--antialias");
       flag != args.end() && flag + 1 != args.end()) {
-    samples = std::stoi(*(flag + 1));
+    samples = *(flag + 1) == "auto" ? eco::kAutoSamples : std::stoi(*(flag + 1));
     args.erase(flag, flag + 2);
   }
   argc = static_cast<int>(args.size());
@@ -180,8 +181,8 @@ int main(int argc, char** argv) {
                        eco::impostorSettingsFor(eco::RenderQuality::Balanced)}};
   const eco::RenderTarget target = eco::RenderTarget::create(size.width, size.height, 0, samples);
   std::printf("%s, %dx%d, %d sample%s a pixel, reference: LOD0 down to %.0f px\n",
-              eco::glDescription().c_str(), size.width, size.height, samples,
-              samples == 1 ? "" : "s", referenceMinPixels);
+              eco::glDescription().c_str(), size.width, size.height, target.samples,
+              target.samples == 1 ? "" : "s", referenceMinPixels);
 
   const eco::Forest plantedForest = eco::demoForest(terrain, library, planted, scenario.seed);
   compareScene("planted", terrain, plantedForest, library, renderers, target, referenceMinPixels,

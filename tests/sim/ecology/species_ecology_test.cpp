@@ -14,12 +14,17 @@
 namespace eco {
 namespace {
 
+// The [ecology] table of a species file's text, parsed.
+Ecology ecologyOf(const std::string& text) {
+  const TomlDocument document = TomlDocument::parse(text, "eco.toml");
+  TomlTable root = document.root();
+  std::optional<TomlTable> ecology = root.table("ecology");
+  return parseEcology(*ecology);
+}
+
 std::string errorOf(const std::string& text) {
   try {
-    const TomlDocument document = TomlDocument::parse(text, "eco.toml");
-    TomlTable root = document.root();
-    std::optional<TomlTable> ecology = root.table("ecology");
-    parseEcology(*ecology);
+    ecologyOf(text);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -125,18 +130,14 @@ TEST(Ecology, GrowthCurveAndItsYearOn) {
 }
 
 TEST(Ecology, ParsesAFileAndItsOverrides) {
-  const TomlDocument document = TomlDocument::parse(std::string(R"(
+  const Ecology e = ecologyOf(std::string(R"(
 [ecology]
 ellenberg = { light = 6, temperature = "x", moisture = 4 }
 wind_firmness = 150
 light_response = [[0.1, 0], [0.2, 1]]
 [ecology.tolerance]
 slope_deg = [[10, 1], [20, 0]]
-)") + kLife,
-                                                    "eco.toml");
-  TomlTable root = document.root();
-  std::optional<TomlTable> table = root.table("ecology");
-  const Ecology e = parseEcology(*table);
+)") + kLife);
   EXPECT_EQ(e.ellenberg.light, 6);
   EXPECT_EQ(e.ellenberg.temperature, 0);
   EXPECT_DOUBLE_EQ(e.lightResponse(0.15), 0.5);
@@ -158,11 +159,7 @@ slope_deg = [[10, 1], [20, 0]]
 
 TEST(Ecology, SeedbedEstablishmentIsAShareOfBareSoils) {
   const std::string file = std::string(kHead) + kLife;
-  const TomlDocument document = TomlDocument::parse(
-      file + "litter_establishment = 0.3\nsward_establishment = 0.4\n", "eco.toml");
-  TomlTable root = document.root();
-  std::optional<TomlTable> table = root.table("ecology");
-  const Ecology e = parseEcology(*table);
+  const Ecology e = ecologyOf(file + "litter_establishment = 0.3\nsward_establishment = 0.4\n");
   EXPECT_DOUBLE_EQ(e.life.litterEstablishment, 0.3);
   EXPECT_DOUBLE_EQ(e.life.swardEstablishment, 0.4);
   const std::string tooMuch = file + "sward_establishment = 1.5\n";
@@ -176,24 +173,16 @@ TEST(Ecology, SeedbedEstablishmentIsAShareOfBareSoils) {
 // iLand's fecundity counts potential seedlings, seeds that survive to germinate, so a
 // species file that takes it loses none of them again unless it says so.
 TEST(Ecology, FecundityCountsSeedlingsSoNoSeedIsLostByDefault) {
-  auto germinationOf = [](const std::string& life) {
-    const TomlDocument document = TomlDocument::parse(std::string(kHead) + life, "eco.toml");
-    TomlTable root = document.root();
-    std::optional<TomlTable> table = root.table("ecology");
-    return parseEcology(*table).life.germination;
-  };
+  const std::string line = "germination = 0.4\n";
   std::string withoutGermination = kLife;
-  withoutGermination.erase(withoutGermination.find("germination = 0.4\n"), 18);
-  EXPECT_DOUBLE_EQ(germinationOf(withoutGermination), 1.0);
-  EXPECT_DOUBLE_EQ(germinationOf(kLife), 0.4);
+  withoutGermination.erase(withoutGermination.find(line), line.size());
+  EXPECT_DOUBLE_EQ(ecologyOf(kHead + withoutGermination).life.germination, 1.0);
+  EXPECT_DOUBLE_EQ(ecologyOf(std::string(kHead) + kLife).life.germination, 0.4);
 }
 
 TEST(Ecology, AgingIsReadAsILandsCurve) {
   const std::string file = std::string(kHead) + kLife;
-  const TomlDocument document = TomlDocument::parse(file + "aging = [0.8, 2.0]\n", "eco.toml");
-  TomlTable root = document.root();
-  std::optional<TomlTable> table = root.table("ecology");
-  const Ecology e = parseEcology(*table);
+  const Ecology e = ecologyOf(file + "aging = [0.8, 2.0]\n");
   EXPECT_DOUBLE_EQ(e.life.aging.halfAt, 0.8);
   EXPECT_DOUBLE_EQ(e.life.aging.exponent, 2.0);
   EXPECT_NE(errorOf(file + "aging = [0.8]\n").find("ecology.life.aging"), std::string::npos);

@@ -4,17 +4,53 @@
 #include <unistd.h>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 #include <sstream>
+#include <vector>
+
+#include <gtest/gtest.h>
 
 namespace eco::test {
+namespace {
+
+// The folders this test process made, removed when it ends: a suite run leaves nothing in
+// the temporary directory. A failed test's folders are kept to look into, and
+// ECOFOREST_KEEP_TEST_FILES=1 keeps every test's.
+class MadeFolders {
+ public:
+  void add(const std::filesystem::path& folder) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    folders_.push_back(folder);
+  }
+  ~MadeFolders() {
+    if (std::getenv("ECOFOREST_KEEP_TEST_FILES") || ::testing::UnitTest::GetInstance()->Failed())
+      return;
+    std::error_code ignored;
+    for (const std::filesystem::path& folder : folders_)
+      std::filesystem::remove_all(folder, ignored);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::filesystem::path> folders_;
+};
+
+MadeFolders& madeFolders() {
+  static MadeFolders folders;
+  return folders;
+}
+
+}  // namespace
 
 std::filesystem::path freshDirectory(const std::string& name) {
   auto dir = std::filesystem::temp_directory_path() /
              ("ecoforest_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  madeFolders().add(dir);
   return dir;
 }
 

@@ -6,7 +6,8 @@
 
 namespace eco::test {
 
-// An empty folder under the temporary directory, unique to this process.
+// An empty folder under the temporary directory, unique to this process, removed when the
+// process ends unless a test failed (or ECOFOREST_KEEP_TEST_FILES is set).
 std::filesystem::path freshDirectory(const std::string& name);
 std::string readFile(const std::filesystem::path& file);
 void writeFile(const std::filesystem::path& file, const std::string& text);

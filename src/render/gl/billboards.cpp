@@ -1,6 +1,7 @@
 #include "render/gl/billboards.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "render/gl/forest_renderer.hpp"
 #include "render/gl/frame_uniforms.hpp"
@@ -9,15 +10,22 @@ namespace eco {
 
 Billboards bakeBillboards(const TreeLibrary& library, const ImpostorSettings& settings) {
   const FrameUniformBuffer uniforms;
-  const ForestRenderer renderer(library, settings, uniforms);  // bakes the impostor frames
+  // Only the two frames each picture shows are baked, one type at a time: the atlases of
+  // every type at 256 pixels a frame would take gigabytes.
+  ForestRenderer renderer(library, settings, uniforms, ImpostorAtlases::none);
   Billboards billboards{settings, {}};
   const std::array<glm::ivec2, 2> frames = billboardFrames(settings.frames);
   const int tile = settings.tilePixels;
   const auto stride = static_cast<std::size_t>(tile) * 4;
+  std::vector<std::vector<Image>> sourceFrames(library.types().size());
   for (std::size_t t = 0; t < library.types().size(); ++t) {
+    // The variants of a species and age class show their source type's frames.
+    const auto source = static_cast<std::size_t>(renderer.impostorSource(static_cast<int>(t)));
+    if (sourceFrames[source].empty())
+      sourceFrames[source] = renderer.bakeFrameImages(static_cast<int>(source), frames, uniforms);
     Image& picture = billboards.textures.emplace_back(2 * tile, tile);
     for (std::size_t view = 0; view < frames.size(); ++view) {
-      const Image frame = renderer.impostorFrameImage(static_cast<int>(t), frames[view]);
+      const Image& frame = sourceFrames[source][view];
       for (int y = 0; y < tile; ++y)
         std::copy_n(
             frame.rgba.begin() + static_cast<std::ptrdiff_t>(y * stride), stride,

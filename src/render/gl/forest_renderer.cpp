@@ -64,7 +64,7 @@ void setInstanceLayout(GLuint vao) {
 }
 
 ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
-                               const FrameUniformBuffer& uniforms)
+                               const FrameUniformBuffer& uniforms, ImpostorAtlases atlases)
     : library_(library),
       impostorSettings_(impostors),
       meshProgram_({{GL_VERTEX_SHADER, "tree.vert"}, {GL_FRAGMENT_SHADER, "tree.frag"}}),
@@ -100,7 +100,7 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
       m.translucency = kind == MaterialKind::Bark || kind == MaterialKind::Crown ? 0.0f : 0.35f;
     }
   }
-  bakeImpostors(uniforms);
+  if (atlases == ImpostorAtlases::baked) bakeImpostors(uniforms);
 }
 
 void ForestRenderer::bindMaterial(const Program& program, int species, MaterialKind kind) const {
@@ -183,20 +183,21 @@ int ForestRenderer::impostorSource(int type) const {
   return library_.types()[type].impostorSource;
 }
 
-Image ForestRenderer::impostorFrameImage(int type, glm::ivec2 frame) const {
-  const int tile = impostorSettings_.tilePixels;
+namespace {
+
+// One tile of a baked frames texture, rows top-down, transparent texels in the tile's mean
+// colour so that a client filtering the picture keeps the tree's colour at its edges
+// instead of darkening them.
+Image frameImageOf(const GlName& texture, glm::ivec2 frame, int tile) {
   Image image(tile, tile);
   std::vector<std::uint8_t> rows(image.rgba.size());
-  glGetTextureSubImage(atlases_[impostorSource(type)].albedo.id(), 0, frame.x * tile,
-                       frame.y * tile, 0, tile, tile, 1, GL_RGBA, GL_UNSIGNED_BYTE,
-                       static_cast<GLsizei>(rows.size()), rows.data());
+  glGetTextureSubImage(texture.id(), 0, frame.x * tile, frame.y * tile, 0, tile, tile, 1, GL_RGBA,
+                       GL_UNSIGNED_BYTE, static_cast<GLsizei>(rows.size()), rows.data());
   // OpenGL's rows run bottom-up.
   const std::size_t stride = static_cast<std::size_t>(tile) * 4;
   for (int y = 0; y < tile; ++y)
     std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>((tile - 1 - y) * stride), stride,
                 image.rgba.begin() + static_cast<std::ptrdiff_t>(y * stride));
-  // Transparent texels take the frame's mean colour, so that a client filtering the
-  // picture keeps the tree's colour at its edges instead of darkening them.
   const glm::vec4 mean = image.meanOpaqueColor();
   for (int y = 0; y < tile; ++y)
     for (int x = 0; x < tile; ++x)
@@ -204,52 +205,78 @@ Image ForestRenderer::impostorFrameImage(int type, glm::ivec2 frame) const {
   return image;
 }
 
-void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
-  const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
-  const int size = frames * tile;
-  RenderTarget target = RenderTarget::create(size, size, 2);
+}  // namespace
+
+std::vector<Image> ForestRenderer::bakeFrameImages(int type, std::span<const glm::ivec2> frames,
+                                                   const FrameUniformBuffer& uniforms) {
+  const int tile = impostorSettings_.tilePixels, size = impostorSettings_.frames * tile;
+  const RenderTarget target = RenderTarget::create(size, size, 2);
+  beginBaking();
+  drawImpostorFrames(impostorSource(type), frames, target, uniforms);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  std::vector<Image> images;
+  for (const glm::ivec2 frame : frames) images.push_back(frameImageOf(target.color, frame, tile));
+  return images;
+}
+
+void ForestRenderer::beginBaking() {
   const Instance identity{glm::vec4(0.0f), glm::vec4(1.0f, 1.0f, 0.0f, 0.0f), glm::vec4(1.0f),
                           glm::vec2(0.0f)};
   glNamedBufferData(instances_.id(), sizeof(Instance), &identity, GL_DYNAMIC_DRAW);
   instanceCapacity_ = 1;
   glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
-
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_FRAMEBUFFER_SRGB);
   glBindVertexArray(meshArray_.id());
   bakeProgram_.use();
+}
+
+void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> frames,
+                                        const RenderTarget& target,
+                                        const FrameUniformBuffer& uniforms) {
+  const TreeType& tree = library_.types()[type];
+  const int tile = impostorSettings_.tilePixels;
+  const glm::vec3 centre(tree.bounds);
+  const float radius = tree.bounds.w;
+  target.bind();
+  // Every attachment holds its value times the coverage (drawn texels cover fully, the
+  // rest are zero), so that filtering and the mip levels average each over what covers a
+  // texel only: the shader divides by the coverage (albedo's alpha). An unweighted mean
+  // would pull the colours toward a clear colour and the normals toward a clear normal.
+  const glm::vec4 none(0.0f);
+  const float farDepth = 1.0f;
+  for (int attachment = 0; attachment < 3; ++attachment)
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, attachment, &none.x);
+  glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
+  for (const glm::ivec2 frame : frames) {
+    const glm::vec3 f = frameDirection(frame, impostorSettings_.frames);
+    glm::vec3 right, up;
+    frameAxes(f, right, up);
+    FrameUniforms u;
+    const glm::mat4 view = glm::lookAt(centre + 2.0f * radius * f, centre, up);
+    u.viewProj = glm::ortho(-radius, radius, -radius, radius, 0.0f, 4.0f * radius) * view;
+    u.camera = glm::vec4(centre + 100.0f * radius * f, 0.0f);
+    uniforms.upload(u);
+    // OpenGL's convention throughout: row 0 at the bottom of the atlas, up is +v.
+    glViewport(frame.x * tile, frame.y * tile, tile, tile);
+    drawRanges(ranges_[type][impostorSettings_.bakeLod], tree.species, {0, 1}, bakeProgram_);
+  }
+}
+
+void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
+  const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
+  const int size = frames * tile;
+  const RenderTarget target = RenderTarget::create(size, size, 2);
+  std::vector<glm::ivec2> all;
+  for (int row = 0; row < frames; ++row)
+    for (int column = 0; column < frames; ++column) all.push_back({column, row});
+  beginBaking();
   const auto& types = library_.types();
   atlases_.resize(types.size());
   gpuMemory_.impostorBytes = 0;
   for (std::size_t t = 0; t < types.size(); ++t) {
-    const TreeType& type = types[t];
     if (impostorSource(static_cast<int>(t)) != static_cast<int>(t)) continue;
-    const glm::vec3 centre(type.bounds);
-    const float radius = type.bounds.w;
-    target.bind();
-    // Every attachment holds its value times the coverage (drawn texels cover fully, the
-    // rest are zero), so that filtering and the mip levels average each over what covers a
-    // texel only: the shader divides by the coverage (albedo's alpha). An unweighted mean
-    // would pull the colours toward a clear colour and the normals toward a clear normal.
-    const glm::vec4 none(0.0f);
-    const float farDepth = 1.0f;
-    for (int attachment = 0; attachment < 3; ++attachment)
-      glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, attachment, &none.x);
-    glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &farDepth);
-    for (int row = 0; row < frames; ++row)
-      for (int column = 0; column < frames; ++column) {
-        const glm::vec3 f = frameDirection({column, row}, frames);
-        glm::vec3 right, up;
-        frameAxes(f, right, up);
-        FrameUniforms u;
-        const glm::mat4 view = glm::lookAt(centre + 2.0f * radius * f, centre, up);
-        u.viewProj = glm::ortho(-radius, radius, -radius, radius, 0.0f, 4.0f * radius) * view;
-        u.camera = glm::vec4(centre + 100.0f * radius * f, 0.0f);
-        uniforms.upload(u);
-        // OpenGL's convention throughout: row 0 at the bottom of the atlas, up is +v.
-        glViewport(column * tile, row * tile, tile, tile);
-        drawRanges(ranges_[t][impostorSettings_.bakeLod], type.species, {0, 1}, bakeProgram_);
-      }
+    drawImpostorFrames(static_cast<int>(t), all, target, uniforms);
     Atlas& atlas = atlases_[t];
     // Copy the attachments into mipmapped textures of their own.
     const int levels = 1 + static_cast<int>(std::log2(tile));  // mip down to 1 texel per tile

@@ -61,10 +61,16 @@ struct ForestGpuMemory {
   std::size_t total() const { return meshBytes + impostorBytes; }
 };
 
+// Whether a ForestRenderer bakes every impostor atlas when it is made (to draw forests), or
+// none (to bake a few frames on request: the glTF export's billboards need two a type, where
+// the atlases hold frames² with their normals and depths: gigabytes at 256-pixel frames).
+enum class ImpostorAtlases { baked, none };
+
 class ForestRenderer {
  public:
   ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
-                 const FrameUniformBuffer& uniforms);
+                 const FrameUniformBuffer& uniforms,
+                 ImpostorAtlases atlases = ImpostorAtlases::baked);
 
   // Uploads the library's meshes again after its types changed (TreeLibrary::setType), the
   // materials kept; impostors are baked again only when asked (they take longest).
@@ -84,9 +90,11 @@ class ForestRenderer {
   // the first one's. Below the impostor switch (100 px) the variants differ by a few pixels
   // while each tree's own yaw already picks a different frame; sharing bakes a third.
   int impostorSource(int type) const;
-  // The baked albedo of one impostor frame of a type (its source's), sRGB with alpha, row 0
-  // at the top (up in the frame's axes, impostor.hpp), tilePixels square.
-  Image impostorFrameImage(int type, glm::ivec2 frame) const;
+  // Bakes these impostor frames of a type (its source's) as its atlas would hold them and
+  // returns their albedo, sRGB with alpha, row 0 at the top (up in the frame's axes,
+  // impostor.hpp), tilePixels square; no atlas is kept.
+  std::vector<Image> bakeFrameImages(int type, std::span<const glm::ivec2> frames,
+                                     const FrameUniformBuffer& uniforms);
 
  private:
   struct DrawRange {
@@ -121,6 +129,12 @@ class ForestRenderer {
                      const std::function<Bucket(std::size_t)>& bucketOf) const;
   void uploadMeshes();
   void bakeImpostors(const FrameUniformBuffer& uniforms);
+  // The baking pass's state: one upright instance at the origin, the bake program.
+  void beginBaking();
+  // Draws frames of a type's impostor, each into its tile of the bound target (frames ×
+  // frames tiles), which is cleared first.
+  void drawImpostorFrames(int type, std::span<const glm::ivec2> frames, const RenderTarget& target,
+                          const FrameUniformBuffer& uniforms);
   void bindMaterial(const Program& program, int species, MaterialKind kind) const;
 
   const TreeLibrary& library_;

@@ -36,6 +36,7 @@ std::optional<ConfinedResult> inSmallFileSystem(const std::string& commandLine, 
       space.parent_path() / (space.filename().string() + ".sh");
   writeFile(scriptFile, script);
   CommandResult r = runCommand("unshare -rm sh " + scriptFile.string());
+  std::filesystem::remove(scriptFile);  // beside the folder: the tmpfs covered the folder
   if (r.exitCode == kCannotMount) return std::nullopt;
   ConfinedResult confined;
   const std::size_t marker = r.output.rfind("--- files\n");

@@ -12,7 +12,7 @@ Billboards bakeBillboards(const TreeLibrary& library, const ImpostorSettings& se
   const FrameUniformBuffer uniforms;
   // Only the two frames each picture shows are baked, one type at a time: the atlases of
   // every type at 256 pixels a frame would take gigabytes.
-  ForestRenderer renderer(library, settings, uniforms, ImpostorAtlases::none);
+  ForestRenderer renderer(library, settings, uniforms);  // bakes no atlas unless it draws
   Billboards billboards{settings, {}};
   const std::array<glm::ivec2, 2> frames = billboardFrames(settings.frames);
   const int tile = settings.tilePixels;
@@ -22,7 +22,7 @@ Billboards bakeBillboards(const TreeLibrary& library, const ImpostorSettings& se
     // The variants of a species and age class show their source type's frames.
     const auto source = static_cast<std::size_t>(renderer.impostorSource(static_cast<int>(t)));
     if (sourceFrames[source].empty())
-      sourceFrames[source] = renderer.bakeFrameImages(static_cast<int>(source), frames, uniforms);
+      sourceFrames[source] = renderer.bakeFrameImages(static_cast<int>(source), frames);
     Image& picture = billboards.textures.emplace_back(2 * tile, tile);
     for (std::size_t view = 0; view < frames.size(); ++view) {
       const Image& frame = sourceFrames[source][view];

@@ -1,6 +1,7 @@
 #include "render/gl/forest_renderer.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
@@ -64,8 +65,9 @@ void setInstanceLayout(GLuint vao) {
 }
 
 ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
-                               const FrameUniformBuffer& uniforms, ImpostorAtlases atlases)
+                               const FrameUniformBuffer& uniforms)
     : library_(library),
+      uniforms_(uniforms),
       impostorSettings_(impostors),
       meshProgram_({{GL_VERTEX_SHADER, "tree.vert"}, {GL_FRAGMENT_SHADER, "tree.frag"}}),
       meshShadowProgram_({{GL_VERTEX_SHADER, "tree.vert"}, {GL_FRAGMENT_SHADER, "tree.frag"}},
@@ -100,7 +102,6 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
       m.translucency = kind == MaterialKind::Bark || kind == MaterialKind::Crown ? 0.0f : 0.35f;
     }
   }
-  if (atlases == ImpostorAtlases::baked) bakeImpostors(uniforms);
 }
 
 void ForestRenderer::bindMaterial(const Program& program, int species, MaterialKind kind) const {
@@ -174,9 +175,13 @@ void ForestRenderer::uploadMeshes() {
   atlases_.resize(types.size());
 }
 
-void ForestRenderer::reloadMeshes(const FrameUniformBuffer& uniforms, bool bakeImpostors) {
+void ForestRenderer::reloadMeshes(bool rebakeImpostors) {
   uploadMeshes();
-  if (bakeImpostors) this->bakeImpostors(uniforms);
+  if (rebakeImpostors) {
+    atlases_.clear();
+    atlases_.resize(library_.types().size());
+    gpuMemory_.impostorBytes = 0;
+  }
 }
 
 int ForestRenderer::impostorSource(int type) const {
@@ -207,12 +212,11 @@ Image frameImageOf(const GlName& texture, glm::ivec2 frame, int tile) {
 
 }  // namespace
 
-std::vector<Image> ForestRenderer::bakeFrameImages(int type, std::span<const glm::ivec2> frames,
-                                                   const FrameUniformBuffer& uniforms) {
+std::vector<Image> ForestRenderer::bakeFrameImages(int type, std::span<const glm::ivec2> frames) {
   const int tile = impostorSettings_.tilePixels, size = impostorSettings_.frames * tile;
   const RenderTarget target = RenderTarget::create(size, size, 2);
   beginBaking();
-  drawImpostorFrames(impostorSource(type), frames, target, uniforms);
+  drawImpostorFrames(impostorSource(type), frames, target);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   std::vector<Image> images;
   for (const glm::ivec2 frame : frames) images.push_back(frameImageOf(target.color, frame, tile));
@@ -232,8 +236,7 @@ void ForestRenderer::beginBaking() {
 }
 
 void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> frames,
-                                        const RenderTarget& target,
-                                        const FrameUniformBuffer& uniforms) {
+                                        const RenderTarget& target) {
   const TreeType& tree = library_.types()[type];
   const int tile = impostorSettings_.tilePixels;
   const glm::vec3 centre(tree.bounds);
@@ -256,14 +259,14 @@ void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> fr
     const glm::mat4 view = glm::lookAt(centre + 2.0f * radius * f, centre, up);
     u.viewProj = glm::ortho(-radius, radius, -radius, radius, 0.0f, 4.0f * radius) * view;
     u.camera = glm::vec4(centre + 100.0f * radius * f, 0.0f);
-    uniforms.upload(u);
+    uniforms_.upload(u);
     // OpenGL's convention throughout: row 0 at the bottom of the atlas, up is +v.
     glViewport(frame.x * tile, frame.y * tile, tile, tile);
     drawRanges(ranges_[type][impostorSettings_.bakeLod], tree.species, {0, 1}, bakeProgram_);
   }
 }
 
-void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
+void ForestRenderer::bakeAtlases(const std::vector<int>& sources) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;
   const RenderTarget target = RenderTarget::create(size, size, 2);
@@ -271,12 +274,8 @@ void ForestRenderer::bakeImpostors(const FrameUniformBuffer& uniforms) {
   for (int row = 0; row < frames; ++row)
     for (int column = 0; column < frames; ++column) all.push_back({column, row});
   beginBaking();
-  const auto& types = library_.types();
-  atlases_.resize(types.size());
-  gpuMemory_.impostorBytes = 0;
-  for (std::size_t t = 0; t < types.size(); ++t) {
-    if (impostorSource(static_cast<int>(t)) != static_cast<int>(t)) continue;
-    drawImpostorFrames(static_cast<int>(t), all, target, uniforms);
+  for (const int t : sources) {
+    drawImpostorFrames(t, all, target);
     Atlas& atlas = atlases_[t];
     // Copy the attachments into mipmapped textures of their own.
     const int levels = 1 + static_cast<int>(std::log2(tile));  // mip down to 1 texel per tile
@@ -404,6 +403,29 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     forEachDraw(i, [&](int type, int level, float, float, float) {
       ++buckets_[type * kLevelCount + level].count;
     });
+  }
+  {
+    // The atlases of the types this frame is the first to draw as impostors or shadow
+    // sprites, baked before the instances are uploaded (baking draws with an instance of
+    // its own).
+    const auto bakeStart = std::chrono::steady_clock::now();
+    std::vector<std::uint8_t> drawn(types.size(), 0);
+    for (std::size_t t = 0; t < types.size(); ++t) {
+      bool sprite = buckets_[t * kLevelCount + kLevelImpostor].count > 0;
+      for (std::size_t c = 0; c < cascades; ++c)
+        sprite = sprite ||
+                 shadowBuckets_[(c * types.size() + t) * kLevelCount + kLevelImpostor].count > 0;
+      if (sprite) drawn[impostorSource(static_cast<int>(t))] = 1;
+    }
+    std::vector<int> unbaked;
+    for (std::size_t t = 0; t < types.size(); ++t)
+      if (drawn[t] && !atlases_[t].albedo) unbaked.push_back(static_cast<int>(t));
+    if (!unbaked.empty()) {
+      bakeAtlases(unbaked);
+      stats.impostorBakeMs =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - bakeStart)
+              .count();
+    }
   }
   GLuint next = 0;
   for (Bucket& b : buckets_) b.first = next, next += b.count, b.count = 0;

@@ -61,23 +61,26 @@ struct ForestGpuMemory {
   std::size_t total() const { return meshBytes + impostorBytes; }
 };
 
-// Whether a ForestRenderer bakes every impostor atlas when it is made (to draw forests), or
-// none (to bake a few frames on request: the glTF export's billboards need two a type, where
-// the atlases hold frames² with their normals and depths: gigabytes at 256-pixel frames).
-enum class ImpostorAtlases { baked, none };
-
+// Impostor atlases are baked when a frame first draws a type as an impostor (or casts its
+// shadow as one), in prepare(), not for the whole library when the renderer is made: a young
+// run's frames show a fraction of the library's types, and an atlas is its type's frames
+// drawn from LOD0 or LOD1, the slow part of setting up. The glTF export's billboards bake
+// only the two frames they show (bakeFrameImages) and never an atlas.
 class ForestRenderer {
  public:
+  // `uniforms` (the frame uniforms' buffer the shaders read) must outlive the renderer: the
+  // atlases are baked through it.
   ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
-                 const FrameUniformBuffer& uniforms,
-                 ImpostorAtlases atlases = ImpostorAtlases::baked);
+                 const FrameUniformBuffer& uniforms);
 
   // Uploads the library's meshes again after its types changed (TreeLibrary::setType), the
-  // materials kept; impostors are baked again only when asked (they take longest).
-  void reloadMeshes(const FrameUniformBuffer& uniforms, bool bakeImpostors);
+  // materials kept; the atlases are kept too unless `rebakeImpostors`, which drops them to be
+  // baked again as frames draw them (they take longest).
+  void reloadMeshes(bool rebakeImpostors);
 
   // Culls, picks levels and fills the instance buffer for this camera and the shadow
-  // cascades (none: no shadows).
+  // cascades (none: no shadows); first bakes the atlases of the types it draws as impostors
+  // that have none (ForestStats::impostorBakeMs).
   ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
                       const LodSettings& lod, std::span<const ShadowBox> shadows);
   const TreeLibrary& library() const { return library_; }
@@ -93,8 +96,7 @@ class ForestRenderer {
   // Bakes these impostor frames of a type (its source's) as its atlas would hold them and
   // returns their albedo, sRGB with alpha, row 0 at the top (up in the frame's axes,
   // impostor.hpp), tilePixels square; no atlas is kept.
-  std::vector<Image> bakeFrameImages(int type, std::span<const glm::ivec2> frames,
-                                     const FrameUniformBuffer& uniforms);
+  std::vector<Image> bakeFrameImages(int type, std::span<const glm::ivec2> frames);
 
  private:
   struct DrawRange {
@@ -128,16 +130,17 @@ class ForestRenderer {
   void drawImpostors(const Program& program, float pixelsPerUnit,
                      const std::function<Bucket(std::size_t)>& bucketOf) const;
   void uploadMeshes();
-  void bakeImpostors(const FrameUniformBuffer& uniforms);
+  // Bakes the atlases of these impostor sources.
+  void bakeAtlases(const std::vector<int>& sources);
   // The baking pass's state: one upright instance at the origin, the bake program.
   void beginBaking();
   // Draws frames of a type's impostor, each into its tile of the bound target (frames ×
   // frames tiles), which is cleared first.
-  void drawImpostorFrames(int type, std::span<const glm::ivec2> frames, const RenderTarget& target,
-                          const FrameUniformBuffer& uniforms);
+  void drawImpostorFrames(int type, std::span<const glm::ivec2> frames, const RenderTarget& target);
   void bindMaterial(const Program& program, int species, MaterialKind kind) const;
 
   const TreeLibrary& library_;
+  const FrameUniformBuffer& uniforms_;
   ImpostorSettings impostorSettings_;
   Program meshProgram_, meshShadowProgram_, bakeProgram_, impostorProgram_, impostorShadowProgram_;
   GlName vertices_, indices_, meshArray_, impostorArray_, instances_;

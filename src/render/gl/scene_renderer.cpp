@@ -33,7 +33,7 @@ SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
 }
 
 void SceneRenderer::reloadTrees(bool bakeImpostors) {
-  if (forest_) forest_->reloadMeshes(uniforms_, bakeImpostors);
+  if (forest_) forest_->reloadMeshes(bakeImpostors);
 }
 
 void SceneRenderer::renderShadowMaps(const RenderOptions& options, FrameUniforms u,
@@ -106,7 +106,7 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
     stats.forest = forest_->prepare(
         *forest, camera, target.width, target.height, options.lod,
         shadows ? std::span<const ShadowBox>(cascades) : std::span<const ShadowBox>());
-  stats.prepareMs = millisecondsSince(start);
+  stats.prepareMs = millisecondsSince(start) - stats.forest.impostorBakeMs;
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -134,7 +134,7 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   if (forest_ && forest) forest_->draw();
   glFinish();
   checkGl("SceneRenderer::render");
-  stats.frameMs = millisecondsSince(start);
+  stats.frameMs = millisecondsSince(start) - stats.forest.impostorBakeMs;
   return stats;
 }
 

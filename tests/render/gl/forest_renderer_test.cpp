@@ -185,7 +185,9 @@ TEST(ForestRenderer, VariantsShareTheImpostorOfTheirSpeciesAndAgeClass) {
       EXPECT_EQ(renderer.impostorSource(library.typeIndex(0, v, a)), library.typeIndex(0, 0, a));
 }
 
-TEST(ForestRenderer, CountsItsMeshesAndOneAtlasPerImpostorSourceOnTheGpu) {
+// An atlas is baked when a frame first draws its type's impostor source as a sprite (the
+// variants share their first one's), once; a tree drawn as a mesh needs none.
+TEST(ForestRenderer, BakesOneAtlasPerImpostorSourceWhenAFrameFirstDrawsIt) {
   test::useHeadlessGl();
   const TreeLibrary library({test::namedLibrarySpecies("shrub")},
                             LibrarySettings{.variants = 3, .ageClasses = {0.3, 1.0}});
@@ -198,9 +200,42 @@ TEST(ForestRenderer, CountsItsMeshesAndOneAtlasPerImpostorSourceOnTheGpu) {
       for (const WindPart& part : mesh.parts)
         meshBytes += part.vertices.size() * sizeof(PackedTreeVertex) + part.indices.size() * 4;
   EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes);
-  // Two age classes bake two atlases of albedo, normal and depth (RGBA8, mips add a third).
+  EXPECT_EQ(renderer.gpuMemory().impostorBytes, 0u) << "nothing baked before a frame";
+  // One atlas of albedo, normal and depth (RGBA8, mips add a third) per age class drawn.
   const std::size_t side = static_cast<std::size_t>(impostors.frames * impostors.tilePixels);
-  EXPECT_EQ(renderer.gpuMemory().impostorBytes, 2 * 3 * 4 * side * side * 4 / 3);
+  const std::size_t atlas = 3 * 4 * side * side * 4 / 3;
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);  // looking north at the trees
+  auto forestOf = [&](std::initializer_list<int> types) {
+    Forest forest;
+    for (const int type : types)
+      forest.add(library, type, worldFromMap(160, 60, 100), library.types()[type].height_m, 0.0f,
+                 1.0f, 1);
+    return forest;
+  };
+  auto frameAt = [&](const Forest& forest, int level) {
+    LodSettings lod;
+    lod.forcedLevel = level;
+    return renderer.prepare(forest, camera, 640, 360, lod, {});
+  };
+  const Forest young = forestOf({library.typeIndex(0, 1, 0), library.typeIndex(0, 2, 0)});
+  EXPECT_EQ(frameAt(young, 1).impostorBakeMs, 0.0) << "meshes need no atlas";
+  EXPECT_EQ(renderer.gpuMemory().impostorBytes, 0u);
+  // Two variants of the young class as sprites: one atlas, their source's, baked once.
+  EXPECT_GT(frameAt(young, kLevelImpostor).impostorBakeMs, 0.0);
+  EXPECT_EQ(renderer.gpuMemory().impostorBytes, atlas);
+  EXPECT_EQ(frameAt(young, kLevelImpostor).impostorBakeMs, 0.0);
+  // A young tree blending into the old class draws both: the old one's atlas too.
+  Forest blending = forestOf({library.typeIndex(0, 0, 0)});
+  blending.blendType[0] = library.typeIndex(0, 0, 1);
+  blending.blendWeight[0] = 0.5f;
+  EXPECT_GT(frameAt(blending, kLevelImpostor).impostorBakeMs, 0.0);
+  EXPECT_EQ(renderer.gpuMemory().impostorBytes, 2 * atlas);
+  // The meshes changed: the atlases are dropped and baked again when drawn.
+  renderer.reloadMeshes(true);
+  EXPECT_EQ(renderer.gpuMemory().impostorBytes, 0u);
+  EXPECT_GT(frameAt(blending, kLevelImpostor).impostorBakeMs, 0.0);
+  EXPECT_EQ(renderer.gpuMemory().impostorBytes, 2 * atlas);
 }
 
 TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {

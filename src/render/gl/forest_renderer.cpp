@@ -213,9 +213,8 @@ Image frameImageOf(const GlName& texture, glm::ivec2 frame, int tile) {
 }  // namespace
 
 std::vector<Image> ForestRenderer::bakeFrameImages(int type, std::span<const glm::ivec2> frames) {
-  const int tile = impostorSettings_.tilePixels, size = impostorSettings_.frames * tile;
-  const RenderTarget target = RenderTarget::create(size, size, 2);
-  beginBaking();
+  const int tile = impostorSettings_.tilePixels;
+  const RenderTarget target = beginBaking();
   drawImpostorFrames(impostorSource(type), frames, target);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   std::vector<Image> images;
@@ -223,7 +222,9 @@ std::vector<Image> ForestRenderer::bakeFrameImages(int type, std::span<const glm
   return images;
 }
 
-void ForestRenderer::beginBaking() {
+RenderTarget ForestRenderer::beginBaking() {
+  const int size = impostorSettings_.frames * impostorSettings_.tilePixels;
+  RenderTarget target = RenderTarget::create(size, size, 2);
   const Instance identity{glm::vec4(0.0f), glm::vec4(1.0f, 1.0f, 0.0f, 0.0f), glm::vec4(1.0f),
                           glm::vec2(0.0f)};
   glNamedBufferData(instances_.id(), sizeof(Instance), &identity, GL_DYNAMIC_DRAW);
@@ -233,6 +234,7 @@ void ForestRenderer::beginBaking() {
   glEnable(GL_FRAMEBUFFER_SRGB);
   glBindVertexArray(meshArray_.id());
   bakeProgram_.use();
+  return target;
 }
 
 void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> frames,
@@ -269,11 +271,10 @@ void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> fr
 void ForestRenderer::bakeAtlases(const std::vector<int>& sources) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;
-  const RenderTarget target = RenderTarget::create(size, size, 2);
   std::vector<glm::ivec2> all;
   for (int row = 0; row < frames; ++row)
     for (int column = 0; column < frames; ++column) all.push_back({column, row});
-  beginBaking();
+  const RenderTarget target = beginBaking();
   for (const int t : sources) {
     drawImpostorFrames(t, all, target);
     Atlas& atlas = atlases_[t];

@@ -132,8 +132,9 @@ class ForestRenderer {
   void uploadMeshes();
   // Bakes the atlases of these impostor sources.
   void bakeAtlases(const std::vector<int>& sources);
-  // The baking pass's state: one upright instance at the origin, the bake program.
-  void beginBaking();
+  // A target of frames × frames tiles (albedo, normal, depth) and the baking pass's state:
+  // one upright instance at the origin, the bake program.
+  RenderTarget beginBaking();
   // Draws frames of a type's impostor, each into its tile of the bound target (frames ×
   // frames tiles), which is cleared first.
   void drawImpostorFrames(int type, std::span<const glm::ivec2> frames, const RenderTarget& target);

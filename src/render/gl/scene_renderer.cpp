@@ -32,8 +32,8 @@ SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
   if (library) forest_ = std::make_unique<ForestRenderer>(*library, impostors, uniforms_);
 }
 
-void SceneRenderer::reloadTrees(bool bakeImpostors) {
-  if (forest_) forest_->reloadMeshes(bakeImpostors);
+void SceneRenderer::reloadTrees(bool rebakeImpostors) {
+  if (forest_) forest_->reloadMeshes(rebakeImpostors);
 }
 
 void SceneRenderer::renderShadowMaps(const RenderOptions& options, FrameUniforms u,

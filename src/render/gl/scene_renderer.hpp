@@ -40,7 +40,7 @@ class SceneRenderer {
   // and the ground cover follow; without it the ground is fresh everywhere.
   void setGroundMoisture(Field moisture);
   // The library's meshes changed (ForestRenderer::reloadMeshes).
-  void reloadTrees(bool bakeImpostors);
+  void reloadTrees(bool rebakeImpostors);
 
   TerrainRenderer& terrain() { return terrain_; }
   GroundCover& groundCover() { return groundCover_.cover(); }

@@ -198,16 +198,17 @@ double LightGrid::heightWithSideLight(double east_m, double north_m, double reac
   };
   if (sideLightAt(from_m) >= light) return from_m;
   // The side light rises with height only at the crown tops of the four columns: the first
-  // of those above `from_m` where it suffices is the answer.
+  // of those above `from_m` where it suffices is the answer. It never falls with height, so
+  // a binary search over the sorted tops finds that first one.
   static thread_local std::vector<float> tops;
   tops.clear();
   for (const long column : columns)
     for (const Layer* layer = layersBegin(column); layer != layersEnd(column); ++layer)
       if (layer->top_m > from_m && layer->top_m < top_m) tops.push_back(layer->top_m);
   std::sort(tops.begin(), tops.end());
-  for (const float top : tops)
-    if (sideLightAt(top) >= light) return top;
-  return top_m;
+  const auto first = std::partition_point(tops.begin(), tops.end(),
+                                          [&](float top) { return sideLightAt(top) < light; });
+  return first == tops.end() ? top_m : *first;
 }
 
 }  // namespace eco

@@ -315,8 +315,9 @@ void Ecosystem::applyMortality() {
     if (p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::PlantedRuledOut) ||
         p.age_years[i] >= life.maxAge_years)
       chance = 1.0;
-    else if (p.dbh_m[i] > 0.0f)
-      chance = treeMortality(life, p.age_years[i], carbonDeficit_[i]);
+    else if (p.dbh_m[i] > 0.0f)  // treeMortality, with the intrinsic part computed once
+      chance =
+          std::min(1.0, intrinsic[p.species[i]] + starvationMortality(life, carbonDeficit_[i]));
     else
       chance = p.stressYears[i] >= life.saplingStressYears ? 1.0 : intrinsic[p.species[i]];
     if (rng.uniform() < chance) p.alive[i] = 0;

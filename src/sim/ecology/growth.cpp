@@ -48,9 +48,10 @@ CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m
            (r * lai + (1.0 - r) * top * -std::expm1(-kLeafExtinction * lai) / kLeafExtinction);
   };
   const double maxLai = maxCrownLeafAreaIndex(life);
+  const double maxMass = massTo(maxLai);
   const double allometric_kg = life.foliage.at(100.0 * dbh_m);
   const double mass = allometric_kg / area;
-  if (mass >= massTo(maxLai)) return {maxLai * area, massTo(maxLai) * area};
+  if (mass >= maxMass) return {maxLai * area, maxMass * area};
   double lai = mass / sunMass;
   for (int i = 0; i < 50; ++i) {
     // The layer at the current depth: its mass per m2 of leaf.
@@ -211,8 +212,13 @@ double intrinsicMortality(const LifeHistory& life) {
 
 double treeMortality(const LifeHistory& life, int age_years, double carbonDeficit) {
   if (age_years >= life.maxAge_years) return 1.0;
-  const double stress = 1.0 - std::exp(-life.stressMortality * std::clamp(carbonDeficit, 0.0, 1.0));
-  return std::min(1.0, intrinsicMortality(life) + stress);
+  return std::min(1.0, intrinsicMortality(life) + starvationMortality(life, carbonDeficit));
+}
+
+double starvationMortality(const LifeHistory& life, double carbonDeficit) {
+  // Without a deficit the hazard is 1 - exp(0) = 0: most trees skip the exponential.
+  if (carbonDeficit <= 0.0) return 0.0;
+  return 1.0 - std::exp(-life.stressMortality * std::min(carbonDeficit, 1.0));
 }
 
 double seedsPerCrownArea(const LifeHistory& life, bool mastYear) {

@@ -107,6 +107,8 @@ double saplingDiameter(const LifeHistory& life, double height_m);
 double treeMortality(const LifeHistory& life, int age_years, double carbonDeficit);
 // The intrinsic part alone, a year.
 double intrinsicMortality(const LifeHistory& life);
+// The carbon-starvation part alone.
+double starvationMortality(const LifeHistory& life, double carbonDeficit);
 
 // Seeds a mature tree sends out this year: fecundity per m2 of crown projection, in full in
 // a mast year and the non-mast share otherwise, scaled by how much of its crown's potential

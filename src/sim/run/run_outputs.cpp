@@ -40,28 +40,38 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem, const PlanYear& pl
   const double area_ha = g.area_m2() / 1e4;
   std::vector<StatsRow> rows(static_cast<std::size_t>(speciesCount) + 1);
   std::vector<double> heightSum(rows.size(), 0.0);
-  std::vector<std::size_t> coveredCells(rows.size(), 0);
+  std::vector<std::vector<std::uint8_t>> covered(static_cast<std::size_t>(speciesCount));
   std::vector<StandMeasures> measures;
   double densest_m2PerHa = 0.0;
   // Each species' row, the stand's (the last row), the forester's measures and the densest
   // hectare are independent: they run side by side, each summing in plant order, so the
-  // figures do not depend on the thread count.
+  // figures do not depend on the thread count. Only the species' rows stamp crowns: the
+  // stand covers the cells some species covers.
   tbb::parallel_invoke(
       [&] {
         tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t r) {
           const bool stand = r + 1 == rows.size();
-          std::vector<std::uint8_t> covered(g.cellCount(), 0);
+          if (!stand) covered[r].assign(g.cellCount(), 0);
           for (std::size_t i = 0; i < p.size(); ++i) {
             if (!stand && p.species[i] != r) continue;
             ++rows[r].alive;
             heightSum[r] += p.height_m[i];
-            forCellsUnderCrown(g, p, i, [&](std::size_t cell) { covered[cell] = 1; });
+            if (!stand)
+              forCellsUnderCrown(g, p, i, [&](std::size_t cell) { covered[r][cell] = 1; });
           }
-          coveredCells[r] = static_cast<std::size_t>(std::count(covered.begin(), covered.end(), 1));
         });
       },
       [&] { measures = measureStands(p, ecosystem.species(), area_ha); },
       [&] { densest_m2PerHa = densestBlockBasalArea(p, g); });
+  std::vector<std::size_t> coveredCells(rows.size(), 0);
+  for (std::size_t cell = 0; cell < g.cellCount(); ++cell) {
+    bool any = false;
+    for (std::size_t r = 0; r < covered.size(); ++r) {
+      coveredCells[r] += covered[r][cell];
+      any = any || covered[r][cell];
+    }
+    coveredCells.back() += any ? 1 : 0;
+  }
   for (std::size_t r = 0; r < rows.size(); ++r) {
     StatsRow& row = rows[r];
     const bool stand = r + 1 == rows.size();

@@ -228,6 +228,12 @@ TEST(Growth, MortalityIsIntrinsicPlusCarbonStarvation) {
   // iLand's stress hazard 1 - exp(-probStress x deficit).
   EXPECT_NEAR(treeMortality(h, 50, 1.0), intrinsicMortality(h) + 1.0 - std::exp(-1.39), 1e-12);
   EXPECT_NEAR(treeMortality(h, 50, 0.5), intrinsicMortality(h) + 1.0 - std::exp(-0.695), 1e-12);
+  // The starvation part alone: none without a deficit, and a deficit counts up to all.
+  EXPECT_EQ(starvationMortality(h, 0.0), 0.0);
+  EXPECT_EQ(starvationMortality(h, -0.3), 0.0);
+  EXPECT_NEAR(starvationMortality(h, 0.5), 1.0 - std::exp(-0.695), 1e-15);
+  EXPECT_EQ(starvationMortality(h, 3.0), starvationMortality(h, 1.0));
+  EXPECT_EQ(treeMortality(h, 50, 0.5), intrinsicMortality(h) + starvationMortality(h, 0.5));
 }
 
 TEST(Growth, SeedsScaleWithCrownAreaMastYearsAndLight) {

@@ -50,5 +50,37 @@ TEST_F(OneHectare, BasalAreaCoverAndCanopyFromThePlants) {
   EXPECT_EQ(covered, inside);
 }
 
+TEST_F(OneHectare, TheStandCoversEveryCellSomeSpeciesCovers) {
+  // Two species whose trees' crowns overlap, and a third tree apart: each species' cover
+  // counts its own crowns, the stand's counts the shared cells once.
+  Ecosystem mixed(terrain, fields,
+                  {test::inEcosystem(test::testSpecies("a", {}), fields),
+                   test::inEcosystem(test::testSpecies("b", {}), fields)},
+                  EcosystemSettings{});
+  mixed.plant(0, 30.0, 50.0, 100);
+  mixed.plant(1, 33.0, 50.0, 100);
+  mixed.plant(1, 80.0, 20.0, 100);
+  const Plants& p = mixed.plants();
+  const Grid& g = terrain.grid;
+  std::vector<int> cells(3, 0);  // species a, species b, the stand
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      bool under[2] = {false, false};
+      for (std::size_t i = 0; i < p.size(); ++i)
+        under[p.species[i]] = under[p.species[i]] ||
+                              std::hypot(g.eastOf(x) - p.east_m[i], g.northOf(y) - p.north_m[i]) <=
+                                  p.crownRadius_m[i];
+      cells[0] += under[0];
+      cells[1] += under[1];
+      cells[2] += under[0] || under[1];
+    }
+  ASSERT_LT(cells[2], cells[0] + cells[1]);  // the crowns do overlap
+  const std::vector<StatsRow> rows = statsOfYear(mixed, PlanYear(mixed.species().size()));
+  ASSERT_EQ(rows.size(), 3u);
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    EXPECT_NEAR(rows[r].coverFraction, cells[r] / 100.0, 1e-12) << "row " << r;
+  EXPECT_EQ(rows[2].alive, 3);
+}
+
 }  // namespace
 }  // namespace eco

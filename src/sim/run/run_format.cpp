@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <exception>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -32,9 +33,21 @@ constexpr std::size_t kTreesColumns = 16, kTreesColumnsWithoutSite = 12;
 std::string fileText(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError({file.string(), 0, ""}, "cannot read the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  // Read at once into a string of the file's size (a landscape's snapshot is gigabytes);
+  // a stream with no size is read as it comes.
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if (size < 0 || !in) {
+    in.clear();
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), size);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
 }
 
 nlohmann::ordered_json siteJson(const std::vector<double>& means) {
@@ -46,10 +59,8 @@ nlohmann::ordered_json siteJson(const std::vector<double>& means) {
 // What makes a parsed row of a trees file unusable (the numbers are finite already), or "".
 // No tree is taller than about 120 m or has a crown wider than about 50 m; the limits leave
 // room and keep an edited file from making meshes of astronomical size.
-std::string treeRowFault(const TreeRow& tree, std::string_view species) {
+std::string treeRowFault(const TreeRow& tree) {
   constexpr float kTallest_m = 200.0f, kWidestCrown_m = 100.0f;
-  if (const std::string why = whyNotAPlainName(species); !why.empty())
-    return fmt::format("species '{}' is not a species name: {}", species, why);
   if (tree.id == 0) return "id 0: ids start at 1";
   if (tree.age_years < 0) return fmt::format("age {} is negative", tree.age_years);
   if (!(tree.height_m >= 0.0f && tree.height_m <= kTallest_m))
@@ -275,56 +286,138 @@ void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
   out.commit();
 }
 
+namespace {
+
+// A row of a trees file with `columns` fields (with or without the site's), its species
+// field aside; an InputError names the line of a row that is not one.
+std::string_view parseTreeRow(std::string_view row, std::size_t columns,
+                              const std::filesystem::path& file, int line, TreeRow& tree) {
+  std::string_view fields[kTreesColumns];
+  const std::size_t count = splitFields(row, std::span(fields, columns));
+  bool ok = count == columns && parseField(fields[0], tree.id) &&
+            parseField(fields[2], tree.east_m) && parseField(fields[3], tree.north_m) &&
+            parseField(fields[4], tree.ground_m) && parseField(fields[5], tree.age_years) &&
+            parseField(fields[6], tree.height_m) && parseField(fields[7], tree.crownRadius_m) &&
+            parseField(fields[8], tree.crownBase_m) && parseField(fields[9], tree.dbh_m) &&
+            parseField(fields[10], tree.vigor) && parseField(fields[11], tree.variantSeed) &&
+            !fields[1].empty();
+  if (ok && columns == kTreesColumns)
+    ok = parseField(fields[12], tree.site.light.x) && parseField(fields[13], tree.site.light.y) &&
+         parseField(fields[14], tree.site.wind.x) && parseField(fields[15], tree.site.wind.y);
+  std::uint64_t wideSeed = 0;
+  if (!ok && count == columns && !parseField(fields[11], tree.variantSeed) &&
+      parseField(fields[11], wideSeed))
+    throw InputError({file.string(), line, "variant_seed"},
+                     "a seed beyond 32 bits, as earlier builds of ecoforest wrote them: run "
+                     "the scenario again");
+  if (!ok)
+    throw InputError(
+        {file.string(), line, ""},
+        fmt::format("expected {} comma-separated numbers: {}", columns,
+                    columns == kTreesColumns ? kTreesCsvHeader : kTreesCsvHeaderWithoutSite));
+  return fields[1];
+}
+
+// A stretch of a trees file's rows, whole lines, read on its own: its trees go to their
+// lines' places, their species numbered in the stretch's order of first appearance.
+struct TreeChunk {
+  std::string_view text;
+  int firstLine = 0;
+  std::size_t firstSlot = 0;  // the place of its first line among the file's rows
+  std::vector<std::string> speciesNames;
+  std::exception_ptr fault;  // its first bad row: the file's first in the earliest chunk
+};
+
+void readTreeChunk(TreeChunk& chunk, std::size_t columns, const std::filesystem::path& file,
+                   std::vector<TreeRow>& trees, std::vector<char>& filled) {
+  try {
+    forEachLine(chunk.text, [&](int number, std::string_view row) {
+      if (row.empty()) return;
+      const int line = chunk.firstLine + number - 1;
+      const std::size_t slot = chunk.firstSlot + static_cast<std::size_t>(number - 1);
+      TreeRow& tree = trees[slot];
+      const std::string_view species = parseTreeRow(row, columns, file, line, tree);
+      auto known = std::find(chunk.speciesNames.begin(), chunk.speciesNames.end(), species);
+      if (known == chunk.speciesNames.end()) {
+        if (const std::string why = whyNotAPlainName(species); !why.empty())
+          throw InputError({file.string(), line, ""},
+                           fmt::format("species '{}' is not a species name: {}", species, why));
+        known = chunk.speciesNames.emplace(known, species);
+      }
+      if (const std::string fault = treeRowFault(tree); !fault.empty())
+        throw InputError({file.string(), line, ""}, fault);
+      tree.species = static_cast<int>(known - chunk.speciesNames.begin());
+      filled[slot] = 1;
+    });
+  } catch (...) {
+    chunk.fault = std::current_exception();
+  }
+}
+
+}  // namespace
+
 TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
   const std::string text = fileText(file);
-  TreeSnapshot snapshot;
-  std::unordered_map<std::string, int> speciesIndex;
-  int lines = 0;
+  if (text.empty()) throw InputError({file.string(), 0, ""}, "the file is empty");
+  const std::size_t headerEnd = std::min(text.find('\n'), text.size());
+  const std::string_view header(text.data(), headerEnd);
   std::size_t columns = kTreesColumns;
-  forEachLine(text, [&](int line, std::string_view row) {
-    lines = line;
-    if (line == 1) {
-      if (row == kTreesCsvHeaderWithoutSite)
-        columns = kTreesColumnsWithoutSite;
-      else if (row != kTreesCsvHeader)
-        throw InputError({file.string(), 1, ""},
-                         fmt::format("not a trees file: the header must be '{}'", kTreesCsvHeader));
-      return;
-    }
-    if (row.empty()) return;
-    std::string_view fields[kTreesColumns];
-    const std::size_t count = splitFields(row, std::span(fields, columns));
-    TreeRow tree;
-    bool ok = count == columns && parseField(fields[0], tree.id) &&
-              parseField(fields[2], tree.east_m) && parseField(fields[3], tree.north_m) &&
-              parseField(fields[4], tree.ground_m) && parseField(fields[5], tree.age_years) &&
-              parseField(fields[6], tree.height_m) && parseField(fields[7], tree.crownRadius_m) &&
-              parseField(fields[8], tree.crownBase_m) && parseField(fields[9], tree.dbh_m) &&
-              parseField(fields[10], tree.vigor) && parseField(fields[11], tree.variantSeed) &&
-              !fields[1].empty();
-    if (ok && columns == kTreesColumns)
-      ok = parseField(fields[12], tree.site.light.x) && parseField(fields[13], tree.site.light.y) &&
-           parseField(fields[14], tree.site.wind.x) && parseField(fields[15], tree.site.wind.y);
-    std::uint64_t wideSeed = 0;
-    if (!ok && count == columns && !parseField(fields[11], tree.variantSeed) &&
-        parseField(fields[11], wideSeed))
-      throw InputError({file.string(), line, "variant_seed"},
-                       "a seed beyond 32 bits, as earlier builds of ecoforest wrote them: run "
-                       "the scenario again");
-    if (!ok)
-      throw InputError(
-          {file.string(), line, ""},
-          fmt::format("expected {} comma-separated numbers: {}", columns,
-                      columns == kTreesColumns ? kTreesCsvHeader : kTreesCsvHeaderWithoutSite));
-    if (const std::string fault = treeRowFault(tree, fields[1]); !fault.empty())
-      throw InputError({file.string(), line, ""}, fault);
-    auto [it, added] = speciesIndex.try_emplace(std::string(fields[1]),
-                                                static_cast<int>(snapshot.speciesNames.size()));
-    if (added) snapshot.speciesNames.emplace_back(fields[1]);
-    tree.species = it->second;
-    snapshot.trees.push_back(tree);
+  if (header == kTreesCsvHeaderWithoutSite)
+    columns = kTreesColumnsWithoutSite;
+  else if (header != kTreesCsvHeader)
+    throw InputError({file.string(), 1, ""},
+                     fmt::format("not a trees file: the header must be '{}'", kTreesCsvHeader));
+
+  // The rows, read in stretches of whole lines side by side (a landscape's snapshot holds
+  // tens of millions), each tree put at its line's place: the trees, their species' order
+  // and the first fault reported are those of reading the lines in order.
+  const std::string_view body = std::string_view(text).substr(std::min(text.size(), headerEnd + 1));
+  constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
+  std::vector<TreeChunk> chunks;
+  for (std::size_t start = 0; start < body.size();) {
+    std::size_t end = std::min(body.size(), start + kChunkBytes);
+    end = std::min(body.size(), body.find('\n', end - 1) + 1);  // npos + 1 is 0
+    if (end <= start) end = body.size();
+    chunks.emplace_back().text = body.substr(start, end - start);
+    start = end;
+  }
+  std::vector<std::size_t> lines(chunks.size());
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    const std::string_view t = chunks[c].text;
+    lines[c] = static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n')) +
+               (t.empty() || t.back() == '\n' ? 0 : 1);
   });
-  if (lines == 0) throw InputError({file.string(), 0, ""}, "the file is empty");
+  std::size_t slots = 0;
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    chunks[c].firstSlot = slots;
+    chunks[c].firstLine = static_cast<int>(2 + slots);
+    slots += lines[c];
+  }
+  std::vector<TreeRow> trees(slots);
+  std::vector<char> filled(slots, 0);  // false for the empty lines between rows
+  tbb::parallel_for(std::size_t{0}, chunks.size(),
+                    [&](std::size_t c) { readTreeChunk(chunks[c], columns, file, trees, filled); });
+  for (const TreeChunk& chunk : chunks)
+    if (chunk.fault) std::rethrow_exception(chunk.fault);
+
+  // The species in the file's order of first appearance, and the rows without the gaps.
+  TreeSnapshot snapshot;
+  std::vector<std::vector<int>> speciesOf(chunks.size());
+  for (std::size_t c = 0; c < chunks.size(); ++c)
+    for (const std::string& name : chunks[c].speciesNames) {
+      auto found = std::find(snapshot.speciesNames.begin(), snapshot.speciesNames.end(), name);
+      if (found == snapshot.speciesNames.end()) found = snapshot.speciesNames.insert(found, name);
+      speciesOf[c].push_back(static_cast<int>(found - snapshot.speciesNames.begin()));
+    }
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    for (std::size_t slot = chunks[c].firstSlot; slot < chunks[c].firstSlot + lines[c]; ++slot)
+      if (filled[slot]) trees[slot].species = speciesOf[c][trees[slot].species];
+  });
+  std::size_t kept = 0;
+  for (std::size_t slot = 0; slot < slots; ++slot)
+    if (filled[slot]) trees[kept++] = trees[slot];
+  trees.resize(kept);
+  snapshot.trees = std::move(trees);
   return snapshot;
 }
 

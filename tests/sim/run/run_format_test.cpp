@@ -89,6 +89,56 @@ TEST(RunFormat, TreesValuesOutOfRangeAreRefusedAtTheirLine) {
   EXPECT_EQ(faultOf(good), "no error");
 }
 
+// A file of several megabytes is read in stretches side by side: the trees come back in
+// the file's order, species numbered by first appearance across the stretches, empty lines
+// skipped, and of two bad rows far apart the first is reported at its line.
+TEST(RunFormat, ALongTreesFileReadsAsItsLinesInOrder) {
+  const auto file = test::freshDirectory("run_format_long") / "trees.csv";
+  constexpr int kRows = 60000;  // about 3 MB: a few stretches of a megabyte
+  auto rowOf = [](int id, const char* species) {
+    return std::to_string(id) + "," + species + ",1.5,2.5,400,7,6.5,1.2,2.5,0.08,0.9," +
+           std::to_string(id % 1000) + "\n";
+  };
+  auto speciesOf = [](int id) { return id < 20000 ? "beech" : id < 45000 ? "pine" : "maple"; };
+  std::string text = kHeader;
+  std::vector<int> lineOf(kRows + 1);
+  int line = 1;
+  for (int id = 1; id <= kRows; ++id) {
+    if (id % 7001 == 0) {
+      text += "\n";  // an empty line between rows
+      ++line;
+    }
+    text += rowOf(id, speciesOf(id));
+    lineOf[id] = ++line;
+  }
+  ASSERT_GT(text.size(), std::size_t{2} << 20);
+  test::writeFile(file, text);
+  const TreeSnapshot s = readTreesCsv(file);
+  ASSERT_EQ(s.trees.size(), static_cast<std::size_t>(kRows));
+  EXPECT_EQ(s.speciesNames, (std::vector<std::string>{"beech", "pine", "maple"}));
+  for (int id = 1; id <= kRows; ++id) {
+    const TreeRow& tree = s.trees[static_cast<std::size_t>(id - 1)];
+    ASSERT_EQ(tree.id, static_cast<std::uint64_t>(id));
+    ASSERT_EQ(s.speciesNames[static_cast<std::size_t>(tree.species)], speciesOf(id));
+    ASSERT_EQ(tree.variantSeed, static_cast<std::uint32_t>(id % 1000));
+  }
+  // Two bad rows, one near the end and one in the middle: the middle one is reported.
+  auto bad = [&](int id) {
+    const std::string good = rowOf(id, speciesOf(id));
+    const std::size_t at = text.find("\n" + good) + 1;
+    text.replace(at, good.size(), std::to_string(id) + ",pine,x\n");
+  };
+  bad(55000);
+  bad(30000);
+  test::writeFile(file, text);
+  try {
+    readTreesCsv(file);
+    FAIL() << "a bad row was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, lineOf[30000]);
+  }
+}
+
 TEST(RunFormat, RunJsonIsCheckedAsUntrustedInput) {
   const RunPaths run{test::freshDirectory("run_format_json_bad")};
   auto faultOf = [&](const std::string& json) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include <tbb/parallel_for.h>
 #include <glm/common.hpp>
 
 #include "core/error.hpp"
@@ -54,8 +55,28 @@ void Forest::addAsBuilt(int typeIndex, glm::vec3 base) {
   blendWeight.push_back(0.0f);
 }
 
+void Forest::resize(std::size_t n) {
+  type.resize(n, 0);
+  position.resize(n, glm::vec3(0.0f));
+  yaw.resize(n, 0.0f);
+  scaleXZ.resize(n, 1.0f);
+  scaleY.resize(n, 1.0f);
+  tint.resize(n, glm::vec3(1.0f));
+  phase.resize(n, 0.0f);
+  lean.resize(n, glm::vec2(0.0f));
+  presence.resize(n, 1.0f);
+  blendType.resize(n, -1);
+  blendWeight.resize(n, 0.0f);
+}
+
 void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
                  float crownRadius_m, float vigor, std::uint64_t individual) {
+  resize(size() + 1);
+  place(size() - 1, library, typeIndex, base, height_m, crownRadius_m, vigor, individual);
+}
+
+void Forest::place(std::size_t i, const TreeLibrary& library, int typeIndex, glm::vec3 base,
+                   float height_m, float crownRadius_m, float vigor, std::uint64_t individual) {
   const TreeType& t = library.types()[typeIndex];
   Rng rng(streamKey(individual, purpose("render.instance")));
   const float vertical = std::max(height_m, 0.01f) / t.height_m;
@@ -64,20 +85,20 @@ void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, floa
   const float widthRatio =
       crownRadius_m > 0.0f ? std::clamp(crownRadius_m / (t.crownRadius_m * vertical), 0.7f, 1.4f)
                            : 1.0f;
-  type.push_back(typeIndex);
-  position.push_back(base);
-  yaw.push_back(static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)));
-  scaleY.push_back(vertical);
-  scaleXZ.push_back(vertical * widthRatio);
+  type[i] = typeIndex;
+  position[i] = base;
+  yaw[i] = static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi));
+  scaleY[i] = vertical;
+  scaleXZ[i] = vertical * widthRatio;
   // Weak trees pale toward yellow; each tree varies a little in brightness.
   const float brightness = static_cast<float>(rng.uniform(0.9, 1.1));
   const glm::vec3 stressed(1.15f, 1.05f, 0.6f);
-  tint.push_back(brightness * glm::mix(stressed, glm::vec3(1.0f), std::clamp(vigor, 0.0f, 1.0f)));
-  phase.push_back(static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi)));
-  lean.push_back(glm::vec2(0.0f));
-  presence.push_back(1.0f);
-  blendType.push_back(-1);
-  blendWeight.push_back(0.0f);
+  tint[i] = brightness * glm::mix(stressed, glm::vec3(1.0f), std::clamp(vigor, 0.0f, 1.0f));
+  phase[i] = static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi));
+  lean[i] = glm::vec2(0.0f);
+  presence[i] = 1.0f;
+  blendType[i] = -1;
+  blendWeight[i] = 0.0f;
 }
 
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
@@ -98,17 +119,19 @@ std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrar
 Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
                           const std::string& where) {
   const std::vector<int> librarySpecies = librarySpeciesOf(snapshot, library, where);
+  // Each tree on its own, side by side (a landscape's snapshot holds millions).
   Forest forest;
-  forest.reserve(snapshot.trees.size());
-  for (const TreeRow& tree : snapshot.trees) {
+  forest.resize(snapshot.trees.size());
+  tbb::parallel_for(std::size_t{0}, snapshot.trees.size(), [&](std::size_t i) {
+    const TreeRow& tree = snapshot.trees[i];
     const int species = librarySpecies[tree.species];
     const SiteShaping site = siteShapingOf(tree, library);
     const int type = library.typeFor(species, tree.variantSeed, tree.height_m,
                                      library.maxHeight_m(species), site.clearBole);
-    forest.add(library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), tree.height_m,
-               tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
-    forest.lean.back() = drawnLean(library, type, site);
-  }
+    forest.place(i, library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m),
+                 tree.height_m, tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
+    forest.lean[i] = drawnLean(library, type, site);
+  });
   return forest;
 }
 

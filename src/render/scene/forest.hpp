@@ -43,6 +43,10 @@ struct Forest {
   // One plant, drawn by `typeIndex` at its height and crown radius.
   void add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
            float crownRadius_m, float vigor, std::uint64_t individual);
+  // The same into place i of a forest resized to hold it (places filled side by side).
+  void resize(std::size_t n);
+  void place(std::size_t i, const TreeLibrary& library, int typeIndex, glm::vec3 base,
+             float height_m, float crownRadius_m, float vigor, std::uint64_t individual);
 };
 
 // The library's species index of each of the snapshot's species names; an InputError

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -53,14 +54,37 @@ bool parseField(std::string_view field, T& value) {
 }
 
 // Appends `value` with `decimals` digits after the point: the text of fmt's "{:.Nf}" and
-// printf's "%.Nf" (rounded half to even), from the standard library's to_chars, about twice
-// as fast as fmt's (a snapshot of a landscape's trees writes hundreds of millions of them).
-// 64 characters hold any float (39 digits before the point) with up to 20 decimals.
+// printf's "%.Nf" (rounded half to even; a snapshot of a landscape's trees writes hundreds
+// of millions of them). Up to 12 decimals, the float scaled by 10^decimals is an exact
+// double (its 24 significant bits and 5^12's 28), so rounding that to an integer, half to
+// even, is printf's rounding, and the integer is printed with a point: about three times as
+// fast as to_chars' fixed format, which takes the rest (64 characters hold any float, 39
+// digits before the point, with up to 20 decimals).
 inline void appendFixed(std::string& out, float value, int decimals) {
   ECO_ASSERT(decimals >= 0 && decimals <= 20, "decimals that fit the buffer");
+  constexpr int kExactDecimals = 12;
+  constexpr std::uint64_t kPowers[kExactDecimals + 1] = {
+      1,        10,        100,        1000,        10000,        100000,       1000000,
+      10000000, 100000000, 1000000000, 10000000000, 100000000000, 1000000000000};
   char text[64];
-  char* end =
-      std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, decimals).ptr;
+  char* end = text;
+  const double scaled = decimals <= kExactDecimals
+                            ? static_cast<double>(value) * static_cast<double>(kPowers[decimals])
+                            : HUGE_VAL;
+  if (std::abs(scaled) < 1e18) {  // finite, and its integer fits 64 bits
+    const auto whole = static_cast<std::uint64_t>(std::abs(std::nearbyint(scaled)));
+    if (std::signbit(value)) *end++ = '-';  // "-0.00" as printf writes it
+    end = std::to_chars(end, text + sizeof text, whole / kPowers[decimals]).ptr;
+    if (decimals > 0) {
+      *end++ = '.';
+      std::uint64_t fraction = whole % kPowers[decimals];
+      for (int d = decimals - 1; d >= 0; --d, fraction /= 10)
+        end[d] = static_cast<char>('0' + fraction % 10);
+      end += decimals;
+    }
+  } else {
+    end = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, decimals).ptr;
+  }
   out.append(text, end);
 }
 

@@ -1,5 +1,6 @@
 #include "core/csv_text.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <random>
@@ -83,6 +84,18 @@ TEST(CsvText, FixedDecimalsAreRoundedAsPrintfRoundsThem) {
     for (int decimals = 0; decimals <= 4; ++decimals)
       ASSERT_EQ(fixed(value, decimals), printed(value, decimals)) << value << " " << decimals;
   }
+  // Every magnitude a float has and every count of decimals, on both sides of where the
+  // scaled integer stops fitting 64 bits (1e18) and of the 12 decimals scaled exactly.
+  std::uniform_real_distribution<float> mantissa(-1.0f, 1.0f);
+  std::uniform_int_distribution<int> exponent(-40, 127);
+  for (int i = 0; i < 20000; ++i) {
+    const float value = std::ldexp(mantissa(random), exponent(random));
+    for (int decimals = 0; decimals <= 20; ++decimals)
+      ASSERT_EQ(fixed(value, decimals), printed(value, decimals)) << value << " " << decimals;
+  }
+  for (const float edge : {1e6f, 999999.94f, 1e5f, 123456.7f, 0.5f, 1.5f, 2.5f, -2.5f})
+    for (int decimals = 0; decimals <= 20; ++decimals)
+      EXPECT_EQ(fixed(edge, decimals), printed(edge, decimals)) << edge << " " << decimals;
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
-#include <unordered_map>
 #include <variant>
 
 #include <fmt/format.h>

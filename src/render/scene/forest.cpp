@@ -42,17 +42,9 @@ void Forest::append(const Forest& from, std::size_t i) {
 }
 
 void Forest::addAsBuilt(int typeIndex, glm::vec3 base) {
-  type.push_back(typeIndex);
-  position.push_back(base);
-  yaw.push_back(0.0f);
-  scaleY.push_back(1.0f);
-  scaleXZ.push_back(1.0f);
-  tint.push_back(glm::vec3(1.0f));
-  phase.push_back(0.0f);
-  lean.push_back(glm::vec2(0.0f));
-  presence.push_back(1.0f);
-  blendType.push_back(-1);
-  blendWeight.push_back(0.0f);
+  resize(size() + 1);  // not turned, scaled or tinted: resize's values
+  type.back() = typeIndex;
+  position.back() = base;
 }
 
 void Forest::resize(std::size_t n) {
@@ -95,10 +87,7 @@ void Forest::place(std::size_t i, const TreeLibrary& library, int typeIndex, glm
   const glm::vec3 stressed(1.15f, 1.05f, 0.6f);
   tint[i] = brightness * glm::mix(stressed, glm::vec3(1.0f), std::clamp(vigor, 0.0f, 1.0f));
   phase[i] = static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi));
-  lean[i] = glm::vec2(0.0f);
-  presence[i] = 1.0f;
-  blendType[i] = -1;
-  blendWeight[i] = 0.0f;
+  // lean, presence and the blend keep resize's values: upright, whole, one type.
 }
 
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,

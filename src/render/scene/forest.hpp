@@ -43,7 +43,8 @@ struct Forest {
   // One plant, drawn by `typeIndex` at its height and crown radius.
   void add(const TreeLibrary& library, int typeIndex, glm::vec3 base, float height_m,
            float crownRadius_m, float vigor, std::uint64_t individual);
-  // The same into place i of a forest resized to hold it (places filled side by side).
+  // The same into place i, fresh from resize, of a forest resized to hold it (places filled
+  // side by side). resize gives new places an upright, whole tree of type 0, unscaled.
   void resize(std::size_t n);
   void place(std::size_t i, const TreeLibrary& library, int typeIndex, glm::vec3 base,
              float height_m, float crownRadius_m, float vigor, std::uint64_t individual);

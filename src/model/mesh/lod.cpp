@@ -23,9 +23,9 @@ MeshOptions lod0Options(const Species& species, int maxSides) {
   return options;
 }
 
-// Leaves under the same branch of at least kLod1ClusterStrands strands become one cluster
-// of two crossed cards showing the same visible leaf area.
-void clusterLeaves(const TreeSkeleton& skeleton, const Species& species, MeshPart& clusters) {
+// Needles under the same branch of at least kLod1ClusterStrands strands become one cluster
+// of two crossed cards showing the same visible needle area.
+void clusterNeedles(const TreeSkeleton& skeleton, const Species& species, MeshPart& clusters) {
   struct Cluster {
     glm::vec3 centroid{0.0f};
     glm::vec3 normal{0.0f};
@@ -58,9 +58,8 @@ void clusterLeaves(const TreeSkeleton& skeleton, const Species& species, MeshPar
     if (glm::length(along) < 1e-4f) along = glm::vec3(0, 0, 1);
     along = glm::normalize(along);
     glm::vec3 across = glm::cross(along, normal);
-    // Two cards share the visible leaf area; each shows its texture's coverage of it.
-    float coverage = clustersOfNeedles(species) ? kNeedleClusterCoverage : kLeafClusterCoverage;
-    float side = std::sqrt(c.area_m2 / (2.0f * coverage));
+    // Two cards share the visible needle area; each shows its texture's coverage of it.
+    float side = std::sqrt(c.area_m2 / (2.0f * kNeedleClusterCoverage));
     addCard(clusters, center - along * (0.5f * side), along, across, side, side);
     addCard(clusters, center - along * (0.5f * side), along, normal, side, side);
   }
@@ -186,7 +185,7 @@ void stemProxy(const TreeSkeleton& skeleton, float top_m, MeshPart& bark) {
 
 }  // namespace
 
-bool clustersOfNeedles(const Species& species) {
+bool bearsNeedles(const Species& species) {
   return species.strand.leafDistribution == LeafDistribution::Coniferous ||
          species.appearance.leafShape == LeafShape::NeedleTuft;
 }
@@ -218,10 +217,13 @@ void buildLodInto(const TreeSkeleton& skeleton, const Species& species, int lod,
     // The strand model's thin twigs go; an L-system's segments are whole internodes that
     // carry its leaves, so dropping them would leave the leaves floating.
     options.minStrands = species.generator == TreeGenerator::Strand ? kLod1MinStrands : 1;
-    options.leaves = false;
+    // Broadleaves keep their own leaf cards: a few thousand, and the clustered cards that
+    // stood in for them measured far from LOD0 wherever LOD1 is drawn (docs/model.md).
+    options.leaves = !bearsNeedles(species);
     mesh = meshTree(skeleton, options);
+    if (options.leaves) return;
     MeshPart clusters{MaterialKind::LeafCluster, {}, {}, {}, {}};
-    clusterLeaves(skeleton, species, clusters);
+    clusterNeedles(skeleton, species, clusters);
     if (!clusters.indices.empty()) mesh.parts.push_back(std::move(clusters));
     return;
   }

@@ -135,9 +135,9 @@ Image makeNeedleTexture(const Appearance& look) {
   });
 }
 
-Image makeLeafClusterTexture(const Appearance& look, bool needles) {
-  // Small leaves stamped at fixed pseudo-random places; kLeafClusterCoverage and
-  // kNeedleClusterCoverage record how much of the card they cover.
+Image makeNeedleClusterTexture(const Appearance& look) {
+  // Needles stamped at fixed pseudo-random places; kNeedleClusterCoverage records how much
+  // of the card they cover.
   struct Stamp {
     float cx, cy, angle, size;
   };
@@ -145,9 +145,8 @@ Image makeLeafClusterTexture(const Appearance& look, bool needles) {
   Rng rng(streamKey(purpose("leaf-cluster-texture")));
   // Spread over the whole card (keeping the stamps inside it) so that clusters read as
   // foliage rather than as a blob in the middle of a square.
-  const int count = needles ? 70 : 24;
-  for (int i = 0; i < count; ++i) {
-    float size = static_cast<float>(needles ? rng.uniform(0.25, 0.4) : rng.uniform(0.2, 0.3));
+  for (int i = 0; i < 70; ++i) {
+    float size = static_cast<float>(rng.uniform(0.25, 0.4));
     float margin = 0.5f * size;
     stamps.push_back({static_cast<float>(rng.uniform(margin, 1.0 - margin)),
                       static_cast<float>(rng.uniform(margin, 1.0 - margin)),
@@ -160,8 +159,8 @@ Image makeLeafClusterTexture(const Appearance& look, bool needles) {
       float dx = px - s.cx, dy = py - s.cy;
       float v = (dx * std::cos(s.angle) + dy * std::sin(s.angle)) / s.size + 0.5f;
       float u = (-dx * std::sin(s.angle) + dy * std::cos(s.angle)) / s.size + 0.5f;
-      bool inside = needles ? insideNeedle(u, v, 0.03f) : insideBlade(u, v);
-      if (inside) c = leafColorAt(look, u, v) * glm::vec4(glm::vec3(0.75f + s.size), 1.0f);
+      if (insideNeedle(u, v, 0.03f))
+        c = leafColorAt(look, u, v) * glm::vec4(glm::vec3(0.75f + s.size), 1.0f);
     }
     return c;
   });
@@ -188,9 +187,7 @@ Material makeMaterial(MaterialKind kind, const Species& species) {
       m.roughness = 0.7f;
       break;
     case MaterialKind::LeafCluster:
-      m.texture = makeLeafClusterTexture(
-          look, species.strand.leafDistribution == LeafDistribution::Coniferous ||
-                    look.leafShape == LeafShape::NeedleTuft);  // as clustersOfNeedles()
+      m.texture = makeNeedleClusterTexture(look);  // only conifers' LOD1 has clusters
       m.alphaMask = m.doubleSided = true;
       m.roughness = 0.7f;
       break;

@@ -16,19 +16,18 @@ namespace eco {
 
 inline constexpr int kTextureSize = 256;
 
-// Fraction of each card texture that is opaque (alpha >= 0.5). LOD1 sizes its leaf
-// clusters with these so that the visible leaf area stays the same; the texture tests
+// Fraction of each card texture that is opaque (alpha >= 0.5). LOD1 sizes its needle
+// clusters with these so that the visible needle area stays the same; the texture tests
 // check them against the generated images.
 inline constexpr float kBroadleafCoverage = 0.58f;
 inline constexpr float kNeedleTuftCoverage = 0.22f;
 inline constexpr float kNeedleCoverage = 0.69f;
-inline constexpr float kLeafClusterCoverage = 0.60f;
 inline constexpr float kNeedleClusterCoverage = 0.29f;
 
 Image makeBarkTexture(const Appearance& look);
 Image makeLeafTexture(const Appearance& look);    // broadleaf or needle tuft; v = 0 at the petiole
 Image makeNeedleTexture(const Appearance& look);  // one needle along the card
-Image makeLeafClusterTexture(const Appearance& look, bool needles);
+Image makeNeedleClusterTexture(const Appearance& look);
 
 // Tileable fractal value noise in [0, 1]; x and y in texture units (periodic with period 1).
 float tileableNoise(float x, float y, int baseFrequency, int octaves, std::uint64_t seed);

@@ -25,7 +25,7 @@ TEST(ExportPov, SceneHasCameraLightAndEveryPart) {
   EXPECT_EQ(meshes, mesh.parts.size());
   EXPECT_NE(scene.find("face_indices { " + std::to_string(mesh.parts[0].triangleCount())),
             std::string::npos);
-  EXPECT_TRUE(std::filesystem::exists(dir / "hazel_leaf_cluster.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "hazel_leaf.png"));
 }
 
 TEST(ExportPov, PovRayRendersIt) {

@@ -52,14 +52,13 @@ double coverageOf(const Image& image) {
 }  // namespace
 
 TEST(Textures, CoverageConstantsMatchTheImages) {
-  // LOD1 keeps the visible leaf area with these constants; they must describe the images.
+  // LOD1 keeps the visible needle area with these constants; they must describe the images.
   Appearance broad = test::loadNamed("beech").appearance;
   Appearance tuft = test::loadNamed("pine").appearance;
   EXPECT_NEAR(coverageOf(makeLeafTexture(broad)), kBroadleafCoverage, 0.01);
   EXPECT_NEAR(coverageOf(makeLeafTexture(tuft)), kNeedleTuftCoverage, 0.01);
   EXPECT_NEAR(coverageOf(makeNeedleTexture(tuft)), kNeedleCoverage, 0.01);
-  EXPECT_NEAR(coverageOf(makeLeafClusterTexture(broad, false)), kLeafClusterCoverage, 0.01);
-  EXPECT_NEAR(coverageOf(makeLeafClusterTexture(tuft, true)), kNeedleClusterCoverage, 0.01);
+  EXPECT_NEAR(coverageOf(makeNeedleClusterTexture(tuft)), kNeedleClusterCoverage, 0.01);
 }
 
 TEST(Textures, MaterialsPerKind) {

@@ -84,17 +84,19 @@ vec3 applyFog(vec3 color, vec3 worldPosition) {
 
 // Lambert lighting from the sun (with shadow) and the sky; `translucency` lets thin leaves
 // pass light from behind. A normal shorter than one is the mean of the normals of several
-// leaves (an impostor's coarser mip levels): its length is the share of them facing its
-// way, the rest face every way and take on average a quarter of the beam (the mean of
-// max(cos, 0) over the sphere). Unit normals are lit as by Lambert alone.
+// leaves (an impostor's coarser mip levels), lit as it is: max(c, 0) + t max(-c, 0) of the
+// mean c = n.s is exactly the mean of its leaves' light where they all face the sun or all
+// face away from it, and never more than that mean. Leaf cards are lit from the side seen,
+// so a texel's leaves all face the viewer and, with the sun anywhere behind the viewer, the
+// sun too. (Reading the shortened part as leaves facing every way of the sphere, a quarter
+// of the beam each, lit a lone maple's impostor up to a quarter brighter than its mesh:
+// Impostor.MatchesTheMeshAtEachQualitysSwitchingSize.) Unit normals are lit as by Lambert.
 // `skyVisibility`: the share of the sky's light that reaches the point past nearby
 // occluders (a tree's own crown: crown_shade.hpp); the sun's beam is the shadow map's.
 vec3 shade(vec3 albedo, vec3 normal, vec3 worldPosition, float translucency,
            float skyVisibility) {
-  float aligned = clamp(length(normal), 0.0, 1.0);
-  float cosine = dot(normal, uToSun.xyz) / max(aligned, 1e-4);
-  float direct = aligned * (max(cosine, 0.0) + translucency * max(-cosine, 0.0)) +
-                 (1.0 - aligned) * 0.25 * (1.0 + translucency);
+  float cosine = dot(normal, uToSun.xyz);
+  float direct = max(cosine, 0.0) + translucency * max(-cosine, 0.0);
   // Linear in the normal, so that a mean normal gets the mean of its leaves' sky light.
   float skyLight = (0.6 + 0.4 * normal.y) * skyVisibility;
   vec3 light = uSunColor.rgb * direct * shadowAt(worldPosition) + uAmbient.rgb * skyLight;

@@ -10,14 +10,6 @@
 #include "test_support.hpp"
 
 namespace eco {
-namespace {
-
-std::size_t trianglesOf(const TreeMesh& mesh, MaterialKind kind) {
-  const MeshPart* part = mesh.find(kind);
-  return part ? part->triangleCount() : 0;
-}
-
-}  // namespace
 
 TEST(Lod, EachLevelIsCheaper) {
   for (const char* name : {"beech", "pine", "maple", "shrub"}) {
@@ -28,7 +20,8 @@ TEST(Lod, EachLevelIsCheaper) {
     std::size_t t2 = buildLod(tree, species, 2).triangleCount();
     // LOD1's branches take at most a third of LOD0's triangles; with the needles gathered
     // into clusters the whole tree does too (broadleaves keep their leaves).
-    EXPECT_LT(trianglesOf(lod1, MaterialKind::Bark), trianglesOf(lod0, MaterialKind::Bark) / 3)
+    EXPECT_LT(lod1.find(MaterialKind::Bark)->triangleCount(),
+              lod0.find(MaterialKind::Bark)->triangleCount() / 3)
         << name;
     if (bearsNeedles(species)) {
       EXPECT_LT(t1, t0 / 3) << name;

@@ -323,6 +323,7 @@ struct TreeChunk {
   std::string_view text;
   int firstLine = 0;
   std::size_t firstSlot = 0;  // the place of its first line among the file's rows
+  std::size_t lines = 0;
   std::vector<std::string> speciesNames;
   std::exception_ptr fault;  // its first bad row: the file's first in the earliest chunk
 };
@@ -380,17 +381,16 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
     chunks.emplace_back().text = body.substr(start, end - start);
     start = end;
   }
-  std::vector<std::size_t> lines(chunks.size());
   tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
     const std::string_view t = chunks[c].text;
-    lines[c] = static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n')) +
-               (t.empty() || t.back() == '\n' ? 0 : 1);
+    chunks[c].lines = static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n')) +
+                      (t.empty() || t.back() == '\n' ? 0 : 1);
   });
   std::size_t slots = 0;
-  for (std::size_t c = 0; c < chunks.size(); ++c) {
-    chunks[c].firstSlot = slots;
-    chunks[c].firstLine = static_cast<int>(2 + slots);
-    slots += lines[c];
+  for (TreeChunk& chunk : chunks) {
+    chunk.firstSlot = slots;
+    chunk.firstLine = static_cast<int>(2 + slots);
+    slots += chunk.lines;
   }
   std::vector<TreeRow> trees(slots);
   std::vector<char> filled(slots, 0);  // false for the empty lines between rows
@@ -409,7 +409,8 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
       speciesOf[c].push_back(static_cast<int>(found - snapshot.speciesNames.begin()));
     }
   tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
-    for (std::size_t slot = chunks[c].firstSlot; slot < chunks[c].firstSlot + lines[c]; ++slot)
+    for (std::size_t slot = chunks[c].firstSlot; slot < chunks[c].firstSlot + chunks[c].lines;
+         ++slot)
       if (filled[slot]) trees[slot].species = speciesOf[c][trees[slot].species];
   });
   std::size_t kept = 0;

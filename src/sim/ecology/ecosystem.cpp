@@ -1,6 +1,7 @@
 #include "sim/ecology/ecosystem.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
@@ -124,6 +125,15 @@ std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   return i;
 }
 
+std::size_t Ecosystem::regenerationCellOf(double east_m, double north_m) const {
+  const double originEast = -0.5 * grid().dx_m, originNorth = -0.5 * grid().dy_m;
+  const int x = std::clamp(static_cast<int>((east_m - originEast) / kRegenerationCell_m), 0,
+                           regenerationX_ - 1);
+  const int y = std::clamp(static_cast<int>((north_m - originNorth) / kRegenerationCell_m), 0,
+                           regenerationY_ - 1);
+  return static_cast<std::size_t>(y) * regenerationX_ + x;
+}
+
 void Ecosystem::plant(int species, double east_m, double north_m, int age_years) {
   if (terrain_.grid.cellAt(static_cast<float>(east_m), static_cast<float>(north_m)) < 0)
     throw InputError({}, "a plant must stand on the terrain");
@@ -220,7 +230,9 @@ void Ecosystem::computeLight() {
 void Ecosystem::grow() {
   Plants& p = state_.plants;
   carbonDeficit_.assign(p.size(), 0.0f);
+  recruited_.resize(p.size());  // the young first, then those of them grown out of the layer
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+    recruited_[i] = p.height_m[i] < kRegenerationHeight_m;
     const EcosystemSpecies& s = species_[p.species[i]];
     const LifeHistory& life = s.ecology.life;
     const double suitability = s.suitability[p.cell[i]];
@@ -267,6 +279,9 @@ void Ecosystem::grow() {
     p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, year.dbh_m, year.height_m));
     p.vigor[i] = static_cast<float>(relative * suitability);
     p.light[i] = static_cast<float>(topLight);
+  });
+  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+    recruited_[i] = recruited_[i] && p.height_m[i] >= kRegenerationHeight_m;
   });
 }
 
@@ -322,6 +337,7 @@ void Ecosystem::applyMortality() {
       chance = p.stressYears[i] >= life.saplingStressYears ? 1.0 : intrinsic[p.species[i]];
     if (rng.uniform() < chance) p.alive[i] = 0;
   });
+  clearCellsOfRecruits();
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!p.alive[i]) {
       ++died_[p.species[i]];
@@ -331,21 +347,46 @@ void Ecosystem::applyMortality() {
   p.removeDead();
 }
 
+void Ecosystem::clearCellsOfRecruits() {
+  Plants& p = state_.plants;
+  std::vector<std::size_t> cells;  // the regeneration cells where a plant became a tree
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (recruited_[i]) cells.push_back(regenerationCellOf(p.east_m[i], p.north_m[i]));
+  if (cells.empty()) return;
+  std::sort(cells.begin(), cells.end());
+  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+    if (p.height_m[i] < kRegenerationHeight_m &&
+        p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::Seeded) &&
+        std::binary_search(cells.begin(), cells.end(),
+                           regenerationCellOf(p.east_m[i], p.north_m[i])))
+      p.alive[i] = 0;
+  });
+}
+
 void Ecosystem::establish() {
   const Plants& p = state_.plants;
   const Grid& g = terrain_.grid;
   const double originEast = -0.5 * g.dx_m, originNorth = -0.5 * g.dy_m;
-  auto regenerationCell = [&](double east, double north) {
-    const int x = std::clamp(static_cast<int>((east - originEast) / kRegenerationCell_m), 0,
-                             regenerationX_ - 1);
-    const int y = std::clamp(static_cast<int>((north - originNorth) / kRegenerationCell_m), 0,
-                             regenerationY_ - 1);
-    return static_cast<std::size_t>(y) * regenerationX_ + x;
+  // What each regeneration cell holds in its sapling layer.
+  struct YoungPlants {
+    std::uint8_t count = 0;
+    bool closed = false;  // one of them has passed breast height
+    std::array<std::uint8_t, kYoungPlantsPerCell> species{};
+    bool holds(std::size_t s) const {
+      return std::find(species.begin(), species.begin() + count, s) != species.begin() + count;
+    }
   };
-  std::vector<std::uint8_t> taken(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.height_m[i] < kRegenerationHeight_m)
-      taken[regenerationCell(p.east_m[i], p.north_m[i])] = 1;
+  std::vector<YoungPlants> young(static_cast<std::size_t>(regenerationX_) * regenerationY_);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.height_m[i] >= kRegenerationHeight_m) continue;
+    YoungPlants& cell = young[regenerationCellOf(p.east_m[i], p.north_m[i])];
+    if (p.height_m[i] >= kBreastHeight_m) cell.closed = true;
+    // Planted stock may stand closer than a cell: a full cell is closed however many it holds.
+    if (cell.count < kYoungPlantsPerCell)
+      cell.species[cell.count++] = p.species[i];
+    else
+      cell.closed = true;
+  }
   const double cellArea = kRegenerationCell_m * kRegenerationCell_m;
   struct Newcomer {
     int species;
@@ -353,41 +394,39 @@ void Ecosystem::establish() {
   };
   std::vector<std::vector<Newcomer>> rows(regenerationY_);
   tbb::parallel_for(0, regenerationY_, [&](int y) {
-    std::vector<double> chance(species_.size());
     for (int x = 0; x < regenerationX_; ++x) {
       const std::size_t index = static_cast<std::size_t>(y) * regenerationX_ + x;
-      if (taken[index] || (!openCell_.empty() && openCell_[index])) continue;
+      YoungPlants cell = young[index];
+      if (cell.closed || cell.count >= kYoungPlantsPerCell ||
+          (!openCell_.empty() && openCell_[index]))
+        continue;
       const double east = originEast + (x + 0.5) * kRegenerationCell_m;
       const double north = originNorth + (y + 0.5) * kRegenerationCell_m;
-      const long cell = g.cellAt(east, north);
-      if (cell < 0 || terrain_.isOutside(static_cast<std::size_t>(cell))) continue;
+      const long terrainCell = g.cellAt(east, north);
+      if (terrainCell < 0 || terrain_.isOutside(static_cast<std::size_t>(terrainCell))) continue;
       const double ground = light_.groundLightAt(east, north);
       const double sky = light_.skyLightAt(east, north);
       const double groundLight = sky > 0.0 ? ground / sky : 1.0;  // relative to the open
-      const Seedbed seedbed = seedbedAt(groundLight, moisture_[cell], slope_deg_[cell]);
-      double total = 0.0;
-      for (std::size_t s = 0; s < species_.size(); ++s) {
+      const Seedbed seedbed =
+          seedbedAt(groundLight, moisture_[terrainCell], slope_deg_[terrainCell]);
+      // Each species the cell lacks arrives on its own, as a Poisson number of seedlings of
+      // which the cell takes one (iLand's establishment, species by species).
+      Rng rng(streamKey(settings_.seed, state_.year, index, purpose("establishment")));
+      for (std::size_t s = 0; s < species_.size() && cell.count < kYoungPlantsPerCell; ++s) {
+        if (cell.holds(s)) continue;
         const EcosystemSpecies& sp = species_[s];
         const LifeHistory& life = sp.ecology.life;
         const double seeds =
             (seeds_.density(static_cast<int>(s), east, north) + sp.seedRainPerHaPerYear / 1e4) *
             cellArea;
-        chance[s] = seeds * life.germination * sp.suitability[cell] *
-                    std::clamp(sp.ecology.lightResponse(ground), 0.0, 1.0) *
-                    seedbedEstablishment(life, seedbed);
-        total += chance[s];
+        const double expected = seeds * life.germination * sp.suitability[terrainCell] *
+                                std::clamp(sp.ecology.lightResponse(ground), 0.0, 1.0) *
+                                seedbedEstablishment(life, seedbed);
+        if (expected <= 0.0 || rng.uniform() >= -std::expm1(-expected)) continue;
+        cell.species[cell.count++] = static_cast<std::uint8_t>(s);
+        rows[y].push_back({static_cast<int>(s), east + (rng.uniform() - 0.5) * kRegenerationCell_m,
+                           north + (rng.uniform() - 0.5) * kRegenerationCell_m});
       }
-      if (total <= 0.0) continue;
-      // Seedlings arrive as a Poisson number; the cell takes one, of a species drawn by
-      // their shares.
-      Rng rng(streamKey(settings_.seed, state_.year, index, purpose("establishment")));
-      if (rng.uniform() >= 1.0 - std::exp(-total)) continue;
-      double pick = rng.uniform() * total;
-      int species = 0;
-      while (species + 1 < static_cast<int>(species_.size()) && pick >= chance[species])
-        pick -= chance[species++];
-      rows[y].push_back({species, east + (rng.uniform() - 0.5) * kRegenerationCell_m,
-                         north + (rng.uniform() - 0.5) * kRegenerationCell_m});
     }
   });
   for (const std::vector<Newcomer>& row : rows)

@@ -6,9 +6,10 @@
 //   light falls below the leaf compensation light.
 // - Mortality: intrinsic, carbon starvation for trees, poor years for saplings.
 // - Reproduction: seed density maps from the mature crowns (dispersal.hpp), the forest
-//   around the map and seed rain; each 2 m regeneration cell without a young plant below
-//   4 m takes at most one new seedling a year, so regeneration is limited by space, seed,
-//   site and light, not by the terrain's cell size.
+//   around the map and seed rain; a 2 m regeneration cell takes seedlings of the species it
+//   does not yet hold until one of its young plants passes 1.3 m, and the first to pass 4 m
+//   clears the others, so regeneration is limited by space, seed, site and light, not by
+//   the terrain's cell size.
 // Every random number is keyed by (scenario seed, year, plant or cell id, purpose), and every
 // pass keeps the plants' order, so a run gives the same plants whatever the thread count.
 #pragma once
@@ -31,12 +32,16 @@
 
 namespace eco {
 
-// The side of a regeneration cell, where at most one young plant below kRegenerationHeight_m
-// grows: iLand's 2 m regeneration cells and its sapling layer, whose cohorts become trees at
-// 4 m (Seidl et al. 2012). A cell takes a new seedling only once its plant has grown out of
-// that layer (or died), so a thicket holds at most 2,500 young plants per hectare.
+// iLand's sapling layer (Seidl et al. 2012; its saplings.h and saplings.cpp): the map is cut
+// into 2 m regeneration cells, each holding young plants (below kRegenerationHeight_m) of
+// at most kYoungPlantsPerCell species, one of each. A cell takes seedlings of the species it
+// lacks while all its young plants are below breast height (1.3 m); the first to pass
+// kRegenerationHeight_m becomes a tree and the cell's other seedlings and saplings die
+// (planted stock, which iLand plants as trees, stays). So species that arrive together race
+// for the cell by their height growth, and each cell raises one tree at a time.
 inline constexpr double kRegenerationCell_m = 2.0;
 inline constexpr double kRegenerationHeight_m = 4.0;
+inline constexpr int kYoungPlantsPerCell = 5;  // iLand's NSAPCELLS
 
 struct EcosystemSpecies {
   Species species;  // its tree model
@@ -121,9 +126,14 @@ class Ecosystem {
   void computeLight();
   void grow();
   void applyMortality();
+  // The seeded young plants that share a regeneration cell with one that became a tree this
+  // year die (marked, not yet removed).
+  void clearCellsOfRecruits();
   void produceSeeds();
   void establish();
   std::size_t addPlant(int species, double east_m, double north_m);
+  // The regeneration cell of a map position (clamped to the map).
+  std::size_t regenerationCellOf(double east_m, double north_m) const;
 
   const Terrain& terrain_;
   std::vector<EcosystemSpecies> species_;
@@ -139,7 +149,8 @@ class Ecosystem {
   std::vector<float> crownFoliage_kg_;       // per crown: the foliage its leaf area holds
   std::vector<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown
   static constexpr std::uint32_t kNoCrown = ~std::uint32_t{0};
-  std::vector<float> carbonDeficit_;  // per plant, this year's (trees)
+  std::vector<float> carbonDeficit_;     // per plant, this year's (trees)
+  std::vector<std::uint8_t> recruited_;  // per plant: grew out of the sapling layer this year
   std::vector<int> born_, died_, plantedDied_;
   std::function<bool(glm::dvec2)> isOpen_;
   std::vector<std::uint8_t> openCell_;  // per regeneration cell: its centre is kept open

@@ -1,5 +1,6 @@
 #include "sim/ecology/ecosystem.hpp"
 
+#include <array>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -123,6 +124,104 @@ TEST(Ecosystem, SmallSeedsTakeOnBareSoilAndFewInASward) {
   EXPECT_NEAR(static_cast<double>(sward) / bare, std::expm1(-0.028) / std::expm1(-0.1), 0.06);
 }
 
+// The sapling layer as iLand keeps it (ecosystem.hpp): a 2 m regeneration cell holds a young
+// plant of each species that reaches it, one of each. With a Poisson mean of 1 seedling a
+// cell for each of two species (5,000 seeds a hectare on 4 m2, half of them germinating),
+// each takes a cell with p = 1 - exp(-1), independently of the other, so p^2 of the cells
+// hold both; a cell taking one seedling of any species would hold both in none.
+TEST(Ecosystem, SpeciesArrivingTogetherShareACellOneOfEach) {
+  const Terrain terrain = flat(20, 5.0);  // 100 m across: 50 x 50 regeneration cells
+  const ConditionFields fields = test::uniformConditions(terrain);
+  Ecosystem ecosystem(terrain, fields,
+                      {test::inEcosystem(test::testSpecies("a", {}), fields, 5000.0),
+                       test::inEcosystem(test::testSpecies("b", {}), fields, 5000.0)},
+                      settings());
+  ecosystem.step();
+  std::vector<std::array<int, 2>> held(50 * 50, {0, 0});
+  const Plants& p = ecosystem.plants();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const int x = static_cast<int>((p.east_m[i] + 2.5f) / 2.0f);
+    const int y = static_cast<int>((p.north_m[i] + 2.5f) / 2.0f);
+    ++held[static_cast<std::size_t>(y) * 50 + x][p.species[i]];
+  }
+  int both = 0;
+  for (const std::array<int, 2>& cell : held) {
+    EXPECT_LE(cell[0], 1);
+    EXPECT_LE(cell[1], 1);
+    both += cell[0] == 1 && cell[1] == 1;
+  }
+  const double taken = -std::expm1(-1.0);
+  // The standard deviation of the share of 2,500 cells is under 0.01.
+  EXPECT_NEAR(both / 2500.0, taken * taken, 0.04);
+}
+
+// A cell takes no more seedlings once one of its young plants has passed breast height; below
+// that it takes those of the species it lacks, but no second of one it holds.
+TEST(Ecosystem, ACellClosesWhenAYoungPlantPassesBreastHeight) {
+  const Terrain terrain = flat(20, 5.0);
+  const ConditionFields fields = test::uniformConditions(terrain);
+  // Seeds of b fall everywhere in numbers (a Poisson mean of 200 a cell); a has none.
+  Ecosystem ecosystem(terrain, fields,
+                      {test::inEcosystem(test::testSpecies("a", {}), fields),
+                       test::inEcosystem(test::testSpecies("b", {}), fields, 1e6)},
+                      settings());
+  // Regeneration cells are 2 m squares from -2.5 m: (15.5, 15.5) .. (17.5, 17.5) is one.
+  ecosystem.plant(0, 16.5, 16.5, 4);  // a sapling above breast height
+  ASSERT_GT(ecosystem.plants().height_m[0], kBreastHeight_m);
+  ASSERT_LT(ecosystem.plants().height_m[0], 3.0);
+  ecosystem.plantSapling(0, 36.5, 36.5, 0.2, 0, PlantOrigin::Seeded);  // a small seedling
+  ecosystem.step();
+  auto inCell = [&](double east, double north, int species) {
+    int n = 0;
+    const Plants& p = ecosystem.plants();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      n += p.species[i] == species && std::abs(p.east_m[i] - east) < 1.0 &&
+           std::abs(p.north_m[i] - north) < 1.0;
+    return n;
+  };
+  EXPECT_EQ(inCell(16.5, 16.5, 1), 0);
+  EXPECT_EQ(inCell(36.5, 36.5, 1), 1);
+  EXPECT_EQ(inCell(56.5, 56.5, 1), 1);  // an empty cell
+  EXPECT_EQ(inCell(36.5, 36.5, 0), 1);
+}
+
+// The first young plant of a cell to pass 4 m becomes a tree, and the cell's other seedlings
+// and saplings die; planted stock stays, and so do seedlings in the next cell.
+TEST(Ecosystem, TheFirstToPassFourMetresClearsItsCell) {
+  const Terrain terrain = flat(20, 5.0);
+  const ConditionFields fields = test::uniformConditions(terrain);
+  TestEcology barren;  // no seeds within these years
+  barren.maturityAge_years = 100;
+  const std::vector<EcosystemSpecies> species = {
+      test::inEcosystem(test::testSpecies("a", barren), fields),
+      test::inEcosystem(test::testSpecies("b", barren), fields)};
+  // The oldest age at which a grows alone to below 4 m; regeneration cells as above.
+  int age = 1;
+  for (;; ++age) {
+    Ecosystem scratch(terrain, fields, species, settings());
+    scratch.plant(0, 16.5, 16.5, age + 1);
+    if (scratch.plants().height_m[0] >= kRegenerationHeight_m) break;
+  }
+  Ecosystem ecosystem(terrain, fields, species, settings());
+  ecosystem.plant(0, 16.5, 16.5, age);
+  ecosystem.plantSapling(1, 16.0, 17.0, 0.2, 0, PlantOrigin::Seeded);   // the same cell
+  ecosystem.plantSapling(1, 17.0, 16.0, 0.2, 0, PlantOrigin::Planted);  // the same cell
+  ecosystem.plantSapling(1, 18.5, 16.5, 0.2, 0, PlantOrigin::Seeded);   // the next cell
+  int year = 0;
+  while (ecosystem.plants().height_m[0] < kRegenerationHeight_m && year < 5) {
+    ASSERT_EQ(ecosystem.plants().size(), 4u) << "year " << year;
+    ecosystem.step();
+    ++year;
+  }
+  ASSERT_GE(ecosystem.plants().height_m[0], kRegenerationHeight_m);
+  const Plants& p = ecosystem.plants();
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(ecosystem.diedLastYear()[1], 1);
+  EXPECT_FLOAT_EQ(p.east_m[1], 17.0f);
+  EXPECT_EQ(p.origin[1], static_cast<std::uint8_t>(PlantOrigin::Planted));
+  EXPECT_FLOAT_EQ(p.east_m[2], 18.5f);
+}
+
 TEST(Ecosystem, NoPlantGrowsTallerThanItsSpeciesMaximum) {
   const Terrain terrain = flat(24, 10.0);
   const ConditionFields fields = test::uniformConditions(terrain);
@@ -165,17 +264,21 @@ TEST(Ecosystem, PineStarvesUnderBeechWhereBeechSurvives) {
                       settings());
   for (double east = 0.0; east < 190.0; east += 8.0)
     for (double north = 0.0; north < 190.0; north += 8.0) ecosystem.plant(0, east, north, 90);
-  auto youngOf = [&](int species) {
-    int n = 0;
-    for (std::size_t i = 0; i < ecosystem.plants().size(); ++i)
-      n += ecosystem.plants().species[i] == species && ecosystem.plants().age_years[i] < 60;
-    return n;
-  };
+  const std::uint64_t firstYoung = ecosystem.state().nextId;
   for (double east = 4.0; east < 190.0; east += 8.0)
     for (double north = 4.0; north < 190.0; north += 8.0) {
       ecosystem.plant(0, east, north - 2.0, 15);
       ecosystem.plant(1, east, north + 2.0, 15);
     }
+  const std::uint64_t lastYoung = ecosystem.state().nextId;
+  // The young trees planted here, not the seedlings the stand raises among them.
+  auto youngOf = [&](int species) {
+    const Plants& p = ecosystem.plants();
+    int n = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      n += p.species[i] == species && p.id[i] >= firstYoung && p.id[i] < lastYoung;
+    return n;
+  };
   const int planted = youngOf(0);
   ASSERT_EQ(youngOf(1), planted);
   for (int year = 0; year < 25; ++year) ecosystem.step();

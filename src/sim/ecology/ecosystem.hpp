@@ -38,7 +38,7 @@ namespace eco {
 // lacks while all its young plants are below breast height (1.3 m); the first to pass
 // kRegenerationHeight_m becomes a tree and the cell's other seedlings and saplings die
 // (planted stock, which iLand plants as trees, stays). So species that arrive together race
-// for the cell by their height growth, and each cell raises one tree at a time.
+// for the cell by their height growth.
 inline constexpr double kRegenerationCell_m = 2.0;
 inline constexpr double kRegenerationHeight_m = 4.0;
 inline constexpr int kYoungPlantsPerCell = 5;  // iLand's NSAPCELLS

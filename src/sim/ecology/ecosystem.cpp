@@ -125,13 +125,22 @@ std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   return i;
 }
 
+glm::dvec2 Ecosystem::regenerationOrigin() const {
+  return {-0.5 * grid().dx_m, -0.5 * grid().dy_m};
+}
+
 std::size_t Ecosystem::regenerationCellOf(double east_m, double north_m) const {
-  const double originEast = -0.5 * grid().dx_m, originNorth = -0.5 * grid().dy_m;
-  const int x = std::clamp(static_cast<int>((east_m - originEast) / kRegenerationCell_m), 0,
+  const glm::dvec2 origin = regenerationOrigin();
+  const int x = std::clamp(static_cast<int>((east_m - origin.x) / kRegenerationCell_m), 0,
                            regenerationX_ - 1);
-  const int y = std::clamp(static_cast<int>((north_m - originNorth) / kRegenerationCell_m), 0,
+  const int y = std::clamp(static_cast<int>((north_m - origin.y) / kRegenerationCell_m), 0,
                            regenerationY_ - 1);
   return static_cast<std::size_t>(y) * regenerationX_ + x;
+}
+
+glm::dvec2 Ecosystem::regenerationCentre(int x, int y) const {
+  const glm::dvec2 origin = regenerationOrigin();
+  return {origin.x + (x + 0.5) * kRegenerationCell_m, origin.y + (y + 0.5) * kRegenerationCell_m};
 }
 
 void Ecosystem::plant(int species, double east_m, double north_m, int age_years) {
@@ -187,13 +196,11 @@ void Ecosystem::removePlants(const std::vector<std::uint8_t>& removed) {
 
 void Ecosystem::keepOpen(std::function<bool(glm::dvec2)> isOpen) {
   isOpen_ = std::move(isOpen);
-  const double originEast = -0.5 * grid().dx_m, originNorth = -0.5 * grid().dy_m;
   openCell_.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
   tbb::parallel_for(0, regenerationY_, [&](int y) {
     for (int x = 0; x < regenerationX_; ++x)
       openCell_[static_cast<std::size_t>(y) * regenerationX_ + x] =
-          isOpen_({originEast + (x + 0.5) * kRegenerationCell_m,
-                   originNorth + (y + 0.5) * kRegenerationCell_m});
+          isOpen_(regenerationCentre(x, y));
   });
 }
 
@@ -366,7 +373,6 @@ void Ecosystem::clearCellsOfRecruits() {
 void Ecosystem::establish() {
   const Plants& p = state_.plants;
   const Grid& g = terrain_.grid;
-  const double originEast = -0.5 * g.dx_m, originNorth = -0.5 * g.dy_m;
   // What each regeneration cell holds in its sapling layer.
   struct YoungPlants {
     std::uint8_t count = 0;
@@ -400,8 +406,8 @@ void Ecosystem::establish() {
       if (cell.closed || cell.count >= kYoungPlantsPerCell ||
           (!openCell_.empty() && openCell_[index]))
         continue;
-      const double east = originEast + (x + 0.5) * kRegenerationCell_m;
-      const double north = originNorth + (y + 0.5) * kRegenerationCell_m;
+      const glm::dvec2 centre = regenerationCentre(x, y);
+      const double east = centre.x, north = centre.y;
       const long terrainCell = g.cellAt(east, north);
       if (terrainCell < 0 || terrain_.isOutside(static_cast<std::size_t>(terrainCell))) continue;
       const double ground = light_.groundLightAt(east, north);

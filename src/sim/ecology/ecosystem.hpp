@@ -132,8 +132,11 @@ class Ecosystem {
   void produceSeeds();
   void establish();
   std::size_t addPlant(int species, double east_m, double north_m);
-  // The regeneration cell of a map position (clamped to the map).
+  // The regeneration cells: 2 m squares from the terrain grid's south-west corner.
+  glm::dvec2 regenerationOrigin() const;
+  // The cell of a map position (clamped to the map), and a cell's centre.
   std::size_t regenerationCellOf(double east_m, double north_m) const;
+  glm::dvec2 regenerationCentre(int x, int y) const;
 
   const Terrain& terrain_;
   std::vector<EcosystemSpecies> species_;

@@ -94,6 +94,25 @@ std::vector<PlantSite> Ecosystem::sitesOf(const Plants& plants) const {
   return plantSites(plants, light_, terrain_.grid, windiness_, settings_.windFrom_deg);
 }
 
+PlantSite Ecosystem::siteOf(const Plants& plants, std::size_t i) const {
+  if (!lightComputed_) return {};
+  return plantSite(plants, i, light_, terrain_.grid, windiness_, settings_.windFrom_deg);
+}
+
+std::size_t Ecosystem::cellOf(const Plants& plants, std::size_t i) const {
+  const long cell = terrain_.grid.cellAt(plants.east_m[i], plants.north_m[i]);
+  ECO_ASSERT(cell >= 0, "plant " << plants.id[i] << " is off the map");
+  return static_cast<std::size_t>(cell);
+}
+
+float Ecosystem::groundOf(const Plants& plants, std::size_t i) const {
+  return terrain_.altitudeAt(plants.east_m[i], plants.north_m[i]);
+}
+
+std::uint32_t Ecosystem::variantSeedOf(std::uint64_t id) const {
+  return static_cast<std::uint32_t>(streamKey(settings_.seed, id, purpose("variant")) >> 32);
+}
+
 std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   Plants& p = state_.plants;
   const std::size_t i = p.size();
@@ -103,10 +122,8 @@ std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   p.species[i] = static_cast<std::uint8_t>(species);
   p.east_m[i] = static_cast<float>(east_m);
   p.north_m[i] = static_cast<float>(north_m);
-  p.ground_m[i] = terrain_.altitudeAt(east_m, north_m);
-  const long cell = terrain_.grid.cellAt(static_cast<float>(east_m), static_cast<float>(north_m));
-  ECO_ASSERT(cell >= 0, "a plant off the map at " << east_m << ", " << north_m);
-  p.cell[i] = static_cast<std::int32_t>(cell);
+  ECO_ASSERT(terrain_.grid.cellAt(p.east_m[i], p.north_m[i]) >= 0,
+             "a plant off the map at " << east_m << ", " << north_m);
   p.age_years[i] = 0;
   p.height_m[i] = static_cast<float>(life.seedlingHeight_m);
   p.dbh_m[i] = 0.0f;
@@ -117,8 +134,6 @@ std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   Rng rng(streamKey(settings_.seed, p.id[i], purpose("growth factor")));
   p.growthFactor[i] =
       static_cast<float>(1.0 - kGrowthFactorSpread * std::min(std::abs(rng.normal()), 3.0));
-  p.variantSeed[i] =
-      static_cast<std::uint32_t>(streamKey(settings_.seed, p.id[i], purpose("variant")) >> 32);
   p.stressYears[i] = 0;
   p.origin[i] = static_cast<std::uint8_t>(PlantOrigin::Seeded);
   p.alive[i] = 1;
@@ -242,7 +257,7 @@ void Ecosystem::grow() {
     recruited_[i] = p.height_m[i] < kRegenerationHeight_m;
     const EcosystemSpecies& s = species_[p.species[i]];
     const LifeHistory& life = s.ecology.life;
-    const double suitability = s.suitability[p.cell[i]];
+    const double suitability = s.suitability[cellOf(p, i)];
     p.age_years[i] += 1;
     if (p.height_m[i] < kBreastHeight_m) {
       const double light = light_.groundLightAt(p.east_m[i], p.north_m[i]);
@@ -304,7 +319,7 @@ void Ecosystem::produceSeeds() {
   for (std::size_t i = 0; i < p.size(); ++i) {
     const LifeHistory& life = species_[p.species[i]].ecology.life;
     if (p.height_m[i] < kBreastHeight_m || p.age_years[i] < life.maturityAge_years) continue;
-    const double suitability = species_[p.species[i]].suitability[p.cell[i]];
+    const double suitability = species_[p.species[i]].suitability[cellOf(p, i)];
     const double relative = suitability > 0.0 ? p.vigor[i] / suitability : 0.0;
     const double seeds = seedProduction(life, p.crownRadius_m[i], mast[p.species[i]], relative);
     if (seeds > 0.0) seeds_.addSeeds(p.species[i], p.east_m[i], p.north_m[i], seeds);

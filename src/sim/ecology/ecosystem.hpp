@@ -118,6 +118,14 @@ class Ecosystem {
   // this year's canopy, for plants of this ecosystem's map (its own, or the trees a thinning
   // removed this year); before the first step (no canopy yet) all neutral.
   std::vector<PlantSite> sitesOf(const Plants& plants) const;
+  PlantSite siteOf(const Plants& plants, std::size_t i) const;
+  // What a plant's position and id give (plants.hpp), for plants of this ecosystem's map:
+  // the terrain grid's cell holding the stem, the ground's altitude there, and the tree
+  // model's individual seed (32 bits, which spreadsheets, R and JavaScript hold exactly:
+  // their numbers are doubles).
+  std::size_t cellOf(const Plants& plants, std::size_t i) const;
+  float groundOf(const Plants& plants, std::size_t i) const;
+  std::uint32_t variantSeedOf(std::uint64_t id) const;
 
   const EcosystemState& state() const { return state_; }
   void restore(EcosystemState state);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <tbb/parallel_for.h>
@@ -100,47 +101,55 @@ void LightGrid::footprint(const CrownShape& crown, std::vector<Footprint>& out) 
 
 void LightGrid::compute(const std::vector<CrownShape>& crowns) {
   const std::size_t n = crowns.size();
-  // Each crown's footprint, in crown order (CSR): count, then fill.
-  crownStart_.assign(n + 1, 0);
+  // Each crown's footprint, in crown order (CSR): count, then fill. Kept only while the
+  // light is worked out, and indexed in 32 bits: a landscape has tens of millions of crowns.
+  std::vector<std::uint32_t> crownStart(n + 1, 0);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     thread_local std::vector<Footprint> columns;
     footprint(crowns[i], columns);
-    crownStart_[i + 1] = columns.size();
+    crownStart[i + 1] = static_cast<std::uint32_t>(columns.size());
   });
-  for (std::size_t i = 0; i < n; ++i) crownStart_[i + 1] += crownStart_[i];
-  entries_.resize(crownStart_[n]);
-  std::vector<std::uint32_t> entryCrown(entries_.size());
+  std::size_t entryCount = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    entryCount += crownStart[i + 1];
+    ECO_ASSERT(entryCount <= std::numeric_limits<std::uint32_t>::max(),
+               "more crown footprint entries than 32 bits index");
+    crownStart[i + 1] = static_cast<std::uint32_t>(entryCount);
+  }
+  std::vector<Footprint> entries(entryCount);
+  std::vector<std::uint32_t> entryCrown(entryCount);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     thread_local std::vector<Footprint> columns;
     footprint(crowns[i], columns);
-    std::copy(columns.begin(), columns.end(), entries_.begin() + crownStart_[i]);
-    std::fill(entryCrown.begin() + crownStart_[i], entryCrown.begin() + crownStart_[i + 1],
+    std::copy(columns.begin(), columns.end(), entries.begin() + crownStart[i]);
+    std::fill(entryCrown.begin() + crownStart[i], entryCrown.begin() + crownStart[i + 1],
               static_cast<std::uint32_t>(i));
   });
 
   // Each column's entries, tallest crown first (ties: the earlier crown).
   const std::size_t columns = topLight_.size();
   columnStart_.assign(columns + 1, 0);
-  for (const Footprint& f : entries_) ++columnStart_[f.column + 1];
+  for (const Footprint& f : entries) ++columnStart_[f.column + 1];
   for (std::size_t c = 0; c < columns; ++c) columnStart_[c + 1] += columnStart_[c];
-  std::vector<std::size_t> order(entries_.size());
+  std::vector<std::uint32_t> order(entryCount);
   {
     std::vector<std::size_t> next(columnStart_.begin(), columnStart_.end() - 1);
-    for (std::size_t e = 0; e < entries_.size(); ++e) order[next[entries_[e].column]++] = e;
+    for (std::size_t e = 0; e < entryCount; ++e)
+      order[next[entries[e].column]++] = static_cast<std::uint32_t>(e);
   }
-  std::vector<double> entryAbsorbed(entries_.size(), 0.0);
-  layers_.resize(entries_.size());
+  std::vector<double> entryAbsorbed(entryCount, 0.0);
+  layers_.resize(entryCount);
   tbb::parallel_for(std::size_t{0}, columns, [&](std::size_t c) {
     const auto first = order.begin() + static_cast<std::ptrdiff_t>(columnStart_[c]);
     const auto last = order.begin() + static_cast<std::ptrdiff_t>(columnStart_[c + 1]);
-    std::sort(first, last, [&](std::size_t a, std::size_t b) {
+    std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
       const float ta = crowns[entryCrown[a]].top_m, tb = crowns[entryCrown[b]].top_m;
       return ta != tb ? ta > tb : entryCrown[a] < entryCrown[b];
     });
     double light = topLight_[c];
     for (auto it = first; it != last; ++it) {
       const CrownShape& crown = crowns[entryCrown[*it]];
-      const double area = std::min(kColumnArea_m2, crownArea(crown) * entries_[*it].weight);
+      const double area = std::min(kColumnArea_m2, crownArea(crown) * entries[*it].weight);
       const double taken = area * light * absorbedShare(crown);
       entryAbsorbed[*it] = taken;
       light = std::max(0.0, light - taken / kColumnArea_m2);
@@ -150,7 +159,7 @@ void LightGrid::compute(const std::vector<CrownShape>& crowns) {
   });
   absorbed_.assign(n, 0.0);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    for (std::size_t e = crownStart_[i]; e < crownStart_[i + 1]; ++e)
+    for (std::size_t e = crownStart[i]; e < crownStart[i + 1]; ++e)
       absorbed_[i] += entryAbsorbed[e];
   });
 }

@@ -84,10 +84,7 @@ class LightGrid {
   int columnsX_ = 0, columnsY_ = 0;
   double originEast_m_ = 0.0, originNorth_m_ = 0.0;  // south-west corner of the columns
   std::vector<float> topLight_;                      // per column
-  // Per crown: its footprint entries (CSR), and the light it absorbed.
-  std::vector<std::size_t> crownStart_;
-  std::vector<Footprint> entries_;
-  std::vector<double> absorbed_;
+  std::vector<double> absorbed_;  // per crown
   // Per column: its crowns' layers, tallest first (CSR).
   std::vector<std::size_t> columnStart_;
   std::vector<Layer> layers_;

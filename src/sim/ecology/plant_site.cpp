@@ -45,18 +45,23 @@ double windExposure(double windiness) {
   return std::clamp((windiness - kOpenGroundWindiness) / (1.0 - kOpenGroundWindiness), 0.0, 1.0);
 }
 
+PlantSite plantSite(const Plants& p, std::size_t i, const LightGrid& light, const Grid& grid,
+                    const Field& windiness, double windFrom_deg) {
+  if (p.height_m[i] < kShapedFromHeight_m) return {};
+  const long cell = grid.cellAt(p.east_m[i], p.north_m[i]);
+  const double exposure = cell < 0 ? 0.0 : windExposure(windiness[static_cast<std::size_t>(cell)]);
+  PlantSite site;
+  site.wind = glm::vec2(exposure * mapDownwindOf(windFrom_deg));
+  site.light = glm::vec2(lightDirection(light, p.east_m[i], p.north_m[i], p.crownRadius_m[i],
+                                        p.crownBase_m[i], p.height_m[i]));
+  return site;
+}
+
 std::vector<PlantSite> plantSites(const Plants& p, const LightGrid& light, const Grid& grid,
                                   const Field& windiness, double windFrom_deg) {
-  const glm::dvec2 downwind = mapDownwindOf(windFrom_deg);
   std::vector<PlantSite> sites(p.size());
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    if (p.height_m[i] < kShapedFromHeight_m) return;
-    const long cell = grid.cellAt(p.east_m[i], p.north_m[i]);
-    const double exposure =
-        cell < 0 ? 0.0 : windExposure(windiness[static_cast<std::size_t>(cell)]);
-    sites[i].wind = glm::vec2(exposure * downwind);
-    sites[i].light = glm::vec2(lightDirection(light, p.east_m[i], p.north_m[i], p.crownRadius_m[i],
-                                              p.crownBase_m[i], p.height_m[i]));
+    sites[i] = plantSite(p, i, light, grid, windiness, windFrom_deg);
   });
   return sites;
 }

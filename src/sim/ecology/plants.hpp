@@ -13,22 +13,20 @@ namespace eco {
 enum class PlantOrigin : std::uint8_t { Seeded = 0, Planted = 1, PlantedRuledOut = 2 };
 
 struct Plants {
-  std::vector<std::uint64_t> id;       // unique in a run, in order of establishment
-  std::vector<std::uint8_t> species;   // index into the run's species list
-  std::vector<float> east_m, north_m;  // map position (Grid::cellAt)
-  std::vector<float> ground_m;         // altitude of the ground at the stem
-  std::vector<std::int32_t> cell;      // grid cell holding the stem
+  std::vector<std::uint64_t> id;      // unique in a run, in order of establishment
+  std::vector<std::uint8_t> species;  // index into the run's species list
+  // Map position (Grid::cellAt). What follows from it and the id -- the ground's altitude,
+  // the grid cell, the tree model's variant seed -- is worked out where it is needed, not
+  // kept: a landscape holds 100 million plants, and every byte a plant is 100 MB.
+  std::vector<float> east_m, north_m;
   std::vector<std::int32_t> age_years;
   std::vector<float> height_m;
   std::vector<float> crownRadius_m;
-  std::vector<float> crownBase_m;   // height of the lowest living branches
-  std::vector<float> dbh_m;         // stem diameter at breast height, 0 below 1.3 m
-  std::vector<float> vigor;         // 0..1, this year's
-  std::vector<float> light;         // fraction of open-sky light at the crown top
-  std::vector<float> growthFactor;  // the individual's lasting growth rate, about 1
-  // The tree model's individual seed: 32 bits, which spreadsheets, R and JavaScript hold
-  // exactly (their numbers are doubles).
-  std::vector<std::uint32_t> variantSeed;
+  std::vector<float> crownBase_m;          // height of the lowest living branches
+  std::vector<float> dbh_m;                // stem diameter at breast height, 0 below 1.3 m
+  std::vector<float> vigor;                // 0..1, this year's
+  std::vector<float> light;                // fraction of open-sky light at the crown top
+  std::vector<float> growthFactor;         // the individual's lasting growth rate, about 1
   std::vector<std::uint16_t> stressYears;  // a sapling's poor years in a row
   std::vector<std::uint8_t> origin;        // PlantOrigin: seeded or planted
   std::vector<std::uint8_t> alive;
@@ -58,10 +56,9 @@ struct Plants {
   // Calls f with the same column of each of `p...`, column by column.
   template <typename F, typename... Self>
   static void visitColumns(F&& f, Self&... p) {
-    f(p.id...), f(p.species...), f(p.east_m...), f(p.north_m...), f(p.ground_m...), f(p.cell...),
-        f(p.age_years...), f(p.height_m...), f(p.crownRadius_m...), f(p.crownBase_m...),
-        f(p.dbh_m...), f(p.vigor...), f(p.light...), f(p.growthFactor...), f(p.variantSeed...),
-        f(p.stressYears...), f(p.origin...), f(p.alive...);
+    f(p.id...), f(p.species...), f(p.east_m...), f(p.north_m...), f(p.age_years...),
+        f(p.height_m...), f(p.crownRadius_m...), f(p.crownBase_m...), f(p.dbh_m...), f(p.vigor...),
+        f(p.light...), f(p.growthFactor...), f(p.stressYears...), f(p.origin...), f(p.alive...);
   }
 };
 

@@ -19,8 +19,9 @@ namespace eco {
 namespace {
 
 constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
-// 2: block checksum; 3: growth factor, stand measures; 4: 32-bit variant seeds
-constexpr std::uint32_t kFormatVersion = 5;  // 5: plants' origin, the plan's stats
+// 2: block checksum; 3: growth factor, stand measures; 4: 32-bit variant seeds;
+// 5: plants' origin, the plan's stats; 6: no ground, cell and variant seed columns (derived)
+constexpr std::uint32_t kFormatVersion = 6;
 constexpr std::size_t kChecksumBlock = std::size_t{1} << 20;
 
 // FNV-1a of each 1 MiB block of `bytes`, in parallel, appended to `hashes`.
@@ -111,10 +112,6 @@ std::optional<std::string> plantFault(const Plants& p, std::size_t i, int year,
   if (!std::isfinite(p.east_m[i]) || !std::isfinite(p.north_m[i]) ||
       g.cellAt(p.east_m[i], p.north_m[i]) < 0)
     return fmt::format("position ({}, {}) m is not on the terrain", p.east_m[i], p.north_m[i]);
-  if (p.cell[i] != g.cellAt(p.east_m[i], p.north_m[i]))
-    return fmt::format("cell {} is not the cell of its position ({})", p.cell[i],
-                       g.cellAt(p.east_m[i], p.north_m[i]));
-  if (!std::isfinite(p.ground_m[i])) return std::string("its ground altitude is not a number");
   if (p.age_years[i] < 0 || p.age_years[i] > year)
     return fmt::format("age {} is not between 0 and the checkpoint's year {}", p.age_years[i],
                        year);

@@ -224,17 +224,15 @@ StatsFile readStatsCsv(const std::filesystem::path& file) {
 }
 
 void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem) {
-  writeTreesCsv(file, ecosystem.plants(), ecosystem.sitesOf(ecosystem.plants()),
-                ecosystem.species());
+  writeTreesCsv(file, ecosystem, ecosystem.plants());
 }
 
-void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
-                   const std::vector<PlantSite>& sites,
-                   const std::vector<EcosystemSpecies>& species) {
-  ECO_ASSERT(sites.size() == p.size(), "a site per plant");
+void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem, const Plants& p) {
+  const std::vector<EcosystemSpecies>& species = ecosystem.species();
   // Formatted in parallel chunks and written in order, a batch of chunks at a time: a
-  // landscape's 50 million rows would otherwise be gigabytes of text in memory at once.
-  // While one batch is written out, the next is formatted.
+  // landscape's 100 million rows would otherwise be gigabytes of text in memory at once,
+  // and so would their sites, which are worked out row by row. While one batch is written
+  // out, the next is formatted.
   constexpr std::size_t kRowsPerChunk = 16384, kChunksPerBatch = 64;
   constexpr std::size_t kRowsPerBatch = kRowsPerChunk * kChunksPerBatch;
   auto formatBatch = [&](std::size_t first, std::vector<std::string>& chunks) {
@@ -254,18 +252,19 @@ void writeTreesCsv(const std::filesystem::path& file, const Plants& p,
                        species[p.species[i]].species.name);
         fixed(p.east_m[i], 3);
         fixed(p.north_m[i], 3);
-        fixed(p.ground_m[i], 3);
+        fixed(ecosystem.groundOf(p, i), 3);
         fmt::format_to(std::back_inserter(text), "{},", p.age_years[i]);
         fixed(p.height_m[i], 3);
         fixed(p.crownRadius_m[i], 3);
         fixed(p.crownBase_m[i], 3);
         fixed(p.dbh_m[i], 4);
         fixed(p.vigor[i], 3);
-        fmt::format_to(std::back_inserter(text), "{},", p.variantSeed[i]);
-        fixed(sites[i].light.x, 2);
-        fixed(sites[i].light.y, 2);
-        fixed(sites[i].wind.x, 2);
-        appendFixed(text, sites[i].wind.y, 2);
+        fmt::format_to(std::back_inserter(text), "{},", ecosystem.variantSeedOf(p.id[i]));
+        const PlantSite site = ecosystem.siteOf(p, i);
+        fixed(site.light.x, 2);
+        fixed(site.light.y, 2);
+        fixed(site.wind.x, 2);
+        appendFixed(text, site.wind.y, 2);
         text += '\n';
       }
     });

@@ -98,11 +98,9 @@ struct TreeSnapshot {
 
 // The ecosystem's plants after a step, with their sites under this year's canopy.
 void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem);
-// The same for any plants of the ecosystem's map and species (the trees a thinning removed),
-// with their sites, one per plant.
-void writeTreesCsv(const std::filesystem::path& file, const Plants& plants,
-                   const std::vector<PlantSite>& sites,
-                   const std::vector<EcosystemSpecies>& species);
+// The same for any plants of the ecosystem's map and species (the trees a thinning removed).
+void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem,
+                   const Plants& plants);
 // Parses one trees CSV; errors give the file and line.
 TreeSnapshot readTreesCsv(const std::filesystem::path& file);
 

@@ -47,7 +47,7 @@ std::vector<SpeciesCount> countsOf(const Ecosystem& ecosystem, const ConditionFi
     if (p.height_m[i] <= 5.0f) continue;
     ++c.over5m;
     for (std::size_t f = 0; f < info.size(); ++f)
-      c.meanSiteOver5m[f] += (fields.*info[f].field)[p.cell[i]];
+      c.meanSiteOver5m[f] += (fields.*info[f].field)[ecosystem.cellOf(p, i)];
   }
   for (SpeciesCount& c : counts) {
     if (c.over5m == 0) c.meanSiteOver5m.clear();
@@ -264,8 +264,7 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
     const int year = ecosystem.year();
     plan.thinAtEndOf(year, done);
     if (done.removedPlants.size() > 0)
-      writeTreesCsv(run.removed(year), done.removedPlants, ecosystem.sitesOf(done.removedPlants),
-                    ecosystem.species());
+      writeTreesCsv(run.removed(year), ecosystem, done.removedPlants);
     std::vector<StatsRow> rows = statsOfYear(ecosystem, done);
     stats.insert(stats.end(), rows.begin(), rows.end());
     writeStatsCsv(run.stats(), stats, ecosystem.species());

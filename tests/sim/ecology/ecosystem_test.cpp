@@ -97,7 +97,7 @@ TEST(Ecosystem, SpeciesExcludedFromTheUpperHalfNeverEstablishesThere) {
   const Plants& p = ecosystem.plants();
   ASSERT_GT(p.size(), 500u);
   for (std::size_t i = 0; i < p.size(); ++i)
-    EXPECT_LT(p.ground_m[i], 500.0f) << "plant " << p.id[i];
+    EXPECT_LT(ecosystem.groundOf(p, i), 500.0f) << "plant " << p.id[i];
 }
 
 // Pine's small seeds take on bare mineral soil and few in a meadow's sward: on open fresh

@@ -13,7 +13,7 @@ TEST(Plants, ResizeReachesEveryColumn) {
     EXPECT_EQ(column.size(), 7u);
     ++columns;
   });
-  EXPECT_EQ(columns, 18u);
+  EXPECT_EQ(columns, 15u);
 }
 
 TEST(Plants, AppendRowCopiesEveryColumn) {

@@ -78,7 +78,7 @@ TEST(Checkpoint, AStateOfManyBlocksIsWrittenThroughWithItsChecksum) {
   const auto file = test::freshDirectory("checkpoint_big") / "checkpoint.bin";
   writeCheckpoint(file, big.scenarioHash, big.programVersion, big.state, big.stats);
   const std::string bytes = test::readFile(file);
-  ASSERT_GT(bytes.size(), std::size_t{16} << 20);  // 65 bytes a plant: 18 blocks and a part
+  ASSERT_GT(bytes.size(), std::size_t{15} << 20);  // 53 bytes a plant: 15 blocks and a part
   // The stored checksum is that of the whole body, as if it had been made in memory.
   std::uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
@@ -118,7 +118,6 @@ Checkpoint fitting() {
   for (std::size_t i = 0; i < p.size(); ++i) {
     p.east_m[i] = 3.0f + 4.0f * i;
     p.north_m[i] = 5.0f;
-    p.cell[i] = static_cast<std::int32_t>(kGrid.cellAt(p.east_m[i], p.north_m[i]));
     p.age_years[i] = static_cast<std::int32_t>(i);
     p.vigor[i] = 0.5f;
     p.alive[i] = 1;
@@ -166,8 +165,6 @@ TEST(Checkpoint, CraftedValuesAreRefused) {
               c.state.plants.species[0] = 7;
             }).find("species index 7, but the scenario has 1 species"),
             std::string::npos);
-  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.cell[0] += 1; }).find("is not the cell"),
-            std::string::npos);
   EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.id[2] = 5; }).find("ids must rise"),
             std::string::npos);
   EXPECT_NE(crafted([](Checkpoint& c) { c.state.nextId = 6; }).find("ids must rise"),
@@ -205,7 +202,6 @@ TEST(Checkpoint, TheFirstFaultyPlantIsReported) {
     p.id[i] = i + 1;
     p.east_m[i] = 1.0f;
     p.north_m[i] = 1.0f;
-    p.cell[i] = static_cast<std::int32_t>(kGrid.cellAt(1.0, 1.0));
     p.vigor[i] = 0.5f;
     p.growthFactor[i] = 1.0f;
     p.age_years[i] = 0;

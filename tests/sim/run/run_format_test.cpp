@@ -247,7 +247,8 @@ TEST_F(OneHectare, TheTreesReaderReadsWhatTheWriterWrote) {
     EXPECT_NEAR(row.north_m, p.north_m[i], 5e-4);
     EXPECT_EQ(row.age_years, p.age_years[i]);
     EXPECT_NEAR(row.height_m, p.height_m[i], 5e-4);
-    EXPECT_EQ(row.variantSeed, p.variantSeed[i]);
+    EXPECT_EQ(row.variantSeed, ecosystem.variantSeedOf(p.id[i]));
+    EXPECT_NEAR(row.ground_m, ecosystem.groundOf(p, i), 5e-4);
     EXPECT_NEAR(row.site.light.x, sites[i].light.x, 5e-3);
     EXPECT_NEAR(row.site.light.y, sites[i].light.y, 5e-3);
     EXPECT_NEAR(row.site.wind.x, sites[i].wind.x, 5e-3);
@@ -293,7 +294,7 @@ TEST_F(OneHectare, ALargeSnapshotIsWrittenInBatchesInOrder) {
     p.age_years[i] = static_cast<std::int32_t>(i % 97);
   }
   const auto file = test::freshDirectory("run_format_batches") / "year_0001.csv";
-  writeTreesCsv(file, p, std::vector<PlantSite>(n), ecosystem.species());
+  writeTreesCsv(file, ecosystem, p);
   const TreeSnapshot snapshot = readTreesCsv(file);
   ASSERT_EQ(snapshot.trees.size(), n);
   for (std::size_t i = 0; i < n; ++i) {

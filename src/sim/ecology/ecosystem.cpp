@@ -251,7 +251,7 @@ void Ecosystem::computeLight() {
 
 void Ecosystem::grow() {
   Plants& p = state_.plants;
-  carbonDeficit_.assign(p.size(), 0.0f);
+  carbonDeficit_.assign(crowns_.size(), 0.0f);
   recruited_.resize(p.size());  // the young first, then those of them grown out of the layer
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     recruited_[i] = p.height_m[i] < kRegenerationHeight_m;
@@ -288,7 +288,7 @@ void Ecosystem::grow() {
         growTree(life, p.dbh_m[i], p.height_m[i], crownFoliage_kg_[crownOfPlant_[i]], absorbed,
                  {suitability, response, p.growthFactor[i],
                   agingFactor(life, p.height_m[i], p.age_years[i])});
-    carbonDeficit_[i] = static_cast<float>(year.carbonDeficit());
+    carbonDeficit_[crownOfPlant_[i]] = static_cast<float>(year.carbonDeficit());
     // The branches that this year's light beside the crown left below the compensation point
     // die.
     const double pruned = light_.heightWithSideLight(
@@ -352,10 +352,12 @@ void Ecosystem::applyMortality() {
     if (p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::PlantedRuledOut) ||
         p.age_years[i] >= life.maxAge_years)
       chance = 1.0;
-    else if (p.dbh_m[i] > 0.0f)  // treeMortality, with the intrinsic part computed once
-      chance =
-          std::min(1.0, intrinsic[p.species[i]] + starvationMortality(life, carbonDeficit_[i]));
-    else
+    else if (p.dbh_m[i] > 0.0f) {  // treeMortality, with the intrinsic part computed once
+      // A sapling that passed breast height this year has no crown in the light grid yet.
+      const std::uint32_t crown = crownOfPlant_[i];
+      const double deficit = crown == kNoCrown ? 0.0 : carbonDeficit_[crown];
+      chance = std::min(1.0, intrinsic[p.species[i]] + starvationMortality(life, deficit));
+    } else
       chance = p.stressYears[i] >= life.saplingStressYears ? 1.0 : intrinsic[p.species[i]];
     if (rng.uniform() < chance) p.alive[i] = 0;
   });

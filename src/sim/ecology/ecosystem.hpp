@@ -160,7 +160,7 @@ class Ecosystem {
   std::vector<float> crownFoliage_kg_;       // per crown: the foliage its leaf area holds
   std::vector<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown
   static constexpr std::uint32_t kNoCrown = ~std::uint32_t{0};
-  std::vector<float> carbonDeficit_;     // per plant, this year's (trees)
+  std::vector<float> carbonDeficit_;     // per crown, this year's
   std::vector<std::uint8_t> recruited_;  // per plant: grew out of the sapling layer this year
   std::vector<int> born_, died_, plantedDied_;
   std::function<bool(glm::dvec2)> isOpen_;

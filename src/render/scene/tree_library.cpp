@@ -99,7 +99,7 @@ TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySetti
   const int classes = static_cast<int>(settings.ageClasses.size());
   for (int s = 0; s < static_cast<int>(species.size()); ++s) {
     const std::optional<Ecology>& ecology = species[s].ecology;
-    maxHeight_m_.push_back(ecology ? static_cast<float>(ecology->life.height_m.max)
+    maxHeight_m_.push_back(ecology ? static_cast<float>(ecology->life.height_m.max())
                                    : types_[typeIndex(s, 0, classes - 1)].height_m);
     seedlingHeight_m_.push_back(
         static_cast<float>((ecology ? ecology->life : LifeHistory{}).seedlingHeight_m));

@@ -75,9 +75,11 @@ Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
       died_(species_.size(), 0),
       plantedDied_(species_.size(), 0) {
   ECO_ASSERT(species_.size() <= 255, "at most 255 species, got " << species_.size());
-  for (const EcosystemSpecies& s : species_)
+  for (const EcosystemSpecies& s : species_) {
     ECO_ASSERT(s.suitability.size() == terrain.grid.cellCount(),
                "species " << s.species.name << " lacks its suitability field");
+    seedlingCrownLimit_m_.push_back(seedlingCrownRadiusLimit(s.ecology.life));
+  }
 }
 
 void Ecosystem::restore(EcosystemState state) {
@@ -271,8 +273,11 @@ void Ecosystem::grow() {
       if (year.height_m >= kBreastHeight_m) {
         p.dbh_m[i] = static_cast<float>(saplingDiameter(life, year.height_m));
         p.crownBase_m[i] = 0.0f;
+        p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
+      } else {
+        p.crownRadius_m[i] =
+            static_cast<float>(std::min(seedlingCrownLimit_m_[p.species[i]], 0.5 * p.height_m[i]));
       }
-      p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
       p.vigor[i] = static_cast<float>(suitability * response);
       p.light[i] = static_cast<float>(light);
       return;
@@ -373,16 +378,20 @@ void Ecosystem::applyMortality() {
 
 void Ecosystem::clearCellsOfRecruits() {
   Plants& p = state_.plants;
-  std::vector<std::size_t> cells;  // the regeneration cells where a plant became a tree
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (recruited_[i]) cells.push_back(regenerationCellOf(p.east_m[i], p.north_m[i]));
-  if (cells.empty()) return;
-  std::sort(cells.begin(), cells.end());
+  // The regeneration cells where a plant became a tree this year, as one flag a cell: a
+  // lookup per young plant, where a sorted list of cells cost a binary search.
+  std::vector<std::uint8_t> cleared;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!recruited_[i]) continue;
+    if (cleared.empty())
+      cleared.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
+    cleared[regenerationCellOf(p.east_m[i], p.north_m[i])] = 1;
+  }
+  if (cleared.empty()) return;
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     if (p.height_m[i] < kRegenerationHeight_m &&
         p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::Seeded) &&
-        std::binary_search(cells.begin(), cells.end(),
-                           regenerationCellOf(p.east_m[i], p.north_m[i])))
+        cleared[regenerationCellOf(p.east_m[i], p.north_m[i])])
       p.alive[i] = 0;
   });
 }

@@ -148,6 +148,7 @@ class Ecosystem {
 
   const Terrain& terrain_;
   std::vector<EcosystemSpecies> species_;
+  std::vector<double> seedlingCrownLimit_m_;  // per species: seedlingCrownRadiusLimit
   EcosystemSettings settings_;
   LightGrid light_;
   bool lightComputed_ = false;  // the light grid holds a year's canopy

@@ -11,6 +11,15 @@ namespace {
 
 constexpr double kQuarterPi = std::numbers::pi / 4.0;
 
+// SILVA's crown diameter; fitted to trees of measurable diameter, so below 1 cm (and a
+// sapling's breast height) it is held at its value there.
+double silvaCrownDiameter(const LifeHistory& life, double dbh_m, double height_m) {
+  const double dbh_cm = std::max(1.0, 100.0 * dbh_m);
+  const double h = std::max(kBreastHeight_m, height_m);
+  const auto& a = life.crownDiameterSilva;
+  return std::exp(a[0] + a[1] * std::log(dbh_cm) + a[2] * h + a[3] * std::log(h / dbh_cm));
+}
+
 }  // namespace
 
 double stemVolume(const LifeHistory& life, double dbh_m, double height_m) {
@@ -18,14 +27,12 @@ double stemVolume(const LifeHistory& life, double dbh_m, double height_m) {
 }
 
 double crownRadiusOf(const LifeHistory& life, double dbh_m, double height_m) {
-  // The function is fitted to trees of measurable diameter: below 1 cm (and a sapling's
-  // breast height) a crown is only bounded by the plant's height.
-  const double dbh_cm = std::max(1.0, 100.0 * dbh_m);
-  const double h = std::max(kBreastHeight_m, height_m);
-  const auto& a = life.crownDiameterSilva;
-  const double diameter =
-      std::exp(a[0] + a[1] * std::log(dbh_cm) + a[2] * h + a[3] * std::log(h / dbh_cm));
-  return std::min(0.5 * diameter, 0.5 * height_m);
+  // Small plants' crowns are only bounded by their height.
+  return std::min(0.5 * silvaCrownDiameter(life, dbh_m, height_m), 0.5 * height_m);
+}
+
+double seedlingCrownRadiusLimit(const LifeHistory& life) {
+  return 0.5 * silvaCrownDiameter(life, 0.0, 0.0);
 }
 
 double maxCrownLeafAreaIndex(const LifeHistory& life) {
@@ -148,7 +155,7 @@ double agingFactor(const LifeHistory& life, double height_m, int age_years) {
   // iLand's Species::aging: relative height and age, each kept below 1, combined as the
   // harmonic mean of their distances from the maxima.
   constexpr double kBelowOne = 0.999999;
-  const double height = std::clamp(height_m / life.height_m.max, 0.0, kBelowOne);
+  const double height = std::clamp(height_m / life.height_m.max(), 0.0, kBelowOne);
   const double age = std::clamp(static_cast<double>(age_years) / life.maxAge_years, 0.0, kBelowOne);
   const double x = 1.0 - 2.0 / (1.0 / (1.0 - height) + 1.0 / (1.0 - age));
   return 1.0 / (1.0 + std::pow(x / life.aging.halfAt, life.aging.exponent));
@@ -191,15 +198,16 @@ TreeYear growTree(const LifeHistory& life, double dbh_m, double height_m, double
   const double increment =
       std::min(potentialHeightIncrement(life, height_m) * conditions.heightShare(),
                life.maxHeightDiameter * (year.dbh_m - dbh_m));
-  year.height_m = std::min(life.height_m.max, height_m + increment);
+  year.height_m = std::min(life.height_m.max(), height_m + increment);
   return year;
 }
 
 SaplingYear growSapling(const LifeHistory& life, double height_m,
                         const GrowingConditions& conditions) {
   const double share = conditions.heightShare();
-  return {std::min(life.height_m.max, height_m + potentialHeightIncrement(life, height_m) * share),
-          share < life.saplingStressThreshold};
+  return {
+      std::min(life.height_m.max(), height_m + potentialHeightIncrement(life, height_m) * share),
+      share < life.saplingStressThreshold};
 }
 
 double saplingDiameter(const LifeHistory& life, double height_m) {

@@ -25,6 +25,10 @@ double stemVolume(const LifeHistory& life, double dbh_m, double height_m);
 // Crown radius from stem diameter and height (SILVA's crown diameter function), at most half
 // the height.
 double crownRadiusOf(const LifeHistory& life, double dbh_m, double height_m);
+// Below breast height SILVA's function is held at its value for 1 cm and 1.3 m, so a
+// seedling's crown radius is min(this, half its height): crownRadiusOf's, without its
+// exp and two logs for each of millions of seedlings a year.
+double seedlingCrownRadiusLimit(const LifeHistory& life);
 // A crown's foliage: its mass (iLand's foliage allometry) and the leaf area it spreads into.
 // Leaves are built in the light they get (sun and shade leaves): from the crown's top down,
 // as the light falls by Beer's law, each layer's leaf mass per area falls from the sun

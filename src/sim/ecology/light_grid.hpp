@@ -84,7 +84,7 @@ class LightGrid {
   int columnsX_ = 0, columnsY_ = 0;
   double originEast_m_ = 0.0, originNorth_m_ = 0.0;  // south-west corner of the columns
   std::vector<float> topLight_;                      // per column
-  std::vector<double> absorbed_;  // per crown
+  std::vector<double> absorbed_;                     // per crown
   // Per column: its crowns' layers, tallest first (CSR).
   std::vector<std::size_t> columnStart_;
   std::vector<Layer> layers_;

@@ -46,12 +46,11 @@ Allometry allometry(TomlTable& life, std::string_view key) {
 }
 
 GrowthCurve heightCurve(TomlTable& life) {
-  GrowthCurve curve;
-  curve.max = life.number("max_height_m", {}, {0.1, 150.0});
-  if (!(curve.max > 0.0)) life.fail("max_height_m", "must be positive");
-  curve.rate = life.number("height_growth_rate", {}, {1e-4, 1.0});
-  curve.shape = life.number("height_growth_shape", {}, {0.3, 5.0});
-  return curve;
+  const double max = life.number("max_height_m", {}, {0.1, 150.0});
+  if (!(max > 0.0)) life.fail("max_height_m", "must be positive");
+  const double rate = life.number("height_growth_rate", {}, {1e-4, 1.0});
+  const double shape = life.number("height_growth_shape", {}, {0.3, 5.0});
+  return {max, rate, shape};
 }
 
 DispersalVector dispersalOf(TomlTable& life) {
@@ -74,7 +73,7 @@ void parseReproduction(TomlTable& life, LifeHistory& h) {
   h.litterEstablishment = life.number("litter_establishment", h.litterEstablishment, {0.0, 1.0});
   h.swardEstablishment = life.number("sward_establishment", h.swardEstablishment, {0.0, 1.0});
   h.seedlingHeight_m = life.number("seedling_height_m", h.seedlingHeight_m, {0.01, 2.0});
-  if (h.seedlingHeight_m >= h.height_m.max)
+  if (h.seedlingHeight_m >= h.height_m.max())
     life.fail("seedling_height_m", "must be below max_height_m");
   h.dispersal = dispersalOf(life);
   h.dispersalMean_m = life.number("dispersal_mean_m", {}, {0.01, 100000.0});
@@ -164,15 +163,22 @@ double Allometry::at(double dbh_cm) const {
   return a * std::pow(dbh_cm, b);
 }
 
+GrowthCurve::GrowthCurve(double max, double rate_per_year, double shape)
+    : max_(max),
+      rate_(rate_per_year),
+      shape_(shape),
+      inverseShape_(1.0 / shape),
+      yearDecay_(std::exp(-rate_per_year)) {}
+
 double GrowthCurve::at(double years) const {
   if (years <= 0.0) return 0.0;
-  return max * std::pow(1.0 - std::exp(-rate * years), shape);
+  return max_ * std::pow(1.0 - std::exp(-rate_ * years), shape_);
 }
 
 double GrowthCurve::yearAfter(double value) const {
-  if (value >= max) return max;
-  const double remaining = 1.0 - std::pow(std::max(value, 0.0) / max, 1.0 / shape);
-  return max * std::pow(1.0 - remaining * std::exp(-rate), shape);
+  if (value >= max_) return max_;
+  const double remaining = 1.0 - std::pow(std::max(value, 0.0) / max_, inverseShape_);
+  return max_ * std::pow(1.0 - remaining * yearDecay_, shape_);
 }
 
 double lightCompensation(int light) {

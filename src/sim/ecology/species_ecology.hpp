@@ -44,16 +44,21 @@ struct ToleranceCurves {
 };
 
 // Chapman-Richards growth: value(t) = max (1 - exp(-rate t))^shape.
-struct GrowthCurve {
-  double max = 1.0;
-  double rate = 0.03;  // per year
-  double shape = 1.3;
+class GrowthCurve {
+ public:
+  GrowthCurve() : GrowthCurve(1.0, 0.03, 1.3) {}
+  GrowthCurve(double max, double rate_per_year, double shape);
+  double max() const { return max_; }
   double at(double years) const;
   // The curve a year after it reached `value` (max at or above max): at(age + 1) where
   // at(age) = value, in closed form without the age, since exp(-rate (age + 1)) =
-  // (1 - (value / max)^(1 / shape)) exp(-rate). Two pows and an exp, for every plant every
-  // year, instead of a round trip through the age's three pows, two exps and a log.
+  // (1 - (value / max)^(1 / shape)) exp(-rate). Two pows, for every plant every year,
+  // instead of a round trip through the age's three pows, two exps and a log.
   double yearAfter(double value) const;
+
+ private:
+  double max_, rate_, shape_;
+  double inverseShape_, yearDecay_;  // 1 / shape and exp(-rate), worked out once
 };
 
 enum class DispersalVector { Gravity, Animal, Wind };

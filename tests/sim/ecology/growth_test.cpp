@@ -40,6 +40,12 @@ TEST(Growth, StemVolumeAndCrownFollowTheirAllometries) {
   EXPECT_LT(cd, 10.0);
   // A young plant's crown is no wider than half its height.
   EXPECT_DOUBLE_EQ(crownRadiusOf(h, 0.0, 0.8), 0.4);
+  // Below breast height the function is held at 1 cm and 1.3 m: its limit for seedlings.
+  const double limit = seedlingCrownRadiusLimit(h);
+  EXPECT_NEAR(limit,
+              0.5 * std::exp(0.5856485 - 0.003455 * 1.3 - 0.3238132 * std::log(1.3)), 1e-12);
+  for (double height : {0.05, 0.4, 0.8, 1.2, 1.29})
+    EXPECT_EQ(crownRadiusOf(h, 0.0, height), std::min(limit, 0.5 * height)) << height;
   // Without shade leaves the foliage spreads at the specific leaf area, as in iLand.
   const CrownFoliage foliage = crownFoliage(h, 0.3, 25.0, 1.0);
   EXPECT_NEAR(foliage.foliage_kg, 0.021708 * std::pow(30.0, 1.7), 1e-9);

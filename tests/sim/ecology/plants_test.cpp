@@ -45,6 +45,29 @@ TEST(Plants, RemoveDeadKeepsTheOrderOfTheLiving) {
   EXPECT_EQ(p.id, (std::vector<std::uint64_t>{10, 12, 14}));
   EXPECT_EQ(p.height_m, (std::vector<float>{0.0f, 2.0f, 4.0f}));
   p.forEachColumn([&](const auto& column) { EXPECT_EQ(column.size(), 3u); });
+  EXPECT_EQ(p.alive, (std::vector<std::uint8_t>(3, 1)));
+}
+
+TEST(Plants, RemoveDeadCompactsEveryColumnByTheSameFlags) {
+  // Compacted in place, column by column, each reading the alive flags: a column compacted
+  // by flags another column had already overwritten would come out shifted.
+  Plants p;
+  const std::size_t n = 1000;
+  p.resize(n);
+  std::vector<std::uint64_t> kept;
+  for (std::size_t i = 0; i < n; ++i) {
+    p.id[i] = i;
+    p.origin[i] = static_cast<std::uint8_t>(i % 3);
+    p.growthFactor[i] = static_cast<float>(i);
+    p.alive[i] = (i * 7919) % 5 != 0 ? 1 : 0;
+    if (p.alive[i]) kept.push_back(i);
+  }
+  p.removeDead();
+  ASSERT_EQ(p.id, kept);
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    EXPECT_EQ(p.origin[k], kept[k] % 3);
+    EXPECT_EQ(p.growthFactor[k], static_cast<float>(kept[k]));
+  }
 }
 
 }  // namespace

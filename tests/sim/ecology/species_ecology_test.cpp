@@ -150,7 +150,7 @@ slope_deg = [[10, 1], [20, 0]]
   EXPECT_DOUBLE_EQ(e.life.lightUseEfficiency, 1.5);
   EXPECT_EQ(e.life.dispersal, DispersalVector::Wind);
   EXPECT_DOUBLE_EQ(e.life.downwindBias, 0.3);
-  EXPECT_DOUBLE_EQ(e.life.height_m.max, 20.0);
+  EXPECT_DOUBLE_EQ(e.life.height_m.max(), 20.0);
   EXPECT_EQ(e.life.longDistanceFraction, 0.0);  // a plain exponential kernel by default
   EXPECT_EQ(e.life.aging.halfAt, 0.0);          // and no aging
   EXPECT_EQ(e.life.litterEstablishment, 1.0);   // seeds take on any ground by default

@@ -62,11 +62,12 @@ Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
     : terrain_(terrain),
       species_(std::move(species)),
       settings_(settings),
+      downwind_(mapDownwindOf(settings.windFrom_deg)),
       light_(terrain.grid, terrainLightOf(fields)),
       windiness_(fields.windiness),
       moisture_(fields.moisture),
       slope_deg_(fields.slope_deg),
-      seeds_(terrain.grid, livesOf(species_), mapDownwindOf(settings.windFrom_deg)),
+      seeds_(terrain.grid, livesOf(species_), downwind_),
       regenerationX_(static_cast<int>(
           std::ceil(terrain.grid.width * terrain.grid.dx_m / kRegenerationCell_m))),
       regenerationY_(static_cast<int>(
@@ -98,7 +99,7 @@ std::vector<PlantSite> Ecosystem::sitesOf(const Plants& plants) const {
 
 PlantSite Ecosystem::siteOf(const Plants& plants, std::size_t i) const {
   if (!lightComputed_) return {};
-  return plantSite(plants, i, light_, terrain_.grid, windiness_, settings_.windFrom_deg);
+  return plantSite(plants, i, light_, terrain_.grid, windiness_, downwind_);
 }
 
 std::size_t Ecosystem::cellOf(const Plants& plants, std::size_t i) const {

@@ -150,6 +150,7 @@ class Ecosystem {
   std::vector<EcosystemSpecies> species_;
   std::vector<double> seedlingCrownLimit_m_;  // per species: seedlingCrownRadiusLimit
   EcosystemSettings settings_;
+  glm::dvec2 downwind_;  // the prevailing wind's direction (mapDownwindOf)
   LightGrid light_;
   bool lightComputed_ = false;  // the light grid holds a year's canopy
   Field windiness_;             // the conditions', for the plants' sites

@@ -46,12 +46,12 @@ double windExposure(double windiness) {
 }
 
 PlantSite plantSite(const Plants& p, std::size_t i, const LightGrid& light, const Grid& grid,
-                    const Field& windiness, double windFrom_deg) {
+                    const Field& windiness, glm::dvec2 downwind) {
   if (p.height_m[i] < kShapedFromHeight_m) return {};
   const long cell = grid.cellAt(p.east_m[i], p.north_m[i]);
   const double exposure = cell < 0 ? 0.0 : windExposure(windiness[static_cast<std::size_t>(cell)]);
   PlantSite site;
-  site.wind = glm::vec2(exposure * mapDownwindOf(windFrom_deg));
+  site.wind = glm::vec2(exposure * downwind);
   site.light = glm::vec2(lightDirection(light, p.east_m[i], p.north_m[i], p.crownRadius_m[i],
                                         p.crownBase_m[i], p.height_m[i]));
   return site;
@@ -59,9 +59,10 @@ PlantSite plantSite(const Plants& p, std::size_t i, const LightGrid& light, cons
 
 std::vector<PlantSite> plantSites(const Plants& p, const LightGrid& light, const Grid& grid,
                                   const Field& windiness, double windFrom_deg) {
+  const glm::dvec2 downwind = mapDownwindOf(windFrom_deg);
   std::vector<PlantSite> sites(p.size());
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    sites[i] = plantSite(p, i, light, grid, windiness, windFrom_deg);
+    sites[i] = plantSite(p, i, light, grid, windiness, downwind);
   });
   return sites;
 }

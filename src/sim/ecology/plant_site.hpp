@@ -37,11 +37,12 @@ glm::dvec2 lightDirection(const LightGrid& light, double east_m, double north_m,
 // A site's exposure, 0..1, from its windiness (conditions/windiness.hpp).
 double windExposure(double windiness);
 
-// Plant i's site; `windiness` is the conditions' field on `grid`, and the light grid must
+// Plant i's site; `windiness` is the conditions' field on `grid`, `downwind` the prevailing
+// wind's direction (mapDownwindOf, worked out once by the caller), and the light grid must
 // have been computed this year (after a step).
 PlantSite plantSite(const Plants& plants, std::size_t i, const LightGrid& light, const Grid& grid,
-                    const Field& windiness, double windFrom_deg);
-// Each plant's site, likewise.
+                    const Field& windiness, glm::dvec2 downwind);
+// Each plant's site, likewise, with the wind blowing from `windFrom_deg`.
 std::vector<PlantSite> plantSites(const Plants& plants, const LightGrid& light, const Grid& grid,
                                   const Field& windiness, double windFrom_deg);
 

@@ -14,6 +14,7 @@ void Plants::removeDead() {
   // (a list of the kept rows would cost 8 bytes a plant; a landscape has 100 million).
   tbb::task_group columns;
   forEachColumn([&](auto& column) {
+    // The flags are read by every other column's task: they are compacted last, below.
     if (static_cast<const void*>(&column) == static_cast<const void*>(&alive)) return;
     columns.run([this, &column, kept] {
       std::size_t k = 0;

@@ -80,6 +80,7 @@ Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
     ECO_ASSERT(s.suitability.size() == terrain.grid.cellCount(),
                "species " << s.species.name << " lacks its suitability field");
     seedlingCrownLimit_m_.push_back(seedlingCrownRadiusLimit(s.ecology.life));
+    foliageLimit_.push_back(foliageLimitOf(s.ecology.life));
   }
 }
 
@@ -243,7 +244,8 @@ void Ecosystem::computeLight() {
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     if (crownOfPlant_[i] == kNoCrown) return;
     const LifeHistory& life = species_[p.species[i]].ecology.life;
-    const CrownFoliage foliage = crownFoliage(life, p.dbh_m[i], p.height_m[i], p.light[i]);
+    const CrownFoliage foliage =
+        crownFoliage(life, foliageLimit_[p.species[i]], p.dbh_m[i], p.height_m[i], p.light[i]);
     crowns_[crownOfPlant_[i]] = {p.east_m[i], p.north_m[i], std::max(p.crownRadius_m[i], 0.05f),
                                  p.height_m[i], static_cast<float>(foliage.leafArea_m2)};
     crownFoliage_kg_[crownOfPlant_[i]] = static_cast<float>(foliage.foliage_kg);
@@ -455,7 +457,12 @@ void Ecosystem::establish() {
         const double expected = seeds * life.germination * sp.suitability[terrainCell] *
                                 std::clamp(sp.ecology.lightResponse(ground), 0.0, 1.0) *
                                 seedbedEstablishment(life, seedbed);
-        if (expected <= 0.0 || rng.uniform() >= -std::expm1(-expected)) continue;
+        if (expected <= 0.0) continue;
+        // A seedling arrives with chance 1 - exp(-expected), which is below `expected`: a
+        // draw at or above that settles it without the exponential, as it does in most
+        // cells, which expect far less than a seedling.
+        const double draw = rng.uniform();
+        if (draw >= expected || draw >= -std::expm1(-expected)) continue;
         cell.species[cell.count++] = static_cast<std::uint8_t>(s);
         rows[y].push_back({static_cast<int>(s), east + (rng.uniform() - 0.5) * kRegenerationCell_m,
                            north + (rng.uniform() - 0.5) * kRegenerationCell_m});

@@ -24,6 +24,7 @@
 #include "model/species.hpp"
 #include "sim/conditions/conditions.hpp"
 #include "sim/ecology/dispersal.hpp"
+#include "sim/ecology/growth.hpp"
 #include "sim/ecology/light_grid.hpp"
 #include "sim/ecology/plant_site.hpp"
 #include "sim/ecology/plants.hpp"
@@ -149,6 +150,7 @@ class Ecosystem {
   const Terrain& terrain_;
   std::vector<EcosystemSpecies> species_;
   std::vector<double> seedlingCrownLimit_m_;  // per species: seedlingCrownRadiusLimit
+  std::vector<FoliageLimit> foliageLimit_;    // per species: foliageLimitOf
   EcosystemSettings settings_;
   glm::dvec2 downwind_;  // the prevailing wind's direction (mapDownwindOf)
   LightGrid light_;

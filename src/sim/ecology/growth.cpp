@@ -40,22 +40,32 @@ double maxCrownLeafAreaIndex(const LifeHistory& life) {
   return std::log(1.0 / std::min(1.0, leafCompensationLight(life))) / kLeafExtinction;
 }
 
+FoliageLimit foliageLimitOf(const LifeHistory& life) {
+  const double lai = maxCrownLeafAreaIndex(life);
+  return {lai, -std::expm1(-kLeafExtinction * lai)};
+}
+
 CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m, double topLight) {
+  return crownFoliage(life, foliageLimitOf(life), dbh_m, height_m, topLight);
+}
+
+CrownFoliage crownFoliage(const LifeHistory& life, const FoliageLimit& limit, double dbh_m,
+                          double height_m, double topLight) {
   const double radius = crownRadiusOf(life, dbh_m, height_m);
   const double area = std::numbers::pi * radius * radius;
   if (area <= 0.0) return {0.0, 0.0};
   const double sunMass = 1.0 / life.specificLeafArea;  // kg per m2 of sun leaves
   const double r = life.shadeLeafMassRatio;
   const double top = std::clamp(topLight, 0.0, 1.0);
-  // Foliage mass per m2 of projection down to a leaf area index L:
-  // m(L) = sunMass (r L + (1 - r) top (1 - exp(-k L)) / k), increasing and concave, so
-  // Newton's method from below (the sun leaves' area) climbs to the root without passing it.
-  auto massTo = [&](double lai) {
-    return sunMass *
-           (r * lai + (1.0 - r) * top * -std::expm1(-kLeafExtinction * lai) / kLeafExtinction);
+  // Foliage mass per m2 of projection down to a leaf area index L, whose leaves absorb
+  // 1 - exp(-k L) of the light: m(L) = sunMass (r L + (1 - r) top (1 - exp(-k L)) / k),
+  // increasing and concave, so Newton's method from below (the sun leaves' area) climbs to
+  // the root without passing it.
+  auto massTo = [&](double lai, double absorbedShare) {
+    return sunMass * (r * lai + (1.0 - r) * top * absorbedShare / kLeafExtinction);
   };
-  const double maxLai = maxCrownLeafAreaIndex(life);
-  const double maxMass = massTo(maxLai);
+  const double maxLai = limit.leafAreaIndex;
+  const double maxMass = massTo(maxLai, limit.absorbedShare);
   const double allometric_kg = life.foliage.at(100.0 * dbh_m);
   const double mass = allometric_kg / area;
   if (mass >= maxMass) return {maxLai * area, maxMass * area};
@@ -63,7 +73,7 @@ CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m
   for (int i = 0; i < 50; ++i) {
     // The layer at the current depth: its mass per m2 of leaf.
     const double slope = sunMass * leafMassShare(life, top * std::exp(-kLeafExtinction * lai));
-    const double step = (mass - massTo(lai)) / slope;
+    const double step = (mass - massTo(lai, -std::expm1(-kLeafExtinction * lai))) / slope;
     lai += step;
     if (step <= 1e-9 * lai) break;
   }

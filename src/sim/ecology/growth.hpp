@@ -47,6 +47,16 @@ struct CrownFoliage {
 // `topLight` is the light at the crown's top relative to the open (last year's).
 CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m, double topLight);
 double maxCrownLeafAreaIndex(const LifeHistory& life);
+// The deepest crown's leaf area index and the share of light its leaves absorb, 1 - exp(-k L):
+// a species' constants, which the yearly step works out once instead of a log and an expm1
+// for each crown each year.
+struct FoliageLimit {
+  double leafAreaIndex = 0.0;
+  double absorbedShare = 0.0;
+};
+FoliageLimit foliageLimitOf(const LifeHistory& life);
+CrownFoliage crownFoliage(const LifeHistory& life, const FoliageLimit& limit, double dbh_m,
+                          double height_m, double topLight);
 // Wood (stem, branches, coarse roots), kg, and its inverse.
 double woodyBiomass(const LifeHistory& life, double dbh_m);
 // The inverse starts from `guess_m` when given (the diameter before a year's growth).

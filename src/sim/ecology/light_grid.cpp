@@ -200,24 +200,32 @@ double LightGrid::heightWithSideLight(double east_m, double north_m, double reac
   const std::array<long, 4> columns{
       columnAt(east_m + reach_m, north_m), columnAt(east_m, north_m + reach_m),
       columnAt(east_m - reach_m, north_m), columnAt(east_m, north_m - reach_m)};
-  auto sideLightAt = [&](double height_m) {
+  // Walk up the four columns at once, from `from_m` through their crown tops, lowest first.
+  // A column's layers above the current height are its first ones (tallest first), up to
+  // `above`; the light there is the last of them's light below, and the next top up is that
+  // layer's. The side light never falls with height, so the first height where it suffices
+  // is the answer: one pass over the layers between the two heights, without gathering and
+  // sorting the four columns' tops.
+  std::array<const Layer*, 4> tallest{}, above{};
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    tallest[c] = layersBegin(columns[c]);
+    above[c] = std::partition_point(tallest[c], layersEnd(columns[c]),
+                                    [&](const Layer& layer) { return layer.top_m > from_m; });
+  }
+  double height = from_m;
+  for (;;) {
     double sum = 0.0;
-    for (const long column : columns) sum += lightInColumn(column, height_m);
-    return 0.25 * sum;
-  };
-  if (sideLightAt(from_m) >= light) return from_m;
-  // The side light rises with height only at the crown tops of the four columns: the first
-  // of those above `from_m` where it suffices is the answer. It never falls with height, so
-  // a binary search over the sorted tops finds that first one.
-  static thread_local std::vector<float> tops;
-  tops.clear();
-  for (const long column : columns)
-    for (const Layer* layer = layersBegin(column); layer != layersEnd(column); ++layer)
-      if (layer->top_m > from_m && layer->top_m < top_m) tops.push_back(layer->top_m);
-  std::sort(tops.begin(), tops.end());
-  const auto first = std::partition_point(tops.begin(), tops.end(),
-                                          [&](float top) { return sideLightAt(top) < light; });
-  return first == tops.end() ? top_m : *first;
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      sum += above[c] == tallest[c] ? topLight_[columns[c]] : (above[c] - 1)->lightBelow;
+    if (0.25 * sum >= light) return height;
+    float next = std::numeric_limits<float>::infinity();
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (above[c] != tallest[c]) next = std::min(next, (above[c] - 1)->top_m);
+    if (!(next < top_m)) return top_m;
+    height = next;
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      while (above[c] != tallest[c] && (above[c] - 1)->top_m <= next) --above[c];
+  }
 }
 
 }  // namespace eco

@@ -42,8 +42,7 @@ TEST(Growth, StemVolumeAndCrownFollowTheirAllometries) {
   EXPECT_DOUBLE_EQ(crownRadiusOf(h, 0.0, 0.8), 0.4);
   // Below breast height the function is held at 1 cm and 1.3 m: its limit for seedlings.
   const double limit = seedlingCrownRadiusLimit(h);
-  EXPECT_NEAR(limit,
-              0.5 * std::exp(0.5856485 - 0.003455 * 1.3 - 0.3238132 * std::log(1.3)), 1e-12);
+  EXPECT_NEAR(limit, 0.5 * std::exp(0.5856485 - 0.003455 * 1.3 - 0.3238132 * std::log(1.3)), 1e-12);
   for (double height : {0.05, 0.4, 0.8, 1.2, 1.29})
     EXPECT_EQ(crownRadiusOf(h, 0.0, height), std::min(limit, 0.5 * height)) << height;
   // Without shade leaves the foliage spreads at the specific leaf area, as in iLand.
@@ -96,6 +95,17 @@ TEST(Growth, ACrownHoldsNoMoreLeavesThanItsProjectionCanLight) {
   EXPECT_NEAR(capped.leafArea_m2, maxCrownLeafAreaIndex(h) * projection, 1e-9);
   // It holds (and pays for) only the leaves it can light.
   EXPECT_NEAR(capped.foliage_kg, capped.leafArea_m2 / h.specificLeafArea, 1e-9);
+  // The species' limit worked out once gives the same foliage, to the bit, as worked out
+  // per crown, capped or not, in any light.
+  const FoliageLimit limit = foliageLimitOf(h);
+  EXPECT_EQ(limit.leafAreaIndex, maxCrownLeafAreaIndex(h));
+  EXPECT_NEAR(limit.absorbedShare, 1.0 - leafCompensationLight(h), 1e-12);
+  for (double dbh : {0.01, 0.3, 0.8})
+    for (double top : {0.0, 0.4, 1.0}) {
+      const CrownFoliage once = crownFoliage(h, limit, dbh, 25.0, top);
+      EXPECT_EQ(once.leafArea_m2, crownFoliage(h, dbh, 25.0, top).leafArea_m2);
+      EXPECT_EQ(once.foliage_kg, crownFoliage(h, dbh, 25.0, top).foliage_kg);
+    }
   // A more efficient leaf pays its way deeper in the crown.
   LifeHistory efficient = life();
   efficient.lightUseEfficiency *= 2.0;

@@ -1,10 +1,13 @@
 #include "sim/ecology/light_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+
+#include "core/random.hpp"
 
 namespace eco {
 namespace {
@@ -68,6 +71,60 @@ TEST(LightGrid, TheTallerCrownTakesItsLightFirst) {
   // Pruning never goes back down: the search starts at the crown base it is given.
   EXPECT_DOUBLE_EQ(m.light.heightWithSideLight(25.0, 20.0, 5.0, 12.0, 30.0, 0.01), 12.0);
   EXPECT_DOUBLE_EQ(LightGrid::beyondCrown_m(2.0), 2.0 + kLightColumn_m * std::numbers::sqrt2);
+}
+
+// The side light's definition, evaluated the slow way through lightAt: the lowest of
+// `from` and the crown tops above it, below `top`, where the mean light of the four columns
+// beside the stem suffices.
+double sideLightHeightByDefinition(const LightGrid& light, const std::vector<CrownShape>& crowns,
+                                   double east, double north, double reach, double from, double top,
+                                   double wanted) {
+  auto sideLight = [&](double height) {
+    return 0.25 * (light.lightAt(east + reach, north, height) +
+                   light.lightAt(east, north + reach, height) +
+                   light.lightAt(east - reach, north, height) +
+                   light.lightAt(east, north - reach, height));
+  };
+  std::vector<double> heights{from};
+  for (const CrownShape& crown : crowns)
+    if (crown.top_m > from && crown.top_m < top) heights.push_back(crown.top_m);
+  std::sort(heights.begin(), heights.end());
+  for (double height : heights)
+    if (sideLight(height) >= wanted) return height;
+  return top;
+}
+
+TEST(LightGrid, TheSideLightHeightIsTheLowestTopWhereTheLightSuffices) {
+  // A dense, uneven canopy of 400 crowns: every stem's answer for a range of thresholds
+  // and starting heights, against the definition.
+  FiftyMetres m;
+  Rng rng(7);
+  std::vector<CrownShape> crowns;
+  for (int i = 0; i < 400; ++i)
+    crowns.push_back({static_cast<float>(50.0 * rng.uniform() - 2.5),
+                      static_cast<float>(50.0 * rng.uniform() - 2.5),
+                      static_cast<float>(0.3 + 4.0 * rng.uniform()),
+                      static_cast<float>(1.3 + 30.0 * rng.uniform()),
+                      static_cast<float>(80.0 * rng.uniform())});
+  m.light.compute(crowns);
+  int checked = 0, insideTheCrown = 0;
+  for (std::size_t i = 0; i < crowns.size(); i += 7) {
+    const CrownShape& c = crowns[i];
+    const double reach = LightGrid::beyondCrown_m(c.radius_m);
+    for (double from : {0.0, 0.3 * c.top_m, 0.7 * c.top_m})
+      for (double wanted : {0.02, 0.1, 0.3, 0.6, 0.9}) {
+        const double height =
+            m.light.heightWithSideLight(c.east_m, c.north_m, reach, from, c.top_m, wanted);
+        EXPECT_EQ(height, sideLightHeightByDefinition(m.light, crowns, c.east_m, c.north_m, reach,
+                                                      from, c.top_m, wanted))
+            << "crown " << i << ", from " << from << ", light " << wanted;
+        ++checked;
+        insideTheCrown += height > from && height < c.top_m;
+      }
+  }
+  EXPECT_EQ(checked, 58 * 15);
+  // The canopy is dense enough that many answers lie between the two ends (139 of 870).
+  EXPECT_GT(insideTheCrown, checked / 10);
 }
 
 TEST(LightGrid, AColumnNeverGivesMoreLightThanReachesIt) {

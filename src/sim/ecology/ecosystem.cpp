@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include <tbb/parallel_for.h>
 
@@ -86,6 +87,21 @@ Ecosystem::Ecosystem(const Terrain& terrain, const ConditionFields& fields,
 
 void Ecosystem::restore(EcosystemState state) {
   state_ = std::move(state);
+  // A checkpoint holds the plants in order of place; one edited by hand need not, and is put
+  // in that order here.
+  settledBelowId_ = 0;
+  settleNewcomers();
+}
+
+void Ecosystem::settleNewcomers() {
+  Plants& p = state_.plants;
+  // The newcomers were appended, so they are the last rows; their ids are the newest.
+  std::size_t first = p.size();
+  while (first > 0 && p.id[first - 1] >= settledBelowId_) --first;
+  p.settleTail(first, [&](std::size_t i) {
+    return std::pair(light_.columnAt(p.east_m[i], p.north_m[i]), p.id[i]);
+  });
+  settledBelowId_ = state_.nextId;
 }
 
 double Ecosystem::lightAt(double east_m, double north_m, double height_m) const {
@@ -489,6 +505,7 @@ void Ecosystem::step() {
   produceSeeds();
   applyMortality();
   establish();
+  settleNewcomers();
 }
 
 }  // namespace eco

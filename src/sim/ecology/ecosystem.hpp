@@ -140,6 +140,13 @@ class Ecosystem {
   void clearCellsOfRecruits();
   void produceSeeds();
   void establish();
+  // The plants are kept in order of place: of their light column (5 m, rows from the south,
+  // each from the west), and of birth within a column. Neighbours then lie near each other
+  // in memory, and so do the light columns, crowns and seed cells each year's passes read
+  // for them: in birth order each plant's came from anywhere on the map, and the valley's
+  // run took an eighth longer, waiting for memory (README, "Ecosystem simulation"). The
+  // plants appended since the last call, established or planted, are moved into that order.
+  void settleNewcomers();
   std::size_t addPlant(int species, double east_m, double north_m);
   // The regeneration cells: 2 m squares from the terrain grid's south-west corner.
   glm::dvec2 regenerationOrigin() const;
@@ -160,6 +167,7 @@ class Ecosystem {
   SeedMap seeds_;
   int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;
+  std::uint64_t settledBelowId_ = 0;         // the plants below this id are in order of place
   std::vector<CrownShape> crowns_;           // this year's, of the trees
   std::vector<float> crownFoliage_kg_;       // per crown: the foliage its leaf area holds
   std::vector<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown

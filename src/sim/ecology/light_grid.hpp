@@ -61,6 +61,9 @@ class LightGrid {
   // far corner is its side times sqrt 2 from its near side.
   static double beyondCrown_m(double crownRadius_m);
 
+  // The column holding a map position (clamped to the map), numbered row by row from the
+  // south-west corner.
+  long columnAt(double east_m, double north_m) const;
   int columnsX() const { return columnsX_; }
   int columnsY() const { return columnsY_; }
 
@@ -75,7 +78,6 @@ class LightGrid {
     float lightBelow;
   };
   void footprint(const CrownShape& crown, std::vector<Footprint>& out) const;
-  long columnAt(double east_m, double north_m) const;
   double lightInColumn(long column, double height_m) const;
   // The column's profile, tallest crown first.
   const Layer* layersBegin(long column) const { return layers_.data() + columnStart_[column]; }

@@ -1,6 +1,7 @@
 #include "sim/ecology/plants.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 #include <tbb/task_group.h>
 
@@ -25,6 +26,24 @@ void Plants::removeDead() {
   });
   columns.wait();
   alive.assign(kept, 1);
+}
+
+void Plants::mergeTail(std::size_t first, const std::vector<std::uint32_t>& tail,
+                       const std::vector<bool>& fromTail) {
+  tbb::task_group columns;
+  forEachColumn([&](auto& column) {
+    columns.run([&column, first, &tail, &fromTail] {
+      using Value = typename std::decay_t<decltype(column)>::value_type;
+      std::vector<Value> moved(tail.size());
+      for (std::size_t j = 0; j < tail.size(); ++j) moved[j] = column[tail[j]];
+      // From the end: a row before the tail only moves towards the end, so each is read
+      // before its place is written.
+      std::size_t before = first, after = tail.size();
+      for (std::size_t k = column.size(); k-- > 0;)
+        column[k] = fromTail[k] ? moved[--after] : column[--before];
+    });
+  });
+  columns.wait();
 }
 
 }  // namespace eco

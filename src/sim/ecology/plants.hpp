@@ -1,10 +1,16 @@
 // The plants of an ecosystem as parallel arrays (DESIGN.md): one column per attribute, one
-// row per plant, kept in order of birth so that every pass over them is deterministic.
+// row per plant, kept in a deterministic order so that every pass over them is (the
+// ecosystem keeps them in order of place, Ecosystem::settleNewcomers).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <numeric>
 #include <vector>
+
+#include "core/error.hpp"
 
 namespace eco {
 
@@ -51,8 +57,18 @@ struct Plants {
   }
   // Drops the rows whose alive flag is 0, keeping the order of the others.
   void removeDead();
+  // The rows before `first` are in order of key(row); moves the rows from `first` on among
+  // them, into the same order, each after the rows of its key already there and, among
+  // themselves, in their present order (a stable merge).
+  template <typename Key>
+  void settleTail(std::size_t first, Key&& key);
 
  private:
+  // Moves the rows `tail` (the rows from `first` on, in their new order) among the rows
+  // before them: row k of the result is the next of `tail` where fromTail[k], else the next
+  // of the rows before `first`.
+  void mergeTail(std::size_t first, const std::vector<std::uint32_t>& tail,
+                 const std::vector<bool>& fromTail);
   // Calls f with the same column of each of `p...`, column by column.
   template <typename F, typename... Self>
   static void visitColumns(F&& f, Self&... p) {
@@ -61,5 +77,31 @@ struct Plants {
         f(p.light...), f(p.growthFactor...), f(p.stressYears...), f(p.origin...), f(p.alive...);
   }
 };
+
+template <typename Key>
+void Plants::settleTail(std::size_t first, Key&& key) {
+  const std::size_t n = size();
+  if (first >= n) return;
+  ECO_ASSERT(n <= std::numeric_limits<std::uint32_t>::max(), "more plants than 32 bits index");
+  std::vector<std::uint32_t> tail(n - first);
+  std::iota(tail.begin(), tail.end(), static_cast<std::uint32_t>(first));
+  auto byKey = [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); };
+  // A tail already in order (the year's seedlings come row by row; a checkpoint read back
+  // is in order) is checked in one pass, not sorted.
+  if (std::is_sorted(tail.begin(), tail.end(), byKey)) {
+    if (first == 0 || !(key(first) < key(first - 1))) return;
+  } else {
+    std::stable_sort(tail.begin(), tail.end(), byKey);
+  }
+  // Where each row of the merged order comes from, one bit a row (a landscape has 100
+  // million): on equal keys the rows before the tail come first.
+  std::vector<bool> fromTail(n);
+  std::size_t before = 0, after = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    fromTail[k] = after < tail.size() && (before == first || key(tail[after]) < key(before));
+    fromTail[k] ? ++after : ++before;
+  }
+  mergeTail(first, tail, fromTail);
+}
 
 }  // namespace eco

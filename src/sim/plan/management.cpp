@@ -155,10 +155,13 @@ void Management::thinAtEndOf(int year, PlanYear& done) {
       if (t.thinned[p.species[i]]) candidates.push_back(i);
     }
     if (t.rule->method != ThinningMethod::RemoveSpecies && t.area_ha > 0.0) {
-      // Smallest (or largest) first; ties in the order of birth.
+      // Smallest (or largest) first; ties in the order of birth (the plants are in order of
+      // place).
       const bool fromBelow = t.rule->method == ThinningMethod::FromBelow;
-      std::stable_sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
-        return fromBelow ? p.dbh_m[a] < p.dbh_m[b] : p.dbh_m[a] > p.dbh_m[b];
+      std::sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
+        if (p.dbh_m[a] != p.dbh_m[b])
+          return fromBelow ? p.dbh_m[a] < p.dbh_m[b] : p.dbh_m[a] > p.dbh_m[b];
+        return p.id[a] < p.id[b];
       });
       const double target =
           (byStems ? *t.rule->targetStemsPerHa : *t.rule->targetBasalArea_m2PerHa) * t.area_ha;

@@ -1,5 +1,6 @@
 #include "sim/run/checkpoint.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "core/atomic_file.hpp"
 #include "core/binary_io.hpp"
@@ -184,11 +186,20 @@ void checkCheckpoint(const Checkpoint& checkpoint, const CheckpointLimits& limit
         fmt::format("plant {} (id {}): {}", i + 1, p.id[i], *plantFault(p, i, state.year, limits)));
   }
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.id[i] == 0 || p.id[i] >= state.nextId || (i > 0 && p.id[i] <= p.id[i - 1]))
-      throw refuse(
-          fmt::format("plant {} has id {}: ids must rise in order of birth, from 1 to "
-                      "below the next id {}",
-                      i + 1, p.id[i], state.nextId));
+    if (p.id[i] == 0 || p.id[i] >= state.nextId)
+      throw refuse(fmt::format("plant {} has id {}: ids run from 1 to below the next id {}", i + 1,
+                               p.id[i], state.nextId));
+  // The plants are in order of place, not of id: a sorted copy shows a repeated id.
+  std::vector<std::uint64_t> ids = p.id;
+  tbb::parallel_sort(ids.begin(), ids.end());
+  const auto repeated = std::adjacent_find(ids.begin(), ids.end());
+  if (repeated != ids.end()) {
+    const std::uint64_t id = *repeated;
+    const auto firstRow = std::find(p.id.begin(), p.id.end(), id);
+    const auto secondRow = std::find(firstRow + 1, p.id.end(), id);
+    throw refuse(fmt::format("plants {} and {} have the same id {}", firstRow - p.id.begin() + 1,
+                             secondRow - p.id.begin() + 1, id));
+  }
   for (std::size_t r = 0; r < checkpoint.stats.size(); ++r)
     if (auto fault = statsFault(checkpoint.stats[r], state.year, limits.speciesCount))
       throw refuse(fmt::format("statistics row {}: {}", r + 1, *fault));

@@ -2,12 +2,15 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include "ecosystem_support.hpp"
 #include "sim/ecology/growth.hpp"
+#include "sim/ecology/light_grid.hpp"
 #include "sim/ecology/stand_measures.hpp"
 #include "sim/ecology/suitability.hpp"
 #include "terrain_support.hpp"
@@ -446,6 +449,40 @@ TEST(Ecosystem, SamePlantsWithOneAndTwoThreads) {
   EXPECT_EQ(one.plants.dbh_m, two.plants.dbh_m);
   EXPECT_EQ(one.plants.crownBase_m, two.plants.crownBase_m);
   EXPECT_EQ(one.plants.growthFactor, two.plants.growthFactor);
+}
+
+// The plants are kept in order of their light column, and of birth within one, however they
+// came: planted anywhere, established, or read back from a checkpoint in another order.
+TEST(Ecosystem, ThePlantsAreKeptInOrderOfPlace) {
+  const Terrain terrain = flat(24, 10.0);
+  const ConditionFields fields = test::uniformConditions(terrain);
+  Ecosystem ecosystem(terrain, fields, {test::inEcosystem(test::testSpecies("a", {}), fields, 5.0)},
+                      settings());
+  for (const auto& [east, north] :
+       std::vector<std::pair<double, double>>{{200, 200}, {10, 10}, {120, 30}, {11, 11}})
+    ecosystem.plant(0, east, north, 20);
+  const LightGrid columns(terrain.grid, Field(terrain.grid.cellCount(), 1.0f));
+  auto inOrder = [&](const Plants& p) {
+    for (std::size_t i = 1; i < p.size(); ++i) {
+      const long before = columns.columnAt(p.east_m[i - 1], p.north_m[i - 1]);
+      const long here = columns.columnAt(p.east_m[i], p.north_m[i]);
+      if (before > here || (before == here && p.id[i - 1] >= p.id[i])) return false;
+    }
+    return true;
+  };
+  for (int year = 0; year < 30; ++year) {
+    ecosystem.step();
+    ASSERT_TRUE(inOrder(ecosystem.plants())) << "year " << ecosystem.year();
+  }
+  ASSERT_GT(ecosystem.plants().size(), 500u);
+  // A state in reverse order is restored in order of place, as it was.
+  const EcosystemState kept = ecosystem.state();
+  EcosystemState reversed = kept;
+  reversed.plants = {};
+  for (std::size_t i = kept.plants.size(); i-- > 0;) reversed.plants.appendRow(kept.plants, i);
+  ecosystem.restore(std::move(reversed));
+  EXPECT_EQ(ecosystem.plants().id, kept.plants.id);
+  EXPECT_EQ(ecosystem.plants().height_m, kept.plants.height_m);
 }
 
 // Basal area, stems and stand density index of a planted beech plot do not depend on the

@@ -70,5 +70,35 @@ TEST(Plants, RemoveDeadCompactsEveryColumnByTheSameFlags) {
   }
 }
 
+TEST(Plants, SettleTailMergesTheNewRowsStablyByKey) {
+  // Rows 0-5 are in order of key (kept in east_m), rows 6-10 are not; on equal keys the
+  // settled rows come first, then the new ones in their present order.
+  const std::vector<int> keys{1, 2, 2, 4, 7, 9, 4, 0, 9, 2, 4};
+  Plants p;
+  p.resize(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    p.id[i] = 100 + i;
+    p.east_m[i] = static_cast<float>(keys[i]);
+    p.age_years[i] = static_cast<int>(i);
+    p.stressYears[i] = static_cast<std::uint16_t>(i);
+  }
+  p.settleTail(6, [&](std::size_t i) { return p.east_m[i]; });
+  EXPECT_EQ(p.id,
+            (std::vector<std::uint64_t>{107, 100, 101, 102, 109, 103, 106, 110, 104, 105, 108}));
+  // Every column moved with its row.
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto row = static_cast<std::size_t>(p.id[k] - 100);
+    EXPECT_EQ(p.east_m[k], static_cast<float>(keys[row]));
+    EXPECT_EQ(p.age_years[k], static_cast<int>(row));
+    EXPECT_EQ(p.stressYears[k], row);
+  }
+  // Settled again with nothing new, or with a tail already in place, nothing moves.
+  const std::vector<std::uint64_t> settled = p.id;
+  p.settleTail(p.size(), [&](std::size_t i) { return p.east_m[i]; });
+  p.settleTail(8, [&](std::size_t i) { return p.east_m[i]; });
+  p.settleTail(0, [&](std::size_t i) { return p.east_m[i]; });
+  EXPECT_EQ(p.id, settled);
+}
+
 }  // namespace
 }  // namespace eco

@@ -165,10 +165,17 @@ TEST(Checkpoint, CraftedValuesAreRefused) {
               c.state.plants.species[0] = 7;
             }).find("species index 7, but the scenario has 1 species"),
             std::string::npos);
-  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.id[2] = 5; }).find("ids must rise"),
+  EXPECT_NE(crafted([](Checkpoint& c) {
+              c.state.plants.id[2] = 5;
+            }).find("plants 1 and 3 have the same id 5"),
             std::string::npos);
-  EXPECT_NE(crafted([](Checkpoint& c) { c.state.nextId = 6; }).find("ids must rise"),
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.id[1] = 0; }).find("plant 2 has id 0"),
             std::string::npos);
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.nextId = 6; }).find("below the next id 6"),
+            std::string::npos);
+  // The plants are in order of place: ids out of order are no fault.
+  EXPECT_EQ(crafted([](Checkpoint& c) { std::swap(c.state.plants.id[0], c.state.plants.id[2]); }),
+            "no error");
   EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.vigor[0] = 2.0f; }).find("vigor 2"),
             std::string::npos);
   EXPECT_NE(

@@ -1,6 +1,6 @@
 // The plants of an ecosystem as parallel arrays (DESIGN.md): one column per attribute, one
-// row per plant, kept in a deterministic order so that every pass over them is (the
-// ecosystem keeps them in order of place, Ecosystem::settleNewcomers).
+// row per plant, in an order that only the run decides, so that every pass over them is
+// deterministic (the ecosystem keeps them in order of place: Ecosystem::settleNewcomers).
 #pragma once
 
 #include <algorithm>

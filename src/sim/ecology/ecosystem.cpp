@@ -250,10 +250,10 @@ bool Ecosystem::addSeedSource(const std::function<bool(glm::dvec2)>& covered, do
 
 void Ecosystem::computeLight() {
   const Plants& p = state_.plants;
-  crownOfPlant_.assign(p.size(), kNoCrown);
+  crownOfPlant_.resize(p.size());
   std::uint32_t crowns = 0;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.height_m[i] >= kBreastHeight_m) crownOfPlant_[i] = crowns++;
+    crownOfPlant_[i] = p.height_m[i] >= kBreastHeight_m ? crowns++ : kNoCrown;
   crowns_.resize(crowns);
   crownFoliage_kg_.resize(crowns);
   // Each crown spreads its foliage as last year's light at its top built the leaves.
@@ -399,14 +399,11 @@ void Ecosystem::clearCellsOfRecruits() {
   Plants& p = state_.plants;
   // The regeneration cells where a plant became a tree this year, as one flag a cell: a
   // lookup per young plant, where a sorted list of cells cost a binary search.
-  std::vector<std::uint8_t> cleared;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!recruited_[i]) continue;
-    if (cleared.empty())
-      cleared.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
-    cleared[regenerationCellOf(p.east_m[i], p.north_m[i])] = 1;
-  }
-  if (cleared.empty()) return;
+  if (std::find(recruited_.begin(), recruited_.end(), 1) == recruited_.end()) return;
+  std::vector<std::uint8_t>& cleared = clearedCells_;
+  cleared.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (recruited_[i]) cleared[regenerationCellOf(p.east_m[i], p.north_m[i])] = 1;
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     if (p.height_m[i] < kRegenerationHeight_m &&
         p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::Seeded) &&
@@ -418,16 +415,8 @@ void Ecosystem::clearCellsOfRecruits() {
 void Ecosystem::establish() {
   const Plants& p = state_.plants;
   const Grid& g = terrain_.grid;
-  // What each regeneration cell holds in its sapling layer.
-  struct YoungPlants {
-    std::uint8_t count = 0;
-    bool closed = false;  // one of them has passed breast height
-    std::array<std::uint8_t, kYoungPlantsPerCell> species{};
-    bool holds(std::size_t s) const {
-      return std::find(species.begin(), species.begin() + count, s) != species.begin() + count;
-    }
-  };
-  std::vector<YoungPlants> young(static_cast<std::size_t>(regenerationX_) * regenerationY_);
+  std::vector<YoungPlants>& young = youngPlants_;
+  young.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, YoungPlants{});
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.height_m[i] >= kRegenerationHeight_m) continue;
     YoungPlants& cell = young[regenerationCellOf(p.east_m[i], p.north_m[i])];

@@ -14,6 +14,8 @@
 // pass keeps the plants' order, so a run gives the same plants whatever the thread count.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -167,16 +169,28 @@ class Ecosystem {
   SeedMap seeds_;
   int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;
-  std::uint64_t settledBelowId_ = 0;         // the plants below this id are in order of place
-  std::vector<CrownShape> crowns_;           // this year's, of the trees
-  std::vector<float> crownFoliage_kg_;       // per crown: the foliage its leaf area holds
-  std::vector<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown
+  std::uint64_t settledBelowId_ = 0;    // the plants below this id are in order of place
+  std::vector<CrownShape> crowns_;      // this year's, of the trees
+  std::vector<float> crownFoliage_kg_;  // per crown: the foliage its leaf area holds
+  Buffer<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown
   static constexpr std::uint32_t kNoCrown = ~std::uint32_t{0};
   std::vector<float> carbonDeficit_;     // per crown, this year's
   std::vector<std::uint8_t> recruited_;  // per plant: grew out of the sapling layer this year
   std::vector<int> born_, died_, plantedDied_;
   std::function<bool(glm::dvec2)> isOpen_;
   std::vector<std::uint8_t> openCell_;  // per regeneration cell: its centre is kept open
+  // What a regeneration cell holds in its sapling layer (establish); kept from year to year,
+  // as a landscape has tens of millions of cells.
+  struct YoungPlants {
+    std::uint8_t count = 0;
+    bool closed = false;  // one of them has passed breast height
+    std::array<std::uint8_t, kYoungPlantsPerCell> species{};
+    bool holds(std::size_t s) const {
+      return std::find(species.begin(), species.begin() + count, s) != species.begin() + count;
+    }
+  };
+  std::vector<YoungPlants> youngPlants_;    // per regeneration cell
+  std::vector<std::uint8_t> clearedCells_;  // per regeneration cell (clearCellsOfRecruits)
   struct SeedSourceForest {
     int region;  // SeedMap's
     double cover;

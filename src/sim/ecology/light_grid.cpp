@@ -101,66 +101,67 @@ void LightGrid::footprint(const CrownShape& crown, std::vector<Footprint>& out) 
 
 void LightGrid::compute(const std::vector<CrownShape>& crowns) {
   const std::size_t n = crowns.size();
-  // Each crown's footprint, in crown order (CSR): count, then fill. Kept only while the
-  // light is worked out, and indexed in 32 bits: a landscape has tens of millions of crowns.
-  std::vector<std::uint32_t> crownStart(n + 1, 0);
+  // Each crown's footprint, in crown order (CSR): count, then fill.
+  crownStart_.resize(n + 1);
+  crownStart_[0] = 0;
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     thread_local std::vector<Footprint> columns;
     footprint(crowns[i], columns);
-    crownStart[i + 1] = static_cast<std::uint32_t>(columns.size());
+    crownStart_[i + 1] = static_cast<std::uint32_t>(columns.size());
   });
   std::size_t entryCount = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    entryCount += crownStart[i + 1];
+    entryCount += crownStart_[i + 1];
     ECO_ASSERT(entryCount <= std::numeric_limits<std::uint32_t>::max(),
                "more crown footprint entries than 32 bits index");
-    crownStart[i + 1] = static_cast<std::uint32_t>(entryCount);
+    crownStart_[i + 1] = static_cast<std::uint32_t>(entryCount);
   }
-  std::vector<Footprint> entries(entryCount);
-  std::vector<std::uint32_t> entryCrown(entryCount);
+  entries_.resize(entryCount);
+  entryCrown_.resize(entryCount);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     thread_local std::vector<Footprint> columns;
     footprint(crowns[i], columns);
-    std::copy(columns.begin(), columns.end(), entries.begin() + crownStart[i]);
-    std::fill(entryCrown.begin() + crownStart[i], entryCrown.begin() + crownStart[i + 1],
+    std::copy(columns.begin(), columns.end(), entries_.begin() + crownStart_[i]);
+    std::fill(entryCrown_.begin() + crownStart_[i], entryCrown_.begin() + crownStart_[i + 1],
               static_cast<std::uint32_t>(i));
   });
 
   // Each column's entries, tallest crown first (ties: the earlier crown).
   const std::size_t columns = topLight_.size();
   columnStart_.assign(columns + 1, 0);
-  for (const Footprint& f : entries) ++columnStart_[f.column + 1];
+  for (const Footprint& f : entries_) ++columnStart_[f.column + 1];
   for (std::size_t c = 0; c < columns; ++c) columnStart_[c + 1] += columnStart_[c];
-  std::vector<std::uint32_t> order(entryCount);
+  columnOrder_.resize(entryCount);
   {
     std::vector<std::size_t> next(columnStart_.begin(), columnStart_.end() - 1);
     for (std::size_t e = 0; e < entryCount; ++e)
-      order[next[entries[e].column]++] = static_cast<std::uint32_t>(e);
+      columnOrder_[next[entries_[e].column]++] = static_cast<std::uint32_t>(e);
   }
-  std::vector<double> entryAbsorbed(entryCount, 0.0);
+  entryAbsorbed_.resize(entryCount);
   layers_.resize(entryCount);
   tbb::parallel_for(std::size_t{0}, columns, [&](std::size_t c) {
-    const auto first = order.begin() + static_cast<std::ptrdiff_t>(columnStart_[c]);
-    const auto last = order.begin() + static_cast<std::ptrdiff_t>(columnStart_[c + 1]);
+    const auto first = columnOrder_.begin() + static_cast<std::ptrdiff_t>(columnStart_[c]);
+    const auto last = columnOrder_.begin() + static_cast<std::ptrdiff_t>(columnStart_[c + 1]);
     std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
-      const float ta = crowns[entryCrown[a]].top_m, tb = crowns[entryCrown[b]].top_m;
-      return ta != tb ? ta > tb : entryCrown[a] < entryCrown[b];
+      const float ta = crowns[entryCrown_[a]].top_m, tb = crowns[entryCrown_[b]].top_m;
+      return ta != tb ? ta > tb : entryCrown_[a] < entryCrown_[b];
     });
     double light = topLight_[c];
     for (auto it = first; it != last; ++it) {
-      const CrownShape& crown = crowns[entryCrown[*it]];
-      const double area = std::min(kColumnArea_m2, crownArea(crown) * entries[*it].weight);
+      const CrownShape& crown = crowns[entryCrown_[*it]];
+      const double area = std::min(kColumnArea_m2, crownArea(crown) * entries_[*it].weight);
       const double taken = area * light * absorbedShare(crown);
-      entryAbsorbed[*it] = taken;
+      entryAbsorbed_[*it] = taken;
       light = std::max(0.0, light - taken / kColumnArea_m2);
       layers_[columnStart_[c] + static_cast<std::size_t>(it - first)] = {crown.top_m,
                                                                          static_cast<float>(light)};
     }
   });
-  absorbed_.assign(n, 0.0);
+  absorbed_.resize(n);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    for (std::size_t e = crownStart[i]; e < crownStart[i + 1]; ++e)
-      absorbed_[i] += entryAbsorbed[e];
+    double sum = 0.0;
+    for (std::size_t e = crownStart_[i]; e < crownStart_[i + 1]; ++e) sum += entryAbsorbed_[e];
+    absorbed_[i] = sum;
   });
 }
 

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/buffer.hpp"
 #include "sim/grid.hpp"
 
 namespace eco {
@@ -86,10 +87,21 @@ class LightGrid {
   int columnsX_ = 0, columnsY_ = 0;
   double originEast_m_ = 0.0, originNorth_m_ = 0.0;  // south-west corner of the columns
   std::vector<float> topLight_;                      // per column
-  std::vector<double> absorbed_;                     // per crown
+  Buffer<double> absorbed_;                          // per crown
   // Per column: its crowns' layers, tallest first (CSR).
   std::vector<std::size_t> columnStart_;
-  std::vector<Layer> layers_;
+  Buffer<Layer> layers_;
+  // compute()'s working arrays, kept from one year to the next: at a landscape's scale they
+  // hold gigabytes, which, allocated afresh each year, the kernel zeroed page by page and
+  // the vectors zeroed again (half a 10,000 ha run's time). Each is written before it is
+  // read. Per crown: where its footprint starts (32 bits: a landscape has tens of millions
+  // of crowns). Per footprint entry, in crown order: the column and share, the crown, and
+  // the light it takes; and the entries in column order.
+  Buffer<std::uint32_t> crownStart_;
+  Buffer<Footprint> entries_;
+  Buffer<std::uint32_t> entryCrown_;
+  Buffer<double> entryAbsorbed_;
+  Buffer<std::uint32_t> columnOrder_;
 };
 
 }  // namespace eco

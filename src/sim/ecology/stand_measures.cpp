@@ -1,8 +1,10 @@
 #include "sim/ecology/stand_measures.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 
 #include <tbb/parallel_for.h>
 
@@ -36,27 +38,41 @@ std::vector<StandMeasures> measureStands(const Plants& p,
                                          double area_ha) {
   const std::size_t all = species.size();
   std::vector<StandMeasures> measures(all + 1);
+  // The dominant height's trees are looked for only in the height classes that hold them:
+  // a landscape's 100 million plants are mostly seedlings, and a list of every height cost
+  // gigabytes a year.
+  constexpr float kHeightClass_m = 0.5f;
+  constexpr int kHeightClasses = 256;  // the last holds every plant taller than 127.5 m
+  auto classOf = [](float height_m) {
+    return std::clamp(static_cast<int>(height_m / kHeightClass_m), 0, kHeightClasses - 1);
+  };
   // Each species, and all of them (the last group), side by side; each sums in plant order.
   tbb::parallel_for(std::size_t{0}, all + 1, [&](std::size_t group) {
+    auto inGroup = [&](std::size_t i) { return group == all || p.species[i] == group; };
     StandTally tally;
-    std::vector<float> h;
+    std::array<std::size_t, kHeightClasses> perClass{};
     for (std::size_t i = 0; i < p.size(); ++i) {
-      if (group != all && p.species[i] != group) continue;
-      h.push_back(p.height_m[i]);
+      if (!inGroup(i)) continue;
+      ++perClass[classOf(p.height_m[i])];
       tally.add(p.dbh_m[i], p.height_m[i], species[p.species[i]].ecology.life.formFactor);
     }
     StandMeasures& m = measures[group];
     m = tally.perHectare(area_ha);
     // The 100 tallest per hectare (all of them on a smaller stand).
+    const std::size_t plants = std::accumulate(perClass.begin(), perClass.end(), std::size_t{0});
     const std::size_t tallest =
-        std::min(h.size(), static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
-    if (tallest > 0 && area_ha > 0.0) {
-      std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(tallest - 1), h.end(),
-                       std::greater<>());
-      double sum = 0.0;
-      for (std::size_t k = 0; k < tallest; ++k) sum += h[k];
-      m.dominantHeight_m = sum / static_cast<double>(tallest);
-    }
+        std::min(plants, static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
+    if (tallest == 0 || area_ha <= 0.0) return;
+    int lowest = kHeightClasses - 1;
+    for (std::size_t above = perClass[lowest]; above < tallest;) above += perClass[--lowest];
+    std::vector<float> h;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (inGroup(i) && classOf(p.height_m[i]) >= lowest) h.push_back(p.height_m[i]);
+    std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(tallest - 1), h.end(),
+                     std::greater<>());
+    double sum = 0.0;
+    for (std::size_t k = 0; k < tallest; ++k) sum += h[k];
+    m.dominantHeight_m = sum / static_cast<double>(tallest);
   });
   return measures;
 }

@@ -174,5 +174,39 @@ TEST(LightGrid, TheOrderOfTheCrownsAndTheThreadCountDoNotMatter) {
   for (std::size_t i = 0; i < crowns.size(); ++i) EXPECT_EQ(m.light.absorbed(i), forward[i]);
 }
 
+TEST(LightGrid, AGridUsedYearAfterYearAnswersAsAFreshOne) {
+  // compute() keeps its working arrays from one call to the next: whatever a year with more
+  // or fewer crowns left in them must not reach the next year's light.
+  auto canopy = [](int count, int seed) {
+    std::vector<CrownShape> crowns;
+    Rng rng(static_cast<std::uint64_t>(seed));
+    for (int i = 0; i < count; ++i)
+      crowns.push_back({static_cast<float>(47.0 * rng.uniform()),
+                        static_cast<float>(47.0 * rng.uniform()),
+                        static_cast<float>(0.3 + 6.0 * rng.uniform()),
+                        static_cast<float>(1.5 + 25.0 * rng.uniform()),
+                        static_cast<float>(200.0 * rng.uniform())});
+    return crowns;
+  };
+  FiftyMetres used;
+  for (const auto& [count, seed] : {std::pair{400, 1}, std::pair{25, 2}, std::pair{900, 3}}) {
+    const std::vector<CrownShape> crowns = canopy(count, seed);
+    used.light.compute(crowns);
+    FiftyMetres fresh;
+    fresh.light.compute(crowns);
+    for (std::size_t i = 0; i < crowns.size(); ++i)
+      ASSERT_EQ(used.light.absorbed(i), fresh.light.absorbed(i)) << "crown " << i;
+    for (double east = 0.0; east < 50.0; east += 3.7)
+      for (double north = 0.0; north < 50.0; north += 4.1) {
+        ASSERT_EQ(used.light.groundLightAt(east, north), fresh.light.groundLightAt(east, north));
+        for (double height : {0.5, 4.0, 12.0, 30.0})
+          ASSERT_EQ(used.light.lightAt(east, north, height),
+                    fresh.light.lightAt(east, north, height));
+        ASSERT_EQ(used.light.heightWithSideLight(east, north, 5.0, 1.0, 20.0, 0.3),
+                  fresh.light.heightWithSideLight(east, north, 5.0, 1.0, 20.0, 0.3));
+      }
+  }
+}
+
 }  // namespace
 }  // namespace eco

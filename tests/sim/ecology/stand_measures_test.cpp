@@ -1,10 +1,12 @@
 #include "sim/ecology/stand_measures.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
+#include "core/random.hpp"
 #include "ecosystem_support.hpp"
 
 namespace eco {
@@ -56,6 +58,41 @@ TEST(StandMeasures, DominantHeightIsTheMeanOfTheHundredTallestPerHectare) {
   for (int i = 0; i < 400; ++i) addTree(p, 0, 1.0f * i, 0, 0.2f, static_cast<float>(i % 40));
   // One hectare: the 100 tallest are ten each of 30..39 m.
   EXPECT_NEAR(measureStands(p, species, 1.0).back().dominantHeight_m, 34.5, 1e-9);
+}
+
+TEST(StandMeasures, DominantHeightAgreesWithASortOfEveryHeight) {
+  // The tallest are looked for in the top height classes only; whatever stand size puts the
+  // hundredth per hectare, a sort of every height gives the same mean.
+  const std::vector<EcosystemSpecies> species = {test::shippedSpecies("beech"),
+                                                 test::shippedSpecies("pine")};
+  Plants p;
+  Rng rng(7);
+  for (int i = 0; i < 5000; ++i) {
+    // Mostly seedlings, a canopy around 30 m with many in one class, and a few giants taller
+    // than the last class's lower edge.
+    const double pick = rng.uniform();
+    const double height = pick < 0.7    ? 0.1 + 1.2 * rng.uniform()
+                          : pick < 0.8  ? 30.0 + 0.2 * rng.uniform()
+                          : pick < 0.99 ? 1.3 + 40.0 * rng.uniform()
+                                        : 120.0 + 30.0 * rng.uniform();
+    addTree(p, i % 3 == 0 ? 1 : 0, 0.0f, 0.0f, height >= 1.3 ? 0.2f : 0.0f,
+            static_cast<float>(height));
+  }
+  for (const double area_ha : {0.01, 0.5, 2.0, 7.3, 30.0, 60.0}) {
+    const std::vector<StandMeasures> measures = measureStands(p, species, area_ha);
+    for (std::size_t group = 0; group < measures.size(); ++group) {
+      std::vector<float> heights;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (group == species.size() || p.species[i] == group) heights.push_back(p.height_m[i]);
+      std::sort(heights.begin(), heights.end(), std::greater<>());
+      const std::size_t tallest =
+          std::min(heights.size(), static_cast<std::size_t>(std::round(100.0 * area_ha)));
+      double sum = 0.0;
+      for (std::size_t k = 0; k < tallest; ++k) sum += heights[k];
+      EXPECT_NEAR(measures[group].dominantHeight_m, sum / static_cast<double>(tallest), 1e-9)
+          << area_ha << " ha, group " << group;
+    }
+  }
 }
 
 TEST(StandMeasures, TheDensestBlockIsFoundWhereverItLies) {

@@ -1,0 +1,33 @@
+#include "core/buffer.hpp"
+
+#include <cstdint>
+
+#include <gtest/gtest.h>
+
+namespace eco {
+namespace {
+
+TEST(Buffer, KeepsWhatItHoldsAsAVectorDoes) {
+  Buffer<std::uint32_t> buffer;
+  for (std::uint32_t i = 0; i < 1000; ++i) buffer.push_back(i * 3);
+  buffer.resize(1200);  // the new values are left to be written
+  buffer.resize(10);
+  ASSERT_EQ(buffer.size(), 10u);
+  for (std::uint32_t i = 0; i < 10; ++i) EXPECT_EQ(buffer[i], i * 3);
+  const Buffer<std::uint32_t> copy = buffer;
+  EXPECT_EQ(copy, buffer);
+}
+
+TEST(Buffer, AWorkingBufferThatShrinksAndGrowsBackKeepsItsStorage) {
+  // What the simulation's working arrays rely on, kept from year to year: a smaller year
+  // and a larger one within the room already taken allocate nothing.
+  Buffer<double> buffer(800);
+  const double* storage = buffer.data();
+  buffer.resize(100);
+  buffer.resize(800);
+  EXPECT_EQ(buffer.data(), storage);
+  EXPECT_EQ(buffer.size(), 800u);
+}
+
+}  // namespace
+}  // namespace eco

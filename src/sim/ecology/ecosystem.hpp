@@ -23,6 +23,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/buffer.hpp"
 #include "model/species.hpp"
 #include "sim/conditions/conditions.hpp"
 #include "sim/ecology/dispersal.hpp"

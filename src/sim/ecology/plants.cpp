@@ -29,18 +29,23 @@ void Plants::removeDead() {
 }
 
 void Plants::mergeTail(std::size_t first, const std::vector<std::uint32_t>& tail,
-                       const std::vector<bool>& fromTail) {
+                       const std::vector<std::uint32_t>& place) {
   tbb::task_group columns;
   forEachColumn([&](auto& column) {
-    columns.run([&column, first, &tail, &fromTail] {
+    columns.run([&column, first, &tail, &place] {
       using Value = typename std::decay_t<decltype(column)>::value_type;
       std::vector<Value> moved(tail.size());
       for (std::size_t j = 0; j < tail.size(); ++j) moved[j] = column[tail[j]];
-      // From the end: a row before the tail only moves towards the end, so each is read
-      // before its place is written.
-      std::size_t before = first, after = tail.size();
-      for (std::size_t k = column.size(); k-- > 0;)
-        column[k] = fromTail[k] ? moved[--after] : column[--before];
+      // From the end: the rows before the tail between two new rows' places move as a block
+      // towards the end, by the number of new rows they will follow; each block is read
+      // before its place is written, as rows only move towards the end.
+      std::size_t end = first;  // the rows before the tail not moved yet: [0, end)
+      for (std::size_t j = tail.size(); j-- > 0;) {
+        std::copy_backward(column.begin() + place[j], column.begin() + end,
+                           column.begin() + end + j + 1);
+        column[place[j] + j] = moved[j];
+        end = place[j];
+      }
     });
   });
   columns.wait();

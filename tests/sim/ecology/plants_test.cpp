@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
+
+#include "core/random.hpp"
+
 namespace eco {
 namespace {
 
@@ -98,6 +103,37 @@ TEST(Plants, SettleTailMergesTheNewRowsStablyByKey) {
   p.settleTail(8, [&](std::size_t i) { return p.east_m[i]; });
   p.settleTail(0, [&](std::size_t i) { return p.east_m[i]; });
   EXPECT_EQ(p.id, settled);
+}
+
+TEST(Plants, SettleTailAgreesWithAStableSortOfEveryRow) {
+  // A year's worth at a small scale: 20,000 settled rows and 3,000 new ones, keys from a
+  // narrow range so that many are equal, and new keys below and above every settled one.
+  Rng rng(streamKey(17, purpose("test")));
+  constexpr std::size_t kSettled = 20000, kNew = 3000;
+  std::vector<int> keys(kSettled + kNew);
+  for (int& key : keys) key = static_cast<int>(rng.uniform() * 500.0);
+  std::sort(keys.begin(), keys.begin() + kSettled);
+  keys[kSettled] = -1;
+  keys[kSettled + 1] = 1000;
+  Plants p;
+  p.resize(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    p.id[i] = i;
+    p.east_m[i] = static_cast<float>(keys[i]);
+    p.growthFactor[i] = static_cast<float>(i);
+  }
+  // What a stable sort of every row by key gives: settled rows first on equal keys, since
+  // they come first now.
+  std::vector<std::uint64_t> expected(keys.size());
+  std::iota(expected.begin(), expected.end(), 0);
+  std::stable_sort(expected.begin(), expected.end(),
+                   [&](std::uint64_t a, std::uint64_t b) { return keys[a] < keys[b]; });
+  p.settleTail(kSettled, [&](std::size_t i) { return p.east_m[i]; });
+  ASSERT_EQ(p.id, expected);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    EXPECT_EQ(p.east_m[k], static_cast<float>(keys[expected[k]]));
+    EXPECT_EQ(p.growthFactor[k], static_cast<float>(expected[k]));
+  }
 }
 
 }  // namespace

@@ -88,12 +88,18 @@ void Plants::settleTail(std::size_t first, Key&& key) {
   std::vector<std::uint32_t> tail(n - first);
   std::iota(tail.begin(), tail.end(), static_cast<std::uint32_t>(first));
   auto byKey = [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); };
-  // A tail already in order (the year's seedlings come row by row; a checkpoint read back
-  // is in order) is checked in one pass, not sorted.
+  // A tail already in order (a checkpoint read back, where the tail is every row) is
+  // checked in one pass, not sorted, and without a copy of its keys.
   if (std::is_sorted(tail.begin(), tail.end(), byKey)) {
     if (first == 0 || !(key(first) < key(first - 1))) return;
   } else {
-    std::stable_sort(tail.begin(), tail.end(), byKey);
+    // A year's new rows come in another order: their keys are worked out once each, side
+    // by side, not twice at each of the sort's comparisons.
+    std::vector<decltype(key(first))> keys(tail.size());
+    tbb::parallel_for(std::size_t{0}, tail.size(), [&](std::size_t j) { keys[j] = key(tail[j]); });
+    std::stable_sort(tail.begin(), tail.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return keys[a - first] < keys[b - first];
+    });
   }
   // Where each new row goes: after the rows before the tail whose key is not greater (on
   // equal keys they come first). A binary search a new row, side by side, where a pass

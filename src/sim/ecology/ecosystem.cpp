@@ -134,11 +134,17 @@ std::uint32_t Ecosystem::variantSeedOf(std::uint64_t id) const {
 }
 
 std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
+  const std::size_t i = state_.plants.size();
+  state_.plants.resize(i + 1);
+  setSeedling(i, state_.nextId++, species, east_m, north_m);
+  return i;
+}
+
+void Ecosystem::setSeedling(std::size_t i, std::uint64_t id, int species, double east_m,
+                            double north_m) {
   Plants& p = state_.plants;
-  const std::size_t i = p.size();
-  p.resize(i + 1);
   const LifeHistory& life = species_[species].ecology.life;
-  p.id[i] = state_.nextId++;
+  p.id[i] = id;
   p.species[i] = static_cast<std::uint8_t>(species);
   p.east_m[i] = static_cast<float>(east_m);
   p.north_m[i] = static_cast<float>(north_m);
@@ -157,7 +163,6 @@ std::size_t Ecosystem::addPlant(int species, double east_m, double north_m) {
   p.stressYears[i] = 0;
   p.origin[i] = static_cast<std::uint8_t>(PlantOrigin::Seeded);
   p.alive[i] = 1;
-  return i;
 }
 
 glm::dvec2 Ecosystem::regenerationOrigin() const {
@@ -469,19 +474,34 @@ void Ecosystem::establish() {
         const double draw = rng.uniform();
         if (draw >= expected || draw >= -std::expm1(-expected)) continue;
         cell.species[cell.count++] = static_cast<std::uint8_t>(s);
-        rows[y].push_back({static_cast<int>(s), east + (rng.uniform() - 0.5) * kRegenerationCell_m,
-                           north + (rng.uniform() - 0.5) * kRegenerationCell_m});
+        const Newcomer seedling{static_cast<int>(s),
+                                east + (rng.uniform() - 0.5) * kRegenerationCell_m,
+                                north + (rng.uniform() - 0.5) * kRegenerationCell_m};
+        // The cell's centre lies on the map and outside every open area; the seedling's own
+        // spot may not.
+        if (g.cellAt(static_cast<float>(seedling.east), static_cast<float>(seedling.north)) >= 0 &&
+            !isKeptOpen({seedling.east, seedling.north}))
+          rows[y].push_back(seedling);
       }
     }
   });
-  for (const std::vector<Newcomer>& row : rows)
-    for (const Newcomer& n : row) {
-      if (g.cellAt(static_cast<float>(n.east), static_cast<float>(n.north)) < 0) continue;
-      // The cell's centre lies outside every open area; the seedling's own spot may not.
-      if (isKeptOpen({n.east, n.north})) continue;
-      addPlant(n.species, n.east, n.north);
-      ++born_[n.species];
+  // The seedlings join the plants row by row, numbered in that order: the rows are made
+  // side by side into their places (a landscape's year brings millions).
+  std::vector<std::size_t> rowStart(rows.size() + 1, 0);
+  for (std::size_t y = 0; y < rows.size(); ++y) {
+    rowStart[y + 1] = rowStart[y] + rows[y].size();
+    for (const Newcomer& n : rows[y]) ++born_[n.species];
+  }
+  const std::size_t first = p.size();
+  const std::uint64_t firstId = state_.nextId;
+  state_.plants.resize(first + rowStart.back());
+  state_.nextId += rowStart.back();
+  tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t y) {
+    for (std::size_t k = 0; k < rows[y].size(); ++k) {
+      const Newcomer& n = rows[y][k];
+      setSeedling(first + rowStart[y] + k, firstId + rowStart[y] + k, n.species, n.east, n.north);
     }
+  });
 }
 
 void Ecosystem::step() {

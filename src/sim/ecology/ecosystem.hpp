@@ -150,7 +150,11 @@ class Ecosystem {
   // run took an eighth longer, waiting for memory (README, "Ecosystem simulation"). The
   // plants appended since the last call, established or planted, are moved into that order.
   void settleNewcomers();
+  // Appends a seedling of the species at a place; returns its row.
   std::size_t addPlant(int species, double east_m, double north_m);
+  // Makes row i a seedling with this id (the rows of a year's seedlings are made side by
+  // side).
+  void setSeedling(std::size_t i, std::uint64_t id, int species, double east_m, double north_m);
   // The regeneration cells: 2 m squares from the terrain grid's south-west corner.
   glm::dvec2 regenerationOrigin() const;
   // The cell of a map position (clamped to the map), and a cell's centre.

@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <numeric>
+#include <ranges>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -106,17 +108,10 @@ void Plants::settleTail(std::size_t first, Key&& key) {
   // few new rows for each hundred there, and a pass over every row's key, on one core, had
   // made settling a tenth of the valley's run.
   std::vector<std::uint32_t> place(tail.size());
+  const auto settled = std::views::iota(std::size_t{0}, first);
   tbb::parallel_for(std::size_t{0}, tail.size(), [&](std::size_t j) {
-    const auto newKey = key(tail[j]);
-    std::size_t below = 0, above = first;
-    while (below < above) {
-      const std::size_t middle = below + (above - below) / 2;
-      if (newKey < key(middle))
-        above = middle;
-      else
-        below = middle + 1;
-    }
-    place[j] = static_cast<std::uint32_t>(below);
+    place[j] = static_cast<std::uint32_t>(
+        std::ranges::upper_bound(settled, key(tail[j]), std::less<>(), key) - settled.begin());
   });
   mergeTail(first, tail, place);
 }

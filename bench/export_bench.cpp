@@ -29,10 +29,12 @@ int main(int argc, char** argv) {
   std::vector<eco::LibrarySpecies> species = eco::loadLibrarySpecies(folder.scenario);
   const auto libraryStart = Clock::now();
   const eco::TreeLibrary library(std::move(species), {});
-  const double librarySeconds = std::chrono::duration<double>(Clock::now() - libraryStart).count();
   const eco::Forest forest = eco::forestFromSnapshot(snapshot, library, folder.dir.string());
-  std::printf("%s, year %d: %zu plants of at least %.1f m; tree library built in %.1f s\n",
-              folder.scenario.name.c_str(), year, snapshot.trees.size(), minHeight, librarySeconds);
+  const double librarySeconds = std::chrono::duration<double>(Clock::now() - libraryStart).count();
+  std::printf(
+      "%s, year %d: %zu plants of at least %.1f m; tree library with the forest's "
+      "types built in %.1f s\n",
+      folder.scenario.name.c_str(), year, snapshot.trees.size(), minHeight, librarySeconds);
   for (eco::Instancing instancing : {eco::Instancing::Nodes, eco::Instancing::Gpu}) {
     const bool nodes = instancing == eco::Instancing::Nodes;
     const auto file = work / (nodes ? "nodes.glb" : "gpu.glb");

@@ -177,8 +177,8 @@ int main(int argc, char** argv) {
     auto start = std::chrono::steady_clock::now();
     const eco::TreeLibrary library(eco::loadLibrarySpecies(run.scenario),
                                    eco::LibrarySettings::shaped(shaping));
-    const double libraryMs = millisecondsSince(start);
     const eco::Forest forest = eco::forestFromSnapshot(snapshot, library, run.dir.string());
+    const double libraryMs = millisecondsSince(start);  // with the forest's types built
     start = std::chrono::steady_clock::now();
     eco::SceneRenderer renderer(terrain, run.scenario.climate.latitude_deg, &library,
                                 eco::impostorSettingsFor(*quality));
@@ -197,7 +197,7 @@ int main(int argc, char** argv) {
     }
     const eco::ForestGpuMemory& memory = renderer.forest()->gpuMemory();
     std::printf("%-8s | %7zu %10.0f %11.0f | %10.1f %13.1f | %13.1f %13.1f\n",
-                shaping ? "on" : "off", library.types().size(), libraryMs, rendererMs,
+                shaping ? "on" : "off", eco::typesOf(forest).size(), libraryMs, rendererMs,
                 mebibytes(memory.meshBytes), mebibytes(memory.impostorBytes), frameMs[0],
                 frameMs[1]);
   }

@@ -76,7 +76,7 @@ void runExport(const ExportArgs& args) {
   std::optional<Billboards> billboards;
   if (options.billboards || options.lod == kBillboardLevel) {
     HeadlessGl gl;
-    billboards = bakeBillboards(*source.library);
+    billboards = bakeBillboards(*source.library, typesOf(forest));
   }
   const ForestGltfSummary summary =
       exportForest(source.terrain, *source.library, forest, snapshot.trees, out, options,

@@ -31,7 +31,7 @@ Forest visibleTrees(const Forest& all, const TreeLibrary& library, const std::ve
   Forest forest;
   forest.reserve(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {
-    if (!shown[library.types()[all.type[i]].species]) continue;
+    if (!shown[library.type(all.type[i]).species]) continue;
     forest.append(all, i);
   }
   return forest;

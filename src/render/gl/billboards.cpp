@@ -8,7 +8,8 @@
 
 namespace eco {
 
-Billboards bakeBillboards(const TreeLibrary& library, const ImpostorSettings& settings) {
+Billboards bakeBillboards(const TreeLibrary& library, std::span<const int> types,
+                          const ImpostorSettings& settings) {
   const FrameUniformBuffer uniforms;
   // Only the two frames each picture shows are baked, one type at a time: the atlases of
   // every type at 256 pixels a frame would take gigabytes.
@@ -17,13 +18,14 @@ Billboards bakeBillboards(const TreeLibrary& library, const ImpostorSettings& se
   const std::array<glm::ivec2, 2> frames = billboardFrames(settings.frames);
   const int tile = settings.tilePixels;
   const auto stride = static_cast<std::size_t>(tile) * 4;
-  std::vector<std::vector<Image>> sourceFrames(library.types().size());
-  for (std::size_t t = 0; t < library.types().size(); ++t) {
+  billboards.textures.resize(library.typeCount());
+  std::vector<std::vector<Image>> sourceFrames(library.typeCount());
+  for (const int t : types) {
     // The variants of a species and age class show their source type's frames.
-    const auto source = static_cast<std::size_t>(renderer.impostorSource(static_cast<int>(t)));
+    const auto source = static_cast<std::size_t>(renderer.impostorSource(t));
     if (sourceFrames[source].empty())
       sourceFrames[source] = renderer.bakeFrameImages(static_cast<int>(source), frames);
-    Image& picture = billboards.textures.emplace_back(2 * tile, tile);
+    Image& picture = billboards.textures[t] = Image(2 * tile, tile);
     for (std::size_t view = 0; view < frames.size(); ++view) {
       const Image& frame = sourceFrames[source][view];
       for (int y = 0; y < tile; ++y)

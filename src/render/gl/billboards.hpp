@@ -4,6 +4,8 @@
 // OpenGL context (HeadlessGl).
 #pragma once
 
+#include <span>
+
 #include "render/scene/forest_export.hpp"
 #include "render/scene/impostor.hpp"
 #include "render/scene/tree_library.hpp"
@@ -13,7 +15,8 @@ namespace eco {
 // Frames of 256 pixels: a far tree's picture, sharper than the renderer's 64.
 inline constexpr ImpostorSettings kBillboardImpostors{.frames = 8, .tilePixels = 256, .bakeLod = 1};
 
-Billboards bakeBillboards(const TreeLibrary& library,
+// The pictures of these types (a forest's: typesOf); the other types' stay empty.
+Billboards bakeBillboards(const TreeLibrary& library, std::span<const int> types,
                           const ImpostorSettings& settings = kBillboardImpostors);
 
 }  // namespace eco

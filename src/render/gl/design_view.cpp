@@ -28,7 +28,7 @@ void DesignView::show(PreviewScene scene) {
 }
 
 OrbitCamera DesignView::framingCamera() const {
-  const TreeType& tree = library_->types()[kPreviewEdited];
+  const TreeType& tree = library_->type(kPreviewEdited);
   OrbitCamera camera;
   camera.target = bases_[kPreviewEdited] + glm::vec3(0.0f, 0.5f * tree.height_m, 0.0f);
   camera.distance_m = 1.5f * std::max(tree.height_m, 2.0f * tree.crownRadius_m) + 3.0f;
@@ -38,7 +38,7 @@ OrbitCamera DesignView::framingCamera() const {
 OrbitCamera DesignView::rowCamera() const {
   float west = bases_.front().x, east = west, tallest = 0.0f;
   for (std::size_t t = 0; t < bases_.size(); ++t) {
-    const TreeType& type = library_->types()[t];
+    const TreeType& type = library_->type(static_cast<int>(t));
     west = std::min(west, bases_[t].x - type.crownRadius_m);
     east = std::max(east, bases_[t].x + type.crownRadius_m);
     tallest = std::max(tallest, type.height_m);

@@ -78,7 +78,7 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
       impostorShadowProgram_(
           {{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}},
           {"SHADOW_PASS"}) {
-  uploadMeshes();
+  resetMeshes();
 
   // Materials of each species, textures generated as the exporters do (in parallel: the
   // procedural textures take a moment each), then uploaded.
@@ -118,10 +118,10 @@ void ForestRenderer::bindMaterial(const Program& program, int species, MaterialK
     glEnable(GL_CULL_FACE);
 }
 
-void ForestRenderer::drawRanges(const std::vector<DrawRange>& ranges, int species, Bucket bucket,
-                                const Program& program) const {
+void ForestRenderer::drawLevel(int type, int level, Bucket bucket, const Program& program) const {
   if (bucket.count == 0) return;
-  for (const DrawRange& range : ranges) {
+  const int species = library_.type(type).species;
+  for (const DrawRange& range : ranges_[type][level]) {
     bindMaterial(program, species, range.material);
     glDrawElementsInstancedBaseVertexBaseInstance(GL_TRIANGLES, range.count, GL_UNSIGNED_INT,
                                                   reinterpret_cast<const void*>(range.firstIndex),
@@ -129,63 +129,60 @@ void ForestRenderer::drawRanges(const std::vector<DrawRange>& ranges, int specie
   }
 }
 
-void ForestRenderer::uploadMeshes() {
-  // Every mesh into one vertex and one index buffer.
-  std::vector<PackedTreeVertex> vertices;
-  std::vector<std::uint32_t> indices;
-  const auto& types = library_.types();
-  std::size_t vertexCount = 0, indexCount = 0;
-  for (const TreeType& type : types)
-    for (const WindMesh& mesh : type.meshes.lods)
-      for (const WindPart& part : mesh.parts)
-        vertexCount += part.vertices.size(), indexCount += part.indices.size();
-  vertices.reserve(vertexCount);
-  indices.reserve(indexCount);
-  ranges_.assign(types.size(), {});
-  triangles_.assign(types.size(), {});
-  for (std::size_t t = 0; t < types.size(); ++t)
-    for (int lod = 0; lod < kLodCount; ++lod) {
-      const WindMesh& mesh = types[t].meshes.lods[lod];
-      triangles_[t][lod] = mesh.triangleCount();
-      for (const WindPart& part : mesh.parts) {
-        ranges_[t][lod].push_back({part.material, static_cast<GLsizei>(part.indices.size()),
-                                   indices.size() * sizeof(std::uint32_t),
-                                   static_cast<GLint>(vertices.size())});
-        for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
-        indices.insert(indices.end(), part.indices.begin(), part.indices.end());
-      }
-    }
-  vertices_ = makeBuffer(std::span<const PackedTreeVertex>(vertices));
-  indices_ = makeBuffer(std::span<const std::uint32_t>(indices));
-  gpuMemory_.meshBytes =
-      vertices.size() * sizeof(PackedTreeVertex) + indices.size() * sizeof(std::uint32_t);
+void ForestRenderer::resetMeshes() {
+  vertices_ = AppendBuffer();
+  indices_ = AppendBuffer();
+  ranges_.assign(library_.typeCount(), {});
+  uploaded_.assign(library_.typeCount(), {});
+  gpuMemory_.meshBytes = 0;
   GLuint id = 0;
   glCreateBuffers(1, &id);
   instances_ = GlName(GlKind::Buffer, id);
-
   meshArray_ = makeVertexArray();
-  glVertexArrayVertexBuffer(meshArray_.id(), 0, vertices_.id(), 0, sizeof(PackedTreeVertex));
-  glVertexArrayElementBuffer(meshArray_.id(), indices_.id());
   setTreeVertexLayout(meshArray_.id());
   setInstanceLayout(meshArray_.id());
-
   impostorArray_ = makeVertexArray();  // instance attributes only: one sprite per tree
   setInstanceLayout(impostorArray_.id());
   instanceCapacity_ = 0;  // the instance buffer is new and empty
-  atlases_.resize(types.size());
+  atlases_.resize(library_.typeCount());
+}
+
+void ForestRenderer::uploadLevels(std::span<const std::pair<int, int>> levels) {
+  // Appended to the buffers together: each append may copy what they hold.
+  std::vector<PackedTreeVertex> vertices;
+  std::vector<std::uint32_t> indices;
+  const std::size_t firstVertex = vertices_.size() / sizeof(PackedTreeVertex);
+  const std::size_t firstIndex = indices_.size() / sizeof(std::uint32_t);
+  for (const auto [type, lod] : levels) {
+    if (uploaded_[type][lod]) continue;
+    uploaded_[type][lod] = true;
+    for (const WindPart& part : library_.type(type).meshes.lods[lod].parts) {
+      ranges_[type][lod].push_back({part.material, static_cast<GLsizei>(part.indices.size()),
+                                    (firstIndex + indices.size()) * sizeof(std::uint32_t),
+                                    static_cast<GLint>(firstVertex + vertices.size())});
+      for (const TreeVertex& v : part.vertices) vertices.push_back(packVertex(v));
+      indices.insert(indices.end(), part.indices.begin(), part.indices.end());
+    }
+  }
+  if (vertices.empty()) return;
+  vertices_.append(std::span<const PackedTreeVertex>(vertices));
+  indices_.append(std::span<const std::uint32_t>(indices));
+  gpuMemory_.meshBytes = vertices_.size() + indices_.size();
+  glVertexArrayVertexBuffer(meshArray_.id(), 0, vertices_.id(), 0, sizeof(PackedTreeVertex));
+  glVertexArrayElementBuffer(meshArray_.id(), indices_.id());
 }
 
 void ForestRenderer::reloadMeshes(bool rebakeImpostors) {
-  uploadMeshes();
+  resetMeshes();
   if (rebakeImpostors) {
     atlases_.clear();
-    atlases_.resize(library_.types().size());
+    atlases_.resize(library_.typeCount());
     gpuMemory_.impostorBytes = 0;
   }
 }
 
 int ForestRenderer::impostorSource(int type) const {
-  return library_.types()[type].impostorSource;
+  return library_.impostorSource(type);
 }
 
 namespace {
@@ -214,8 +211,11 @@ Image frameImageOf(const GlName& texture, glm::ivec2 frame, int tile) {
 
 std::vector<Image> ForestRenderer::bakeFrameImages(int type, std::span<const glm::ivec2> frames) {
   const int tile = impostorSettings_.tilePixels;
+  const int source = impostorSource(type);
+  const std::array<std::pair<int, int>, 1> level{{{source, impostorSettings_.bakeLod}}};
+  uploadLevels(level);
   const RenderTarget target = beginBaking();
-  drawImpostorFrames(impostorSource(type), frames, target);
+  drawImpostorFrames(source, frames, target);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   std::vector<Image> images;
   for (const glm::ivec2 frame : frames) images.push_back(frameImageOf(target.color, frame, tile));
@@ -239,7 +239,7 @@ RenderTarget ForestRenderer::beginBaking() {
 
 void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> frames,
                                         const RenderTarget& target) {
-  const TreeType& tree = library_.types()[type];
+  const TreeType& tree = library_.type(type);
   const int tile = impostorSettings_.tilePixels;
   const glm::vec3 centre(tree.bounds);
   const float radius = tree.bounds.w;
@@ -264,7 +264,7 @@ void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> fr
     uniforms_.upload(u);
     // OpenGL's convention throughout: row 0 at the bottom of the atlas, up is +v.
     glViewport(frame.x * tile, frame.y * tile, tile, tile);
-    drawRanges(ranges_[type][impostorSettings_.bakeLod], tree.species, {0, 1}, bakeProgram_);
+    drawLevel(type, impostorSettings_.bakeLod, {0, 1}, bakeProgram_);
   }
 }
 
@@ -300,7 +300,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
                                     int height, const LodSettings& lod,
                                     std::span<const ShadowBox> shadows) {
   ForestStats stats;
-  const auto& types = library_.types();
+  const auto types = static_cast<std::size_t>(library_.typeCount());
   const Frustum frustum =
       Frustum::fromMatrix(camera.projection(static_cast<float>(width) / height) * camera.view());
   const float pixelsPerRadian = camera.pixelsPerRadian(height);
@@ -315,7 +315,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   distances_.resize(n);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const TreeType& type = types[forest.type[i]];
+      const TreeType& type = library_.type(forest.type[i]);
       const float sx = forest.scaleXZ[i], sy = forest.scaleY[i];
       const float c = std::cos(forest.yaw[i]), s = std::sin(forest.yaw[i]);
       const glm::vec3 local(type.bounds.x * sx, type.bounds.y * sy, type.bounds.z * sx);
@@ -361,13 +361,13 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   // index): near trees fill the depth buffer first, so the depth test rejects most hidden
   // fragments of the ones behind before they are shaded — a third of the frame at 300k
   // trees. A total order, so the frame does not depend on the thread count.
-  buckets_.assign(types.size() * kLevelCount, Bucket{});
-  shadowBuckets_.assign(cascades * types.size() * kLevelCount, Bucket{});
+  buckets_.assign(types * kLevelCount, Bucket{});
+  shadowBuckets_.assign(cascades * types * kLevelCount, Bucket{});
   // The bucket of tree i's caster in cascade c, or null where it casts none there.
   auto shadowBucket = [&](std::size_t i, std::size_t c) -> Bucket* {
     const std::uint8_t caster = casts_[i * cascades + c];
     if (caster == kNoCaster) return nullptr;
-    return &shadowBuckets_[(c * types.size() + forest.type[i]) * kLevelCount + caster - 1];
+    return &shadowBuckets_[(c * types + forest.type[i]) * kLevelCount + caster - 1];
   };
   auto castsAny = [&](std::size_t i) {
     for (std::size_t c = 0; c < cascades; ++c)
@@ -391,7 +391,8 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     levels(forest.type[i], 1.0f, 0.0f, split);
     if (forest.blendType[i] >= 0)
       levels(forest.blendType[i],
-             types[forest.type[i]].height_m / types[forest.blendType[i]].height_m, split, presence);
+             library_.typeHeight_m(forest.type[i]) / library_.typeHeight_m(forest.blendType[i]),
+             split, presence);
   };
   for (std::size_t i = 0; i < n; ++i) {
     if (outside[i])
@@ -406,22 +407,32 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     });
   }
   {
-    // The atlases of the types this frame is the first to draw as impostors or shadow
-    // sprites, baked before the instances are uploaded (baking draws with an instance of
-    // its own).
-    const auto bakeStart = std::chrono::steady_clock::now();
-    std::vector<std::uint8_t> drawn(types.size(), 0);
-    for (std::size_t t = 0; t < types.size(); ++t) {
-      bool sprite = buckets_[t * kLevelCount + kLevelImpostor].count > 0;
-      for (std::size_t c = 0; c < cascades; ++c)
-        sprite = sprite ||
-                 shadowBuckets_[(c * types.size() + t) * kLevelCount + kLevelImpostor].count > 0;
-      if (sprite) drawn[impostorSource(static_cast<int>(t))] = 1;
-    }
+    // The levels this frame is the first to draw, and the atlases of the types it is the
+    // first to draw as impostors or shadow sprites (each baked from its source's level
+    // bakeLod), made before the instances are uploaded: baking draws with an instance of
+    // its own.
+    std::vector<std::pair<int, int>> levels;
+    std::vector<std::uint8_t> sprites(types, 0);
+    for (std::size_t t = 0; t < types; ++t)
+      for (int level = 0; level < kLevelCount; ++level) {
+        bool drawn = buckets_[t * kLevelCount + level].count > 0;
+        for (std::size_t c = 0; c < cascades; ++c)
+          drawn = drawn || shadowBuckets_[(c * types + t) * kLevelCount + level].count > 0;
+        if (!drawn) continue;
+        if (level < kLevelImpostor)
+          levels.emplace_back(static_cast<int>(t), level);
+        else
+          sprites[impostorSource(static_cast<int>(t))] = 1;
+      }
     std::vector<int> unbaked;
-    for (std::size_t t = 0; t < types.size(); ++t)
-      if (drawn[t] && !atlases_[t].albedo) unbaked.push_back(static_cast<int>(t));
+    for (std::size_t t = 0; t < types; ++t)
+      if (sprites[t] && !atlases_[t].albedo) {
+        unbaked.push_back(static_cast<int>(t));
+        levels.emplace_back(static_cast<int>(t), impostorSettings_.bakeLod);
+      }
+    uploadLevels(levels);
     if (!unbaked.empty()) {
+      const auto bakeStart = std::chrono::steady_clock::now();
       bakeAtlases(unbaked);
       stats.impostorBakeMs =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - bakeStart)
@@ -459,12 +470,14 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   }
   glNamedBufferSubData(instances_.id(), 0, staging_.size() * sizeof(Instance), staging_.data());
 
-  for (std::size_t t = 0; t < types.size(); ++t)
+  for (std::size_t t = 0; t < types; ++t)
     for (int level = 0; level < kLevelCount; ++level) {
       const std::size_t count = buckets_[t * kLevelCount + level].count;
+      if (count == 0) continue;
+      const auto& lods = library_.type(static_cast<int>(t)).meshes.lods;
       stats.instances[level] += count;
-      stats.triangles += count * (level < kLevelImpostor ? triangles_[t][level] : 2);
-      stats.lod0Triangles += count * triangles_[t][0];
+      stats.triangles += count * (level < kLevelImpostor ? lods[level].triangleCount() : 2);
+      stats.lod0Triangles += count * lods[0].triangleCount();
     }
   for (std::size_t b = 0; b < shadowBuckets_.size(); ++b)
     stats.shadowCasters[b % kLevelCount] += shadowBuckets_[b].count;
@@ -472,14 +485,12 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
 }
 
 void ForestRenderer::draw() const {
-  const auto& types = library_.types();
   glBindVertexArray(meshArray_.id());
   glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
   meshProgram_.use();
-  for (std::size_t t = 0; t < types.size(); ++t)
+  for (int t = 0; t < library_.typeCount(); ++t)
     for (int level = 0; level < kLevelImpostor; ++level)
-      drawRanges(ranges_[t][level], types[t].species, buckets_[t * kLevelCount + level],
-                 meshProgram_);
+      drawLevel(t, level, buckets_[t * kLevelCount + level], meshProgram_);
 
   drawImpostors(impostorProgram_, pixelsPerUnit_,
                 [&](std::size_t t) { return buckets_[t * kLevelCount + kLevelImpostor]; });
@@ -487,7 +498,6 @@ void ForestRenderer::draw() const {
 
 void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
                                    const std::function<Bucket(std::size_t)>& bucketOf) const {
-  const auto& types = library_.types();
   glEnable(GL_PROGRAM_POINT_SIZE);
   glBindVertexArray(impostorArray_.id());
   glVertexArrayVertexBuffer(impostorArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
@@ -495,11 +505,11 @@ void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
   program.set("uFrames", impostorSettings_.frames);
   program.set("uBlendFrames", impostorSettings_.blendFrames ? 1 : 0);
   program.set("uPixelsPerUnit", pixelsPerUnit);
-  for (std::size_t t = 0; t < types.size(); ++t) {
+  for (int t = 0; t < library_.typeCount(); ++t) {
     const Bucket bucket = bucketOf(t);
     if (bucket.count == 0) continue;
-    const int source = impostorSource(static_cast<int>(t));
-    program.set("uBounds", types[source].bounds);
+    const int source = impostorSource(t);
+    program.set("uBounds", library_.type(source).bounds);
     glBindTextureUnit(1, atlases_[source].albedo.id());
     glBindTextureUnit(2, atlases_[source].normal.id());
     glBindTextureUnit(5, atlases_[source].depth.id());
@@ -508,15 +518,13 @@ void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
 }
 
 void ForestRenderer::drawShadows(std::size_t cascade) const {
-  const auto& types = library_.types();
-  const std::size_t first = cascade * types.size() * kLevelCount;
+  const std::size_t first = cascade * library_.typeCount() * kLevelCount;
   glBindVertexArray(meshArray_.id());
   glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
   meshShadowProgram_.use();
-  for (std::size_t t = 0; t < types.size(); ++t)
+  for (int t = 0; t < library_.typeCount(); ++t)
     for (int level = 0; level < kLevelImpostor; ++level)
-      drawRanges(ranges_[t][level], types[t].species,
-                 shadowBuckets_[first + t * kLevelCount + level], meshShadowProgram_);
+      drawLevel(t, level, shadowBuckets_[first + t * kLevelCount + level], meshShadowProgram_);
 
   drawImpostors(impostorShadowProgram_, shadowPixelsPerMetre_[cascade], [&](std::size_t t) {
     return shadowBuckets_[first + t * kLevelCount + kLevelImpostor];

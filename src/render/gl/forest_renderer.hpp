@@ -1,5 +1,5 @@
-// Draws a Forest with a TreeLibrary on the GPU: every mesh of the library in one vertex and
-// one index buffer, one impostor atlas per type, and per frame one instance buffer filled
+// Draws a Forest with a TreeLibrary on the GPU: the meshes it draws in one vertex and one
+// index buffer, one impostor atlas per type, and per frame one instance buffer filled
 // from the forest's arrays after culling and LOD choice, drawn with one instanced call per
 // (type, level, material part) — never a draw call per tree.
 #pragma once
@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -56,16 +57,17 @@ void setInstanceLayout(GLuint vertexArray);
 
 // What the forest holds on the GPU besides the per-frame instances.
 struct ForestGpuMemory {
-  std::size_t meshBytes = 0;      // every type's levels: packed vertices and indices
+  std::size_t meshBytes = 0;      // the levels uploaded: packed vertices and indices
   std::size_t impostorBytes = 0;  // the baked atlases with their mip levels
   std::size_t total() const { return meshBytes + impostorBytes; }
 };
 
-// Impostor atlases are baked when a frame first draws a type as an impostor (or casts its
-// shadow as one), in prepare(), not for the whole library when the renderer is made: a young
-// run's frames show a fraction of the library's types, and an atlas is its type's frames
-// drawn from LOD0 or LOD1, the slow part of setting up. The glTF export's billboards bake
-// only the two frames they show (bakeFrameImages) and never an atlas.
+// A type's level is uploaded, and its impostor atlas baked, when a frame first draws the
+// type at that level or as an impostor (or casts its shadow so), in prepare(), not for the
+// whole library when the renderer is made: a young run's frames show a fraction of the
+// library's types, most of them as impostors, and uploading every level took seconds. The
+// glTF export's billboards bake only the two frames they show (bakeFrameImages) and never
+// an atlas.
 class ForestRenderer {
  public:
   // `uniforms` (the frame uniforms' buffer the shaders read) must outlive the renderer: the
@@ -73,9 +75,9 @@ class ForestRenderer {
   ForestRenderer(const TreeLibrary& library, const ImpostorSettings& impostors,
                  const FrameUniformBuffer& uniforms);
 
-  // Uploads the library's meshes again after its types changed (TreeLibrary::setType), the
-  // materials kept; the atlases are kept too unless `rebakeImpostors`, which drops them to be
-  // baked again as frames draw them (they take longest).
+  // Drops the uploaded meshes after the library's types changed (TreeLibrary::setType), to
+  // be uploaded again as frames draw them, the materials kept; the atlases are kept too
+  // unless `rebakeImpostors`, which drops them to be baked again (they take longest).
   void reloadMeshes(bool rebakeImpostors);
 
   // Culls, picks levels and fills the instance buffer for this camera and the shadow
@@ -124,12 +126,15 @@ class ForestRenderer {
   };
   using Instance = InstanceAttributes;
 
-  void drawRanges(const std::vector<DrawRange>& ranges, int species, Bucket bucket,
-                  const Program& program) const;
+  // The instances of `bucket` at a level of a type (uploaded), part by part.
+  void drawLevel(int type, int level, Bucket bucket, const Program& program) const;
   // Each type's impostor sprites in bucketOf(type), with its atlases (colour or shadow pass).
   void drawImpostors(const Program& program, float pixelsPerUnit,
                      const std::function<Bucket(std::size_t)>& bucketOf) const;
-  void uploadMeshes();
+  // Empties the mesh buffers and makes the vertex arrays that draw from them.
+  void resetMeshes();
+  // Uploads the levels (type, level) that are not yet, each once.
+  void uploadLevels(std::span<const std::pair<int, int>> levels);
   // Bakes the atlases of these impostor sources.
   void bakeAtlases(const std::vector<int>& sources);
   // A target of frames × frames tiles (albedo, normal, depth) and the baking pass's state:
@@ -144,15 +149,16 @@ class ForestRenderer {
   const FrameUniformBuffer& uniforms_;
   ImpostorSettings impostorSettings_;
   Program meshProgram_, meshShadowProgram_, bakeProgram_, impostorProgram_, impostorShadowProgram_;
-  GlName vertices_, indices_, meshArray_, impostorArray_, instances_;
+  AppendBuffer vertices_, indices_;
+  GlName meshArray_, impostorArray_, instances_;
   std::size_t instanceCapacity_ = 0;
   ForestGpuMemory gpuMemory_;
   float pixelsPerUnit_ = 1.0f;  // of the prepared frame: sprite sizes
   std::vector<std::array<std::vector<DrawRange>, kLodCount>> ranges_;  // [type][lod]
-  std::vector<std::array<std::size_t, kLodCount>> triangles_;
-  std::vector<std::vector<Material>> materials_;  // [species][MaterialKind]
-  std::vector<Atlas> atlases_;                    // [type]; baked for impostor sources only
-  std::vector<Bucket> buckets_;                   // [type * kLevelCount + level]
+  std::vector<std::array<bool, kLodCount>> uploaded_;                  // [type][lod]
+  std::vector<std::vector<Material>> materials_;                       // [species][MaterialKind]
+  std::vector<Atlas> atlases_;   // [type]; baked for impostor sources only
+  std::vector<Bucket> buckets_;  // [type * kLevelCount + level]
   // Shadow casters, per cascade: in the nearest each tree casts with the level it is drawn
   // at; trees outside the view, and every tree in the coarser cascades (whose texels are
   // decimetres to metres), cast as impostor sprites seen from the sun.

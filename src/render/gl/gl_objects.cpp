@@ -44,6 +44,23 @@ GlName makeBuffer(const void* data, std::size_t bytes, GLbitfield flags) {
   return {GlKind::Buffer, id};
 }
 
+std::size_t AppendBuffer::append(const void* data, std::size_t bytes) {
+  const std::size_t offset = size_;
+  if (size_ + bytes > capacity_) {
+    const std::size_t capacity = 2 * (size_ + bytes);
+    GlName grown = makeBuffer(nullptr, capacity, GL_DYNAMIC_STORAGE_BIT);
+    if (size_ > 0)
+      glCopyNamedBufferSubData(buffer_.id(), grown.id(), 0, 0, static_cast<GLsizeiptr>(size_));
+    buffer_ = std::move(grown);
+    capacity_ = capacity;
+  }
+  if (bytes > 0)
+    glNamedBufferSubData(buffer_.id(), static_cast<GLintptr>(offset),
+                         static_cast<GLsizeiptr>(bytes), data);
+  size_ += bytes;
+  return offset;
+}
+
 GlName makeVertexArray() {
   GLuint id = 0;
   glCreateVertexArrays(1, &id);

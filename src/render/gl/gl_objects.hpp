@@ -49,6 +49,24 @@ GlName makeBuffer(std::span<const T> data, GLbitfield flags = 0) {
 }
 GlName makeVertexArray();
 
+// A buffer that data is appended to. Where an append does not fit, the data so far moves
+// into a new store of twice the size needed (the buffer's name changes: bind it again).
+class AppendBuffer {
+ public:
+  // The offset in bytes the appended data starts at.
+  std::size_t append(const void* data, std::size_t bytes);
+  template <class T>
+  std::size_t append(std::span<const T> data) {
+    return append(data.data(), data.size_bytes());
+  }
+  GLuint id() const { return buffer_.id(); }
+  std::size_t size() const { return size_; }
+
+ private:
+  GlName buffer_;
+  std::size_t size_ = 0, capacity_ = 0;
+};
+
 // An empty 2D texture of `levels` mip levels, filtered linearly (trilinearly when
 // mipmapped), clamped at the edges or repeating.
 GlName makeTextureStorage(GLenum format, int width, int height, int levels = 1,

@@ -69,14 +69,15 @@ void Forest::add(const TreeLibrary& library, int typeIndex, glm::vec3 base, floa
 
 void Forest::place(std::size_t i, const TreeLibrary& library, int typeIndex, glm::vec3 base,
                    float height_m, float crownRadius_m, float vigor, std::uint64_t individual) {
-  const TreeType& t = library.types()[typeIndex];
   Rng rng(streamKey(individual, purpose("render.instance")));
-  const float vertical = std::max(height_m, 0.01f) / t.height_m;
+  const float vertical = std::max(height_m, 0.01f) / library.typeHeight_m(typeIndex);
   // The crown may be narrower or wider than the type's (shade, open growth), within limits
   // that keep the mesh believable.
   const float widthRatio =
-      crownRadius_m > 0.0f ? std::clamp(crownRadius_m / (t.crownRadius_m * vertical), 0.7f, 1.4f)
-                           : 1.0f;
+      crownRadius_m > 0.0f
+          ? std::clamp(crownRadius_m / (library.typeCrownRadius_m(typeIndex) * vertical), 0.7f,
+                       1.4f)
+          : 1.0f;
   type[i] = typeIndex;
   position[i] = base;
   yaw[i] = static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi));
@@ -88,6 +89,20 @@ void Forest::place(std::size_t i, const TreeLibrary& library, int typeIndex, glm
   tint[i] = brightness * glm::mix(stressed, glm::vec3(1.0f), std::clamp(vigor, 0.0f, 1.0f));
   phase[i] = static_cast<float>(rng.uniform(0.0, 2.0 * std::numbers::pi));
   // lean, presence and the blend keep resize's values: upright, whole, one type.
+}
+
+std::vector<int> typesOf(const Forest& forest) {
+  std::vector<int> types(forest.type.begin(), forest.type.end());
+  for (const std::int32_t blend : forest.blendType)
+    if (blend >= 0) types.push_back(blend);
+  std::ranges::sort(types);
+  const auto repeated = std::ranges::unique(types);
+  types.erase(repeated.begin(), repeated.end());
+  return types;
+}
+
+void buildTypesOf(const Forest& forest, const TreeLibrary& library) {
+  library.build(typesOf(forest));
 }
 
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
@@ -114,12 +129,16 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
   tbb::parallel_for(std::size_t{0}, snapshot.trees.size(), [&](std::size_t i) {
     const TreeRow& tree = snapshot.trees[i];
     const int species = librarySpecies[tree.species];
-    const SiteShaping site = siteShapingOf(tree, library);
-    const int type = library.typeFor(species, tree.variantSeed, tree.height_m,
-                                     library.maxHeight_m(species), site.clearBole);
+    const int type =
+        library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species),
+                        siteShapingOf(tree, library).clearBole);
     forest.place(i, library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m),
                  tree.height_m, tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
-    forest.lean[i] = drawnLean(library, type, site);
+  });
+  // The leans read the built types' responses.
+  buildTypesOf(forest, library);
+  tbb::parallel_for(std::size_t{0}, snapshot.trees.size(), [&](std::size_t i) {
+    forest.lean[i] = drawnLean(library, forest.type[i], siteShapingOf(snapshot.trees[i], library));
   });
   return forest;
 }
@@ -134,7 +153,7 @@ SiteShaping siteShapingOf(const TreeRow& tree, const TreeLibrary& library) {
 }
 
 glm::vec2 drawnLean(const TreeLibrary& library, int type, const SiteShaping& site) {
-  return library.types()[type].leanResponse.basesFor(glm::vec2(shapingLean(site)));
+  return library.type(type).leanResponse.basesFor(glm::vec2(shapingLean(site)));
 }
 
 Forest demoForest(const Terrain& terrain, const TreeLibrary& library, std::size_t count,
@@ -157,6 +176,7 @@ Forest demoForest(const Terrain& terrain, const TreeLibrary& library, std::size_
     forest.add(library, type, worldFromMap(east, north, terrain.altitudeAt(east, north)), height,
                0.0f, static_cast<float>(rng.uniform(0.5, 1.0)), individual);
   }
+  buildTypesOf(forest, library);
   return forest;
 }
 

@@ -50,6 +50,13 @@ struct Forest {
              float height_m, float crownRadius_m, float vigor, std::uint64_t individual);
 };
 
+// The library types a forest draws (each tree's type and the one it blends into), each once
+// in ascending order.
+std::vector<int> typesOf(const Forest& forest);
+// Builds them side by side (TreeLibrary::build): what the forests made here do before they
+// are drawn, so that no type is built on its own in a draw.
+void buildTypesOf(const Forest& forest, const TreeLibrary& library);
+
 // The library's species index of each of the snapshot's species names; an InputError
 // (at `where`) names a species the library does not have.
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,

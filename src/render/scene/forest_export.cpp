@@ -149,7 +149,8 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
   if (rows.size() != forest.size())
     throw InternalError("the forest and its trees' rows differ in length");
   const bool withBillboards = options.billboards || options.lod == kBillboardLevel;
-  if (withBillboards && (!billboards || billboards->textures.size() != library.types().size()))
+  if (withBillboards &&
+      (!billboards || billboards->textures.size() != static_cast<std::size_t>(library.typeCount())))
     throw InternalError("billboards were asked for without their pictures");
   ForestGltfScene scene;
   scene.terrain = terrainPart(terrain);
@@ -159,12 +160,11 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
             scene.switchPixels.begin());
   scene.screenHeight_px = static_cast<float>(FrameSize{}.height);  // the frames' default
   // The trees of each type, in forest order.
-  const auto& types = library.types();
-  std::vector<std::vector<std::size_t>> members(types.size());
+  std::vector<std::vector<std::size_t>> members(library.typeCount());
   for (std::size_t i = 0; i < forest.size(); ++i) members[forest.type[i]].push_back(i);
-  for (std::size_t t = 0; t < types.size(); ++t) {
+  for (std::size_t t = 0; t < members.size(); ++t) {
     if (members[t].empty()) continue;
-    const TreeType& type = types[t];
+    const TreeType& type = library.type(static_cast<int>(t));
     ForestGltfType& out = scene.types.emplace_back();
     out.name =
         library.species()[type.species].name + "_variant" + std::to_string(type.variant) + "_age" +

@@ -8,9 +8,8 @@ namespace eco {
 
 Field canopyCover(const Forest& forest, const TreeLibrary& library, const Grid& grid) {
   std::vector<double> area(grid.cellCount(), 0.0);
-  const auto& types = library.types();
   for (std::size_t i = 0; i < forest.size(); ++i) {
-    const float radius = types[forest.type[i]].crownRadius_m * forest.scaleXZ[i];
+    const float radius = library.typeCrownRadius_m(forest.type[i]) * forest.scaleXZ[i];
     const double crown = std::numbers::pi * radius * radius * forest.presence[i];
     if (crown <= 0.0) continue;
     // Map east and north of the stem (world x east, z south), and its cell.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include <tbb/parallel_for.h>
 #include <glm/common.hpp>
 
 #include "render/scene/camera.hpp"
@@ -24,9 +25,11 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
   forest.reserve(before.trees.size() + after.trees.size());
   // The site's shaping, as the later snapshot has it where there is one (a tree's site
   // changes little in a few years; its form follows the later).
+  std::vector<SiteShaping> sites;
+  sites.reserve(before.trees.size() + after.trees.size());
   auto add = [&](const TreeRow& tree, const TreeRow& shapedAs, int species, float height,
                  float crown, float vigor, float presence) {
-    const SiteShaping site = siteShapingOf(shapedAs, library);
+    const SiteShaping& site = sites.emplace_back(siteShapingOf(shapedAs, library));
     const TreeLibrary::Blend blend = library.blendFor(species, tree.variantSeed, height,
                                                       library.maxHeight_m(species), site.clearBole);
     forest.add(library, blend.type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m), height,
@@ -34,7 +37,6 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
     forest.blendType.back() = blend.blendType;
     forest.blendWeight.back() = blend.blendWeight;
     forest.presence.back() = presence;
-    forest.lean.back() = drawnLean(library, blend.type, site);
   };
 
   std::vector<char> matched(after.trees.size(), 0);
@@ -67,6 +69,11 @@ Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, doub
         glm::mix(0.0f, tree.crownRadius_m, g), tree.vigor,
         static_cast<float>(std::clamp(year - established, 0.0, 1.0)));
   }
+  // The leans read the built types' responses.
+  buildTypesOf(forest, library);
+  tbb::parallel_for(std::size_t{0}, forest.size(), [&](std::size_t i) {
+    forest.lean[i] = drawnLean(library, forest.type[i], sites[i]);
+  });
   return forest;
 }
 

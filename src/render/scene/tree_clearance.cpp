@@ -26,8 +26,7 @@ TreeClearance::TreeClearance(const Forest& forest, const TreeLibrary& library)
   for (std::size_t i = 0; i < forest.size(); ++i) {
     const glm::vec2 p(forest.position[i].x, forest.position[i].z);
     lo = glm::min(lo, p), hi = glm::max(hi, p);
-    maxReach_m_ =
-        std::max(maxReach_m_, reachOf(library.types()[forest.type[i]]) * forest.scaleXZ[i]);
+    maxReach_m_ = std::max(maxReach_m_, reachOf(library.type(forest.type[i])) * forest.scaleXZ[i]);
   }
   origin_ = lo;
   columns_ = static_cast<int>((hi.x - lo.x) / kCell_m) + 1;
@@ -48,7 +47,7 @@ TreeClearance::TreeClearance(const Forest& forest, const TreeLibrary& library)
 }
 
 float TreeClearance::distanceTo(std::size_t i, glm::vec3 point) const {
-  const TreeType& type = library_.types()[forest_.type[i]];
+  const TreeType& type = library_.type(forest_.type[i]);
   const glm::vec3 base = forest_.position[i];
   const float horizontal = std::hypot(point.x - base.x, point.z - base.z);
   const float sliceHeight = type.height_m * forest_.scaleY[i] / TreeType::kEnvelopeBins;

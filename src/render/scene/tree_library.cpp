@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 
 #include "core/error.hpp"
@@ -52,6 +53,17 @@ std::array<float, TreeType::kEnvelopeBins> envelopeOf(const WindMesh& lod0, floa
   return envelope;
 }
 
+void measureSizes(TreeType& type, const SkeletonMeasures& rest) {
+  // An L-system may draw nothing in its first steps: such a type is empty, not a /0.
+  type.height_m = std::max(static_cast<float>(rest.height_m), 1e-3f);
+  type.crownRadius_m = static_cast<float>(rest.crownRadius_m);
+}
+
+void measureMeshes(TreeType& type) {
+  type.bounds = boundingSphere(type.meshes);
+  type.envelope_m = envelopeOf(type.meshes.lods[0], type.height_m);
+}
+
 }  // namespace
 
 LibrarySpecies loadLibrarySpecies(const std::filesystem::path& file) {
@@ -83,19 +95,14 @@ TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySetti
           type.age = settings.ageClasses[a];
           type.clearBole = settings.clearBoleClasses[c];
         }
+  // Every type's sizes now (typeFor() compares them), its meshes on first use.
   tbb::parallel_for(std::size_t{0}, types_.size(), [&](std::size_t i) {
     TreeType& type = types_[i];
-    const Species& s = species_[type.species];
-    TreeSkeleton rest;
-    type.meshes = buildWindLods(s, type.seed, type.age, &rest, type.clearBole);
-    if (settings.shaping)
-      type.leanResponse =
-          measureLeanResponse(s, type.seed, type.age, type.clearBole, type.meshes.lods[0]);
-    const CrownShade shade(rest, s);  // LOD0's leaves shade every level alike
-    for (WindMesh& lod : type.meshes.lods) shadeVertices(lod, shade);
+    measureSizes(
+        type, measure(restSkeleton(species_[type.species], type.seed, type.age, type.clearBole)));
     type.impostorSource = typeIndex(type.species, 0, type.ageClass, type.crownClass);
-    measureType(type, measure(rest));
   });
+  built_ = std::make_unique<std::once_flag[]>(types_.size());
   const int classes = static_cast<int>(settings.ageClasses.size());
   for (int s = 0; s < static_cast<int>(species.size()); ++s) {
     const std::optional<Ecology>& ecology = species[s].ecology;
@@ -107,11 +114,36 @@ TreeLibrary::TreeLibrary(std::vector<LibrarySpecies> species, const LibrarySetti
 }
 
 void measureType(TreeType& type, const SkeletonMeasures& rest) {
-  // An L-system may draw nothing in its first steps: such a type is empty, not a /0.
-  type.height_m = std::max(static_cast<float>(rest.height_m), 1e-3f);
-  type.crownRadius_m = static_cast<float>(rest.crownRadius_m);
-  type.bounds = boundingSphere(type.meshes);
-  type.envelope_m = envelopeOf(type.meshes.lods[0], type.height_m);
+  measureSizes(type, rest);
+  measureMeshes(type);
+}
+
+const TreeType& TreeLibrary::type(int index) const {
+  ECO_ASSERT(index >= 0 && index < typeCount(), "type " << index);
+  TreeType& type = types_[index];
+  if (grid_)
+    // The build runs TBB loops (an L-system's derivation): isolated, so that this thread
+    // does not take up another task of a loop around it meanwhile, which might ask for this
+    // very type and wait on itself.
+    std::call_once(built_[index], [&] { tbb::this_task_arena::isolate([&] { buildType(type); }); });
+  return type;
+}
+
+void TreeLibrary::build(std::span<const int> types) const {
+  tbb::parallel_for(std::size_t{0}, types.size(), [&](std::size_t i) { type(types[i]); });
+}
+
+void TreeLibrary::buildType(TreeType& type) const {
+  const Species& s = species_[type.species];
+  TreeSkeleton rest;
+  type.meshes = buildWindLods(s, type.seed, type.age, &rest, type.clearBole);
+  if (settings_.shaping)
+    type.leanResponse =
+        measureLeanResponse(s, type.seed, type.age, type.clearBole, type.meshes.lods[0]);
+  const CrownShade shade(rest, s);  // LOD0's leaves shade every level alike
+  for (WindMesh& lod : type.meshes.lods) shadeVertices(lod, shade);
+  measureMeshes(type);
+  ++builtCount_;
 }
 
 TreeLibrary::TreeLibrary(std::vector<Species> species, std::vector<TreeType> types)

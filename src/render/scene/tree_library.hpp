@@ -2,12 +2,18 @@
 // classes (times a few crown classes, with shaping), each built once by the model with its
 // three LODs and wind bases. A plant of a run is drawn as the type of its species, variant
 // (its variant seed), nearest age class and crown class, scaled to its height and crown.
+// A type's meshes are built when it is first used: a young run draws an eighth of the
+// types, and the meshes are most of the time it takes to open a run.
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <mutex>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -50,6 +56,8 @@ struct LibrarySettings {
   }
 };
 
+// One type of a library. Its grid place, seed and sizes are there from the start; its
+// bounds, envelope, meshes and lean response once it is built (TreeLibrary::type()).
 struct TreeType {
   int species = 0;
   int variant = 0;
@@ -91,7 +99,18 @@ class TreeLibrary {
   float maxHeight_m(int species) const { return maxHeight_m_[species]; }
   // The height of a seedling in its first year.
   float seedlingHeight_m(int species) const { return seedlingHeight_m_[species]; }
-  const std::vector<TreeType>& types() const { return types_; }
+  int typeCount() const { return static_cast<int>(types_.size()); }
+  // The type, built on its first use: from any thread, each type once, the same whatever
+  // the order.
+  const TreeType& type(int index) const;
+  // Builds these types (a forest's: typesOf) side by side; built ones are skipped.
+  void build(std::span<const int> types) const;
+  // How many types are built (all in a library of given types).
+  int builtTypeCount() const { return grid_ ? builtCount_.load() : typeCount(); }
+  // A type's height, crown radius and impostor source, without building it.
+  float typeHeight_m(int index) const { return types_[index].height_m; }
+  float typeCrownRadius_m(int index) const { return types_[index].crownRadius_m; }
+  int impostorSource(int index) const { return types_[index].impostorSource; }
   const LibrarySettings& settings() const { return settings_; }
   int typeIndex(int species, int variant, int ageClass, int crownClass = 0) const;
   // The type that draws a plant of this species, variant seed and height: its species'
@@ -117,11 +136,18 @@ class TreeLibrary {
   }
 
  private:
+  // Its meshes, lean response, bounds and envelope.
+  void buildType(TreeType& type) const;
+
   std::vector<Species> species_;
   std::vector<float> maxHeight_m_, seedlingHeight_m_;
   LibrarySettings settings_;
   bool grid_ = true;  // types are species x variants x age classes
-  std::vector<TreeType> types_;
+  // A grid type's meshes are filled in by type() on first use, once (`built_`); a library of
+  // given types has every type built.
+  mutable std::vector<TreeType> types_;
+  std::unique_ptr<std::once_flag[]> built_;
+  mutable std::atomic<int> builtCount_{0};
 };
 
 }  // namespace eco

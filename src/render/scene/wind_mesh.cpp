@@ -29,6 +29,15 @@ TreeBuildOptions windBuildOptions(const Species& species, std::uint64_t seed, do
   return options;
 }
 
+TreeSkeleton restSkeleton(const Species& species, std::uint64_t seed, double age,
+                          double clearBole) {
+  TreeBuildOptions options = windBuildOptions(species, seed, age, TreeWind{}, 0.0);
+  options.clearBole = clearBole;
+  TreeSkeleton skeleton;
+  buildTreeInto(species, options, skeleton);
+  return skeleton;
+}
+
 std::vector<WindMesh> buildWindMeshes(const Species& species, std::uint64_t seed, double age,
                                       std::span<const SkeletonMesher> meshers, int* windless,
                                       TreeSkeleton* rest, bool windBases, double clearBole) {

@@ -65,6 +65,11 @@ struct TreeWind {
 TreeBuildOptions windBuildOptions(const Species& species, std::uint64_t seed, double age,
                                   const TreeWind& wind, double t);
 
+// The tree's skeleton in its rest pose (no scene wind), as buildWindLods builds it: its
+// measures without the meshes.
+TreeSkeleton restSkeleton(const Species& species, std::uint64_t seed, double age,
+                          double clearBole = 0.0);
+
 // LOD0..2 of one tree with wind bases. Where a level's topology changes with the wind (it
 // should not: wind only turns frames), its bases stay zero and `windless` counts it.
 struct WindLods {

@@ -1,5 +1,7 @@
 #include "render/gl/billboards.hpp"
 
+#include <numeric>
+
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
@@ -17,14 +19,16 @@ constexpr ImpostorSettings kSmall = kBillboardImpostors;
 TEST(Billboards, EachPictureShowsTheTreeUprightWhereTheQuadPutsIt) {
   test::useHeadlessGl();
   const TreeLibrary& library = test::smallLibrary();
-  const Billboards billboards = bakeBillboards(library, kSmall);
-  ASSERT_EQ(billboards.textures.size(), library.types().size());
+  std::vector<int> every(library.typeCount());
+  std::iota(every.begin(), every.end(), 0);
+  const Billboards billboards = bakeBillboards(library, every, kSmall);
+  ASSERT_EQ(billboards.textures.size(), every.size());
   const std::array<glm::ivec2, 2> frames = billboardFrames(kSmall.frames);
-  for (std::size_t t = 0; t < library.types().size(); ++t) {
+  for (const int t : every) {
     const Image& picture = billboards.textures[t];
     ASSERT_EQ(picture.width, 2 * kSmall.tilePixels);
     ASSERT_EQ(picture.height, kSmall.tilePixels);
-    const TreeType& type = library.types()[t];
+    const TreeType& type = library.type(t);
     for (int view = 0; view < 2; ++view) {
       SCOPED_TRACE(testing::Message() << "type " << t << ", view " << view);
       // The stem base (the tree frame's origin) in the view's picture.
@@ -47,6 +51,16 @@ TEST(Billboards, EachPictureShowsTheTreeUprightWhereTheQuadPutsIt) {
       EXPECT_NEAR(lowestX, baseX, 4.0f);
     }
   }
+}
+
+TEST(Billboards, OnlyTheTypesAskedForArePictured) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const std::vector<int> asked{1};
+  const Billboards billboards = bakeBillboards(library, asked, kSmall);
+  ASSERT_EQ(billboards.textures.size(), static_cast<std::size_t>(library.typeCount()));
+  for (int t = 0; t < library.typeCount(); ++t)
+    EXPECT_EQ(billboards.textures[t].width, t == 1 ? 2 * kSmall.tilePixels : 0) << t;
 }
 
 }  // namespace

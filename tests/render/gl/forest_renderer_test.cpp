@@ -22,7 +22,7 @@ const glm::vec3 kLowSouthernSun = glm::normalize(glm::vec3(0.0f, 0.3f, 1.0f));
 Forest rowOfTrees(const TreeLibrary& library, int count) {
   Forest forest;
   const int type = library.typeIndex(1, 0, 1);
-  const float height = library.types()[type].height_m;
+  const float height = library.type(type).height_m;
   for (int i = 0; i < count; ++i)
     forest.add(library, type, worldFromMap(160, 26 + 20 * i, 100), height, 0.0f, 1.0f, i);
   forest.add(library, type, worldFromMap(160, 0, 100), height, 0.0f, 1.0f, 99);
@@ -52,7 +52,7 @@ TEST(ForestRenderer, CullsTreesOutsideTheViewAndCoarsensWithDistance) {
   const ForestStats lod0 = renderer.prepare(forest, camera, 640, 360, allLod0, {});
   EXPECT_EQ(lod0.instances[0], 30u);
   EXPECT_EQ(lod0.triangles, lod0.lod0Triangles);
-  EXPECT_EQ(lod0.triangles, 30u * library.types()[forest.type[0]].meshes.lods[0].triangleCount());
+  EXPECT_EQ(lod0.triangles, 30u * library.type(forest.type[0]).meshes.lods[0].triangleCount());
 }
 
 // The row of trees seen from the camera at its south end, for the shadow casters' tests.
@@ -116,7 +116,7 @@ TEST_F(ShadowCasting, ATreeOutOfViewCastsOnlyWhereItsShadowCanReachTheView) {
 
 // A cascade's texels decide who casts there: a tree shorter than one texel casts nothing.
 TEST_F(ShadowCasting, TreesSmallerThanACascadesTexelCastNothingThere) {
-  const float height = library.types()[forest.type[0]].height_m;
+  const float height = library.type(forest.type[0]).height_m;
   const ShadowBox fine = coveringTheRow(1.01f / height, kLowSouthernSun);
   const ShadowBox coarse = coveringTheRow(0.99f / height, kLowSouthernSun);
   EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&fine, 1}).shadowCasterCount(), 31u);
@@ -153,10 +153,10 @@ TEST(ForestRenderer, PresenceKeepsThatShareOfTheTreesPixels) {
   SceneRenderer scene(terrain, 46.0, &library);
   Forest forest;
   const int type = library.typeIndex(1, 0, 1);
-  forest.add(library, type, worldFromMap(160, 160, 100), library.types()[type].height_m, 0.0f, 1.0f,
+  forest.add(library, type, worldFromMap(160, 160, 100), library.type(type).height_m, 0.0f, 1.0f,
              1);
   Camera camera;
-  camera.position = worldFromMap(160, 140, 100 + 0.5 * library.types()[type].height_m);
+  camera.position = worldFromMap(160, 140, 100 + 0.5 * library.type(type).height_m);
   RenderOptions options;
   options.shadows = false;
   const RenderTarget target = RenderTarget::create(96, 96);
@@ -185,21 +185,23 @@ TEST(ForestRenderer, VariantsShareTheImpostorOfTheirSpeciesAndAgeClass) {
       EXPECT_EQ(renderer.impostorSource(library.typeIndex(0, v, a)), library.typeIndex(0, 0, a));
 }
 
-// An atlas is baked when a frame first draws its type's impostor source as a sprite (the
-// variants share their first one's), once; a tree drawn as a mesh needs none.
-TEST(ForestRenderer, BakesOneAtlasPerImpostorSourceWhenAFrameFirstDrawsIt) {
+// A level is uploaded when a frame first draws a type at it, and an atlas is baked when a
+// frame first draws its type's impostor source as a sprite (the variants share their first
+// one's), once, from the source's level bakeLod; a tree drawn as a mesh needs no atlas.
+TEST(ForestRenderer, UploadsLevelsAndBakesOneAtlasPerImpostorSourceWhenAFrameFirstDrawsThem) {
   test::useHeadlessGl();
   const TreeLibrary library({test::namedLibrarySpecies("shrub")},
                             LibrarySettings{.variants = 3, .ageClasses = {0.3, 1.0}});
   FrameUniformBuffer uniforms;
   const ImpostorSettings impostors;
   ForestRenderer renderer(library, impostors, uniforms);
-  std::size_t meshBytes = 0;
-  for (const TreeType& type : library.types())
-    for (const WindMesh& mesh : type.meshes.lods)
-      for (const WindPart& part : mesh.parts)
-        meshBytes += part.vertices.size() * sizeof(PackedTreeVertex) + part.indices.size() * 4;
-  EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes);
+  auto levelBytes = [&](int type, int level) {
+    std::size_t bytes = 0;
+    for (const WindPart& part : library.type(type).meshes.lods[level].parts)
+      bytes += part.vertices.size() * sizeof(PackedTreeVertex) + part.indices.size() * 4;
+    return bytes;
+  };
+  EXPECT_EQ(renderer.gpuMemory().meshBytes, 0u) << "nothing uploaded before a frame";
   EXPECT_EQ(renderer.gpuMemory().impostorBytes, 0u) << "nothing baked before a frame";
   // One atlas of albedo, normal and depth (RGBA8, mips add a third) per age class drawn.
   const std::size_t side = static_cast<std::size_t>(impostors.frames * impostors.tilePixels);
@@ -209,8 +211,8 @@ TEST(ForestRenderer, BakesOneAtlasPerImpostorSourceWhenAFrameFirstDrawsIt) {
   auto forestOf = [&](std::initializer_list<int> types) {
     Forest forest;
     for (const int type : types)
-      forest.add(library, type, worldFromMap(160, 60, 100), library.types()[type].height_m, 0.0f,
-                 1.0f, 1);
+      forest.add(library, type, worldFromMap(160, 60, 100), library.type(type).height_m, 0.0f, 1.0f,
+                 1);
     return forest;
   };
   auto frameAt = [&](const Forest& forest, int level) {
@@ -218,24 +220,37 @@ TEST(ForestRenderer, BakesOneAtlasPerImpostorSourceWhenAFrameFirstDrawsIt) {
     lod.forcedLevel = level;
     return renderer.prepare(forest, camera, 640, 360, lod, {});
   };
-  const Forest young = forestOf({library.typeIndex(0, 1, 0), library.typeIndex(0, 2, 0)});
+  const int first = library.typeIndex(0, 1, 0), second = library.typeIndex(0, 2, 0);
+  const int youngSource = library.typeIndex(0, 0, 0), oldSource = library.typeIndex(0, 0, 1);
+  const Forest young = forestOf({first, second});
   EXPECT_EQ(frameAt(young, 1).impostorBakeMs, 0.0) << "meshes need no atlas";
   EXPECT_EQ(renderer.gpuMemory().impostorBytes, 0u);
+  std::size_t meshBytes = levelBytes(first, 1) + levelBytes(second, 1);
+  EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes) << "the level drawn, of the types drawn";
+  frameAt(young, 1);
+  EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes) << "uploaded once";
   // Two variants of the young class as sprites: one atlas, their source's, baked once.
   EXPECT_GT(frameAt(young, kLevelImpostor).impostorBakeMs, 0.0);
   EXPECT_EQ(renderer.gpuMemory().impostorBytes, atlas);
+  meshBytes += levelBytes(youngSource, impostors.bakeLod);
+  EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes) << "the source's level it is baked from";
   EXPECT_EQ(frameAt(young, kLevelImpostor).impostorBakeMs, 0.0);
   // A young tree blending into the old class draws both: the old one's atlas too.
-  Forest blending = forestOf({library.typeIndex(0, 0, 0)});
-  blending.blendType[0] = library.typeIndex(0, 0, 1);
+  Forest blending = forestOf({youngSource});
+  blending.blendType[0] = oldSource;
   blending.blendWeight[0] = 0.5f;
   EXPECT_GT(frameAt(blending, kLevelImpostor).impostorBakeMs, 0.0);
   EXPECT_EQ(renderer.gpuMemory().impostorBytes, 2 * atlas);
-  // The meshes changed: the atlases are dropped and baked again when drawn.
+  EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes + levelBytes(oldSource, impostors.bakeLod));
+  // The meshes changed: they are uploaded again, and the atlases dropped and baked again, as
+  // frames draw them.
   renderer.reloadMeshes(true);
+  EXPECT_EQ(renderer.gpuMemory().meshBytes, 0u);
   EXPECT_EQ(renderer.gpuMemory().impostorBytes, 0u);
   EXPECT_GT(frameAt(blending, kLevelImpostor).impostorBakeMs, 0.0);
   EXPECT_EQ(renderer.gpuMemory().impostorBytes, 2 * atlas);
+  EXPECT_EQ(renderer.gpuMemory().meshBytes,
+            levelBytes(youngSource, impostors.bakeLod) + levelBytes(oldSource, impostors.bakeLod));
 }
 
 TEST(ForestRenderer, PackedVerticesKeepPositionsExactlyAndTheRestClosely) {
@@ -264,7 +279,7 @@ struct LoneMaple {
 
   LoneMaple() {
     const int type = library.typeIndex(1, 0, 1);
-    height_m = library.types()[type].height_m;
+    height_m = library.type(type).height_m;
     forest.add(library, type, worldFromMap(160, 160, 100), height_m, 0.0f, 1.0f, 1);
   }
   static int pictureSize(float pixels) { return static_cast<int>(2.0f * pixels); }

@@ -26,7 +26,7 @@ ReferenceScene referenceScene() {
   for (int i = 0; i < 40; ++i) {
     const double east = 100 + 13.0 * (i % 8) + 3.0 * (i / 8), north = 120 + 14.0 * (i / 8);
     const int type = library.typeIndex(i % 2, 0, (i / 3) % 2);
-    const float height = library.types()[type].height_m * (0.8f + 0.05f * (i % 5));
+    const float height = library.type(type).height_m * (0.8f + 0.05f * (i % 5));
     s.forest.add(library, type, worldFromMap(east, north, s.terrain.altitudeAt(east, north)),
                  height, 0.0f, 0.6f + 0.01f * i, static_cast<std::uint64_t>(i));
   }

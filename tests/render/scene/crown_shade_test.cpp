@@ -93,7 +93,7 @@ TEST(CrownShade, IsTheSameWhateverThreadComputesIt) {
 // leaves are darker than its outer ones at every level, and all levels agree.
 TEST(CrownShade, TheLibraryShadesEveryLevelOfATreeAlike) {
   const TreeLibrary& library = test::smallLibrary();
-  const TreeType& mature = library.types()[library.typeIndex(0, 0, 1)];
+  const TreeType& mature = library.type(library.typeIndex(0, 0, 1));
   for (int lod = 0; lod < kLodCount; ++lod) {
     float lo = 1.0f, hi = 0.0f;
     for (const WindPart& part : mature.meshes.lods[lod].parts)

@@ -107,7 +107,7 @@ TEST(ForestGltf, WindBasesAreVertexAttributesOfEveryTreePrimitive) {
   exportForest(scene.terrain, test::smallLibrary(), scene.forest, scene.rows, file,
                {.lod = 1, .wind = true});
   const tinygltf::Model model = test::loadGltf(file);
-  const TreeType& type = test::smallLibrary().types()[scene.forest.type[0]];
+  const TreeType& type = test::smallLibrary().type(scene.forest.type[0]);
   std::size_t primitives = 0;
   bool swaying = false;
   for (const tinygltf::Mesh& mesh : model.meshes) {
@@ -183,7 +183,7 @@ TEST(ForestGltf, ATriangleBudgetGoesToTheTallestTreesFirst) {
 // facing its direction: east's frame on the left half of the picture, south's on the right.
 TEST(ForestGltf, ABillboardIsTwoQuadsFacingTheirFrames) {
   EXPECT_EQ(billboardFrames(8), (std::array<glm::ivec2, 2>{glm::ivec2(7, 7), glm::ivec2(7, 0)}));
-  const TreeType& type = test::smallLibrary().types()[0];
+  const TreeType& type = test::smallLibrary().type(0);
   const TreeMesh mesh = billboardMesh(type, 8);
   ASSERT_EQ(mesh.parts.size(), 1u);
   const MeshPart& quads = mesh.parts[0];

@@ -16,7 +16,7 @@ namespace {
 void plant(Forest& forest, const TreeLibrary& library, double east, double north,
            float crownRadius_m) {
   const int type = library.typeIndex(0, 0, 1);
-  const TreeType& t = library.types()[type];
+  const TreeType& t = library.type(type);
   // Height chosen so that the crown radius needs no widening (add() keeps it within limits).
   const float height = t.height_m * crownRadius_m / t.crownRadius_m;
   forest.add(library, type, glm::vec3(worldFromMap(east, north, 100.0)), height, crownRadius_m,
@@ -36,7 +36,7 @@ TEST(CanopyCover, ACrownSmallerThanACellGoesToItsStemsCell) {
   plant(forest, library, 41.0, 38.0, 3.0f);  // in the cell centred at (40, 40) m
   const Field cover = canopyCover(forest, library, terrain.grid);
   const Grid& g = terrain.grid;
-  const float radius = library.types()[forest.type[0]].crownRadius_m * forest.scaleXZ[0];
+  const float radius = library.type(forest.type[0]).crownRadius_m * forest.scaleXZ[0];
   const double expected = 1.0 - std::exp(-std::numbers::pi * radius * radius / 100.0);
   const std::size_t cell = g.index(4, g.height - 1 - 4);
   EXPECT_NEAR(cover[cell], expected, 1e-5);
@@ -52,7 +52,7 @@ TEST(CanopyCover, AWideCrownIsSpreadOverTheCellsItCoversAndDenserStandsCoverMore
   Forest one;
   plant(one, library, 50.0, 50.0, 9.0f);
   const Field cover = canopyCover(one, library, terrain.grid);
-  ASSERT_NEAR(library.types()[one.type[0]].crownRadius_m * one.scaleXZ[0], 9.0f, 1e-3f);
+  ASSERT_NEAR(library.type(one.type[0]).crownRadius_m * one.scaleXZ[0], 9.0f, 1e-3f);
   // The 3 x 3 cells whose centres lie within 9 m (the next ones are 10 m away), alike.
   int covered = 0;
   for (float c : cover) covered += c > 0.0f;

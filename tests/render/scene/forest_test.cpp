@@ -35,10 +35,10 @@ TEST(Forest, ASnapshotPlantStandsAtItsPlaceAtItsHeight) {
   const Forest forest = forestFromSnapshot(snapshot, library, "run");
   ASSERT_EQ(forest.size(), 2u);
   EXPECT_EQ(forest.position[0], worldFromMap(10, 20, 300));
-  EXPECT_EQ(library.types()[forest.type[0]].species, 1);  // maple is the library's second
-  EXPECT_EQ(library.types()[forest.type[1]].species, 0);
+  EXPECT_EQ(library.type(forest.type[0]).species, 1);  // maple is the library's second
+  EXPECT_EQ(library.type(forest.type[1]).species, 0);
   for (std::size_t i = 0; i < 2; ++i) {
-    const float height = forest.scaleY[i] * library.types()[forest.type[i]].height_m;
+    const float height = forest.scaleY[i] * library.type(forest.type[i]).height_m;
     EXPECT_NEAR(height, snapshot.trees[i].height_m, 1e-4f);
     EXPECT_GE(forest.scaleXZ[i], 0.7f * forest.scaleY[i] - 1e-6f);
     EXPECT_LE(forest.scaleXZ[i], 1.4f * forest.scaleY[i] + 1e-6f);
@@ -65,7 +65,7 @@ TEST(Forest, WithShapingATreeLeansTowardItsLightAndTakesItsCrownClass) {
   const TreeLibrary& library = test::shapedLibrary();
   TreeSnapshot snapshot = edgeTree();
   Forest forest = forestFromSnapshot(snapshot, library, "run");
-  const TreeType& type = library.types()[forest.type[0]];
+  const TreeType& type = library.type(forest.type[0]);
   EXPECT_EQ(type.crownClass, library.crownClassFor(0.5));
   const glm::vec2 lean(shapingLean({.light = {0.5, 0.0}}));
   EXPECT_GT(lean.x, 0.0f);
@@ -83,8 +83,34 @@ TEST(Forest, WithoutShapingEveryTreeStandsUprightInTheOpenGrownCrownClass) {
   settings.ageClasses = {1.0};
   const TreeLibrary library({test::namedLibrarySpecies("beech")}, settings);
   const Forest forest = forestFromSnapshot(edgeTree(), library, "run");
-  EXPECT_EQ(library.types()[forest.type[0]].crownClass, 0);
+  EXPECT_EQ(library.type(forest.type[0]).crownClass, 0);
   EXPECT_EQ(forest.lean[0], glm::vec2(0.0f));
+}
+
+TEST(Forest, ASnapshotBuildsTheTypesItsTreesDrawAndNoOther) {
+  const TreeLibrary library(
+      {test::namedLibrarySpecies("beech"), test::namedLibrarySpecies("maple")},
+      LibrarySettings{.variants = 2, .ageClasses = {0.4, 1.0}});
+  EXPECT_EQ(library.builtTypeCount(), 0);
+  TreeSnapshot snapshot;
+  snapshot.speciesNames = {"maple"};
+  for (std::uint64_t id = 1; id <= 3; ++id)
+    snapshot.trees.push_back({.id = id, .species = 0, .height_m = 0.3f, .variantSeed = 4});
+  const Forest forest = forestFromSnapshot(snapshot, library, "run");
+  const std::vector<int> drawn{library.typeIndex(1, 0, 0)};  // seed 4: variant 0 of 2
+  EXPECT_EQ(typesOf(forest), drawn);
+  EXPECT_EQ(library.builtTypeCount(), 1);
+  library.type(library.typeIndex(0, 1, 1));  // any other type: built when it is asked for
+  EXPECT_EQ(library.builtTypeCount(), 2);
+}
+
+TEST(Forest, TypesOfListsEachTypeAndEachBlendTypeOnceInOrder) {
+  Forest forest;
+  forest.resize(4);
+  forest.type = {3, 1, 3, 0};
+  forest.blendType[1] = 5;
+  forest.blendType[3] = 1;
+  EXPECT_EQ(typesOf(forest), (std::vector<int>{0, 1, 3, 5}));
 }
 
 TEST(Forest, AppendCopiesEveryArrayOfATree) {

@@ -66,7 +66,7 @@ const TreeLibrary& library() {
 }
 
 float heightOf(const Forest& f, std::size_t i) {
-  return f.scaleY[i] * library().types()[f.type[i]].height_m;
+  return f.scaleY[i] * library().type(f.type[i]).height_m;
 }
 
 TEST(GrowthTimeline, MatchesTheSnapshotsAtTheirYears) {
@@ -109,7 +109,7 @@ TEST(GrowthTimeline, TreesBetweenAgeClassesBlendTheTwo) {
       EXPECT_GE(f.blendWeight[i], 0.0f);
       EXPECT_LE(f.blendWeight[i], 1.0f);
       if (f.blendType[i] >= 0) {
-        EXPECT_EQ(lib.types()[f.blendType[i]].ageClass, lib.types()[f.type[i]].ageClass + 1);
+        EXPECT_EQ(lib.type(f.blendType[i]).ageClass, lib.type(f.type[i]).ageClass + 1);
       }
     }
   }

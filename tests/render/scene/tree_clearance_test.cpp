@@ -20,7 +20,7 @@ float nearestVertex(const Forest& forest, const TreeLibrary& library, glm::vec3 
     const glm::vec3 base = forest.position[i];
     if (glm::distance(base, point) > 60.0f) continue;
     const float c = std::cos(forest.yaw[i]), s = std::sin(forest.yaw[i]);
-    for (const WindPart& part : library.types()[forest.type[i]].meshes.lods[0].parts)
+    for (const WindPart& part : library.type(forest.type[i]).meshes.lods[0].parts)
       for (const TreeVertex& v : part.vertices) {
         const glm::vec3 scaled(v.position.x * forest.scaleXZ[i], v.position.y * forest.scaleY[i],
                                v.position.z * forest.scaleXZ[i]);
@@ -38,7 +38,7 @@ int matureBeech(const TreeLibrary& library) {
 
 TEST(TreeEnvelope, HoldsTheWholeMeshAndIsTheTrunkNearTheGround) {
   const TreeLibrary& library = test::smallLibrary();
-  const TreeType& type = library.types()[matureBeech(library)];
+  const TreeType& type = library.type(matureBeech(library));
   const float widest = *std::max_element(type.envelope_m.begin(), type.envelope_m.end());
   EXPECT_NEAR(widest, type.crownRadius_m, 0.05f * type.crownRadius_m + 0.05f);
   // The lowest slice is the bole: far narrower than the crown.
@@ -62,7 +62,7 @@ TEST(TreeClearance, NeverOverstatesTheDistanceToTheTreeAsDrawn) {
   }
   EXPECT_GT(far, 20);  // not everything is "inside"
   // At eye height beside the trunk the distance is the bole's: the stem's reach away.
-  const TreeType& type = library.types()[forest.type[0]];
+  const TreeType& type = library.type(forest.type[0]);
   const glm::vec3 beside(3.0f, 1.7f, 0.0f);
   EXPECT_NEAR(clearance.at(beside, 100.0f), 3.0f - type.envelope_m[1] * forest.scaleXZ[0], 0.1f);
   // Nothing within `beyond`: `beyond` itself.

@@ -46,33 +46,49 @@ std::vector<StandMeasures> measureStands(const Plants& p,
   auto classOf = [](float height_m) {
     return std::clamp(static_cast<int>(height_m / kHeightClass_m), 0, kHeightClasses - 1);
   };
-  // Each species, and all of them (the last group), side by side; each sums in plant order.
-  tbb::parallel_for(std::size_t{0}, all + 1, [&](std::size_t group) {
-    auto inGroup = [&](std::size_t i) { return group == all || p.species[i] == group; };
-    StandTally tally;
-    std::array<std::size_t, kHeightClasses> perClass{};
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (!inGroup(i)) continue;
-      ++perClass[classOf(p.height_m[i])];
-      tally.add(p.dbh_m[i], p.height_m[i], species[p.species[i]].ecology.life.formFactor);
+  // Each species, and all of them (the last group), tallied in one pass in plant order: a
+  // group's sums take its plants in the same order whatever the others.
+  std::vector<StandTally> tallies(all + 1);
+  std::vector<std::array<std::size_t, kHeightClasses>> perClass(all + 1);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::size_t s = p.species[i];
+    const int c = classOf(p.height_m[i]);
+    const double formFactor = species[s].ecology.life.formFactor;
+    for (const std::size_t group : {s, all}) {
+      ++perClass[group][c];
+      tallies[group].add(p.dbh_m[i], p.height_m[i], formFactor);
     }
-    StandMeasures& m = measures[group];
-    m = tally.perHectare(area_ha);
-    // The 100 tallest per hectare (all of them on a smaller stand).
-    const std::size_t plants = std::accumulate(perClass.begin(), perClass.end(), std::size_t{0});
-    const std::size_t tallest =
+  }
+  // The 100 tallest per hectare (all of them on a smaller stand): the heights of each group's
+  // plants in the classes that hold them, gathered in one more pass.
+  std::vector<std::size_t> tallest(all + 1, 0);
+  std::vector<int> lowest(all + 1, kHeightClasses);
+  for (std::size_t group = 0; group <= all; ++group) {
+    measures[group] = tallies[group].perHectare(area_ha);
+    const std::size_t plants =
+        std::accumulate(perClass[group].begin(), perClass[group].end(), std::size_t{0});
+    tallest[group] =
         std::min(plants, static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
-    if (tallest == 0 || area_ha <= 0.0) return;
-    int lowest = kHeightClasses - 1;
-    for (std::size_t above = perClass[lowest]; above < tallest;) above += perClass[--lowest];
-    std::vector<float> h;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (inGroup(i) && classOf(p.height_m[i]) >= lowest) h.push_back(p.height_m[i]);
-    std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(tallest - 1), h.end(),
+    if (tallest[group] == 0 || area_ha <= 0.0) continue;
+    lowest[group] = kHeightClasses - 1;
+    for (std::size_t above = perClass[group][lowest[group]]; above < tallest[group];)
+      above += perClass[group][--lowest[group]];
+  }
+  std::vector<std::vector<float>> heights(all + 1);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const int c = classOf(p.height_m[i]);
+    for (const std::size_t group : {static_cast<std::size_t>(p.species[i]), all})
+      if (c >= lowest[group]) heights[group].push_back(p.height_m[i]);
+  }
+  tbb::parallel_for(std::size_t{0}, all + 1, [&](std::size_t group) {
+    std::vector<float>& h = heights[group];
+    if (lowest[group] == kHeightClasses) return;
+    const std::size_t n = tallest[group];
+    std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(n - 1), h.end(),
                      std::greater<>());
     double sum = 0.0;
-    for (std::size_t k = 0; k < tallest; ++k) sum += h[k];
-    m.dominantHeight_m = sum / static_cast<double>(tallest);
+    for (std::size_t k = 0; k < n; ++k) sum += h[k];
+    measures[group].dominantHeight_m = sum / static_cast<double>(n);
   });
   return measures;
 }

@@ -1,6 +1,7 @@
 #include "sim/run/run_outputs.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -43,22 +44,26 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem, const PlanYear& pl
   std::vector<std::vector<std::uint8_t>> covered(static_cast<std::size_t>(speciesCount));
   std::vector<StandMeasures> measures;
   double densest_m2PerHa = 0.0;
-  // Each species' row, the stand's (the last row), the forester's measures and the densest
-  // hectare are independent: they run side by side, each summing in plant order, so the
-  // figures do not depend on the thread count. Only the species' rows stamp crowns: the
-  // stand covers the cells some species covers.
+  for (std::vector<std::uint8_t>& cells : covered) cells.assign(g.cellCount(), 0);
+  // The counts and heights, the crowns, the forester's measures and the densest hectare are
+  // independent: they run side by side. The sums go in plant order, so the figures do not
+  // depend on the thread count; the crowns are stamped side by side (a cell that several
+  // crowns cover is set by each). Only the species' crowns are stamped: the stand covers
+  // the cells some species covers.
   tbb::parallel_invoke(
       [&] {
-        tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t r) {
-          const bool stand = r + 1 == rows.size();
-          if (!stand) covered[r].assign(g.cellCount(), 0);
-          for (std::size_t i = 0; i < p.size(); ++i) {
-            if (!stand && p.species[i] != r) continue;
+        for (std::size_t i = 0; i < p.size(); ++i)
+          for (const std::size_t r : {static_cast<std::size_t>(p.species[i]), rows.size() - 1}) {
             ++rows[r].alive;
             heightSum[r] += p.height_m[i];
-            if (!stand)
-              forCellsUnderCrown(g, p, i, [&](std::size_t cell) { covered[r][cell] = 1; });
           }
+      },
+      [&] {
+        tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+          std::vector<std::uint8_t>& cells = covered[p.species[i]];
+          forCellsUnderCrown(g, p, i, [&](std::size_t cell) {
+            std::atomic_ref<std::uint8_t>(cells[cell]).store(1, std::memory_order_relaxed);
+          });
         });
       },
       [&] { measures = measureStands(p, ecosystem.species(), area_ha); },

@@ -53,6 +53,7 @@ nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
             {"impostors", mebibytes(still.treeMemory.impostorBytes)}}},
           {"load_ms", loadMs},
           {"renderer_setup_ms", still.setupMs},
+          {"mesh_upload_ms", s.forest.meshUploadMs},
           {"impostor_bake_ms", s.forest.impostorBakeMs},
           {"prepare_ms", s.prepareMs},
           {"frame_ms", s.frameMs}};

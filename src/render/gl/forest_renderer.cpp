@@ -147,7 +147,7 @@ void ForestRenderer::resetMeshes() {
   atlases_.resize(library_.typeCount());
 }
 
-void ForestRenderer::uploadLevels(std::span<const std::pair<int, int>> levels) {
+bool ForestRenderer::uploadLevels(std::span<const std::pair<int, int>> levels) {
   // Appended to the buffers together: each append may copy what they hold.
   std::vector<PackedTreeVertex> vertices;
   std::vector<std::uint32_t> indices;
@@ -164,12 +164,13 @@ void ForestRenderer::uploadLevels(std::span<const std::pair<int, int>> levels) {
       indices.insert(indices.end(), part.indices.begin(), part.indices.end());
     }
   }
-  if (vertices.empty()) return;
+  if (vertices.empty()) return false;
   vertices_.append(std::span<const PackedTreeVertex>(vertices));
   indices_.append(std::span<const std::uint32_t>(indices));
   gpuMemory_.meshBytes = vertices_.size() + indices_.size();
   glVertexArrayVertexBuffer(meshArray_.id(), 0, vertices_.id(), 0, sizeof(PackedTreeVertex));
   glVertexArrayElementBuffer(meshArray_.id(), indices_.id());
+  return true;
 }
 
 void ForestRenderer::reloadMeshes(bool rebakeImpostors) {
@@ -430,7 +431,11 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
         unbaked.push_back(static_cast<int>(t));
         levels.emplace_back(static_cast<int>(t), impostorSettings_.bakeLod);
       }
-    uploadLevels(levels);
+    const auto uploadStart = std::chrono::steady_clock::now();
+    if (uploadLevels(levels))
+      stats.meshUploadMs =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uploadStart)
+              .count();
     if (!unbaked.empty()) {
       const auto bakeStart = std::chrono::steady_clock::now();
       bakeAtlases(unbaked);

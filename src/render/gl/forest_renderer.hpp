@@ -81,7 +81,8 @@ class ForestRenderer {
   void reloadMeshes(bool rebakeImpostors);
 
   // Culls, picks levels and fills the instance buffer for this camera and the shadow
-  // cascades (none: no shadows); first bakes the atlases of the types it draws as impostors
+  // cascades (none: no shadows); first uploads the levels it draws that are not yet
+  // (ForestStats::meshUploadMs) and bakes the atlases of the types it draws as impostors
   // that have none (ForestStats::impostorBakeMs).
   ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
                       const LodSettings& lod, std::span<const ShadowBox> shadows);
@@ -133,8 +134,8 @@ class ForestRenderer {
                      const std::function<Bucket(std::size_t)>& bucketOf) const;
   // Empties the mesh buffers and makes the vertex arrays that draw from them.
   void resetMeshes();
-  // Uploads the levels (type, level) that are not yet, each once.
-  void uploadLevels(std::span<const std::pair<int, int>> levels);
+  // Uploads the levels (type, level) that are not yet, each once; whether any was.
+  bool uploadLevels(std::span<const std::pair<int, int>> levels);
   // Bakes the atlases of these impostor sources.
   void bakeAtlases(const std::vector<int>& sources);
   // A target of frames × frames tiles (albedo, normal, depth) and the baking pass's state:

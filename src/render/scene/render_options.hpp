@@ -43,9 +43,12 @@ struct ForestStats {
   std::size_t triangles = 0;                         // drawn in the colour pass
   std::size_t lod0Triangles = 0;                     // the same trees all at LOD0, for comparison
   std::array<std::size_t, kLevelCount> shadowCasters{};  // per level it casts with
-  // Impostor atlases baked for the types this frame was the first to draw as sprites: the
-  // renderer's setup, not the frame's cost (left out of FrameStats' times).
+  // Impostor atlases baked for the types this frame was the first to draw as sprites, and
+  // the levels it was the first to draw uploaded: the renderer's setup, not the frame's cost
+  // (left out of FrameStats' times).
   double impostorBakeMs = 0.0;
+  double meshUploadMs = 0.0;
+  double setupMs() const { return impostorBakeMs + meshUploadMs; }
   std::size_t shadowCasterCount() const {
     return std::accumulate(shadowCasters.begin(), shadowCasters.end(), std::size_t{0});
   }

@@ -223,11 +223,13 @@ TEST(ForestRenderer, UploadsLevelsAndBakesOneAtlasPerImpostorSourceWhenAFrameFir
   const int first = library.typeIndex(0, 1, 0), second = library.typeIndex(0, 2, 0);
   const int youngSource = library.typeIndex(0, 0, 0), oldSource = library.typeIndex(0, 0, 1);
   const Forest young = forestOf({first, second});
-  EXPECT_EQ(frameAt(young, 1).impostorBakeMs, 0.0) << "meshes need no atlas";
+  const ForestStats firstFrame = frameAt(young, 1);
+  EXPECT_EQ(firstFrame.impostorBakeMs, 0.0) << "meshes need no atlas";
+  EXPECT_GT(firstFrame.meshUploadMs, 0.0);
   EXPECT_EQ(renderer.gpuMemory().impostorBytes, 0u);
   std::size_t meshBytes = levelBytes(first, 1) + levelBytes(second, 1);
   EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes) << "the level drawn, of the types drawn";
-  frameAt(young, 1);
+  EXPECT_EQ(frameAt(young, 1).meshUploadMs, 0.0);
   EXPECT_EQ(renderer.gpuMemory().meshBytes, meshBytes) << "uploaded once";
   // Two variants of the young class as sprites: one atlas, their source's, baked once.
   EXPECT_GT(frameAt(young, kLevelImpostor).impostorBakeMs, 0.0);

@@ -153,7 +153,7 @@ bool ForestRenderer::uploadLevels(std::span<const std::pair<int, int>> levels) {
   std::vector<std::uint32_t> indices;
   const std::size_t firstVertex = vertices_.size() / sizeof(PackedTreeVertex);
   const std::size_t firstIndex = indices_.size() / sizeof(std::uint32_t);
-  for (const auto [type, lod] : levels) {
+  for (const auto& [type, lod] : levels) {
     if (uploaded_[type][lod]) continue;
     uploaded_[type][lod] = true;
     for (const WindPart& part : library_.type(type).meshes.lods[lod].parts) {

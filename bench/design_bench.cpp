@@ -20,6 +20,7 @@
 #include <imgui.h>
 
 #include "app/design_panel.hpp"
+#include "core/stopwatch.hpp"
 #include "model/design/design_session.hpp"
 #include "model/species.hpp"
 #include "render/gl/background_preview.hpp"
@@ -31,9 +32,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using eco::millisecondsSince;
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());

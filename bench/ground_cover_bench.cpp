@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/stopwatch.hpp"
 #include "render/gl/gl_context.hpp"
 #include "render/gl/scene_renderer.hpp"
 #include "render/scene/frame_size.hpp"
@@ -21,10 +22,7 @@
 
 namespace {
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
+using eco::millisecondsSince;
 
 }  // namespace
 
@@ -48,14 +46,13 @@ int main(int argc, char** argv) {
 
   std::printf("%s, %dx%d, %zu trees, ground camera\n", eco::glDescription().c_str(), size.width,
               size.height, trees);
-  std::printf("%9s | %7s %7s | %10s %10s | %12s %9s\n", "quality", "radius", "tufts",
-              "scatter ms", "frame ms", "without ms", "added");
+  std::printf("%9s | %7s %7s | %10s %10s | %12s %9s\n", "quality", "radius", "tufts", "scatter ms",
+              "frame ms", "without ms", "added");
   for (eco::RenderQuality quality :
        {eco::RenderQuality::Draft, eco::RenderQuality::Balanced, eco::RenderQuality::High}) {
     eco::SceneRenderer renderer(terrain, scenario.climate.latitude_deg, &library,
                                 eco::impostorSettingsFor(quality));
-    renderer.setGroundMoisture(
-        eco::moistureOf(terrain, scenario.climate.annualPrecipitation_mm));
+    renderer.setGroundMoisture(eco::moistureOf(terrain, scenario.climate.annualPrecipitation_mm));
     renderer.setForestFloor(forest);
     eco::RenderOptions options;
     options.lod.switchPixels = eco::switchPixelsFor(quality);

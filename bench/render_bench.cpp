@@ -19,6 +19,7 @@
 
 #include <tbb/global_control.h>
 
+#include "core/stopwatch.hpp"
 #include "render/gl/gl_context.hpp"
 #include "render/gl/scene_renderer.hpp"
 #include "render/scene/camera.hpp"
@@ -28,10 +29,7 @@
 
 namespace {
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
+using eco::millisecondsSince;
 
 double meanDifference(const eco::Image& a, const eco::Image& b) {
   double sum = 0.0;

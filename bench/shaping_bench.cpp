@@ -29,6 +29,7 @@
 #include <glm/geometric.hpp>
 
 #include "bench_run.hpp"
+#include "core/stopwatch.hpp"
 #include "model/mesh/lod.hpp"
 #include "model/skeleton.hpp"
 #include "model/tree_generator.hpp"
@@ -44,10 +45,7 @@
 
 namespace {
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
+using eco::millisecondsSince;
 
 double mebibytes(std::size_t bytes) {
   return static_cast<double>(bytes) / (1024.0 * 1024.0);

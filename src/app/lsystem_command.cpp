@@ -9,6 +9,7 @@
 
 #include "app/data_paths.hpp"
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "model/export/tree_export.hpp"
 #include "model/lsystem/deriver.hpp"
 #include "model/lsystem/parser.hpp"
@@ -29,11 +30,6 @@ struct LSystemArguments {
   std::string out;
   int lod = 0;
 };
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 void runLSystem(const LSystemArguments& args) {
   const std::filesystem::path path = resolveLSystem(args.file);

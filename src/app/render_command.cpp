@@ -9,6 +9,7 @@
 #include "app/scene_source.hpp"
 #include "app/view_options.hpp"
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "render/gl/gl_context.hpp"
 #include "sim/image_io.hpp"
 
@@ -24,11 +25,6 @@ struct RenderArgs {
   std::size_t demoTrees = 0;
   ViewOptions view;
 };
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 double mebibytes(std::size_t bytes) {
   return static_cast<double>(bytes) / (1024.0 * 1024.0);

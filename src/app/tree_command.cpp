@@ -9,6 +9,7 @@
 
 #include "app/data_paths.hpp"
 #include "core/frames.hpp"
+#include "core/stopwatch.hpp"
 #include "model/export/tree_export.hpp"
 #include "model/mesh/lod.hpp"
 #include "model/tree_generator.hpp"
@@ -45,7 +46,7 @@ void runTree(const TreeArguments& args) {
   auto start = Clock::now();
   TreeSkeleton skeleton = buildTree(species, options);
   TreeMesh mesh = buildLod(skeleton, species, lod, args.sides);
-  double buildMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  double buildMs = millisecondsSince(start);
 
   if (!args.out.empty()) exportTree(mesh, species, args.out);
 

@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include "core/stopwatch.hpp"
 #include "model/mesh/textures.hpp"
 
 namespace eco {
@@ -432,16 +433,11 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
         levels.emplace_back(static_cast<int>(t), impostorSettings_.bakeLod);
       }
     const auto uploadStart = std::chrono::steady_clock::now();
-    if (uploadLevels(levels))
-      stats.meshUploadMs =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uploadStart)
-              .count();
+    if (uploadLevels(levels)) stats.meshUploadMs = millisecondsSince(uploadStart);
     if (!unbaked.empty()) {
       const auto bakeStart = std::chrono::steady_clock::now();
       bakeAtlases(unbaked);
-      stats.impostorBakeMs =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - bakeStart)
-              .count();
+      stats.impostorBakeMs = millisecondsSince(bakeStart);
     }
   }
   GLuint next = 0;

@@ -7,17 +7,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/frames.hpp"
+#include "core/stopwatch.hpp"
 
 namespace eco {
 namespace {
 
 // Clear air: a meteorological visibility of 100 km (Koschmieder: 3.9 / density).
 constexpr float kClearAirFogDensity = 3.9f / 100000.0f;
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/frames.hpp"
+#include "core/stopwatch.hpp"
 #include "core/thread_priority.hpp"
 #include "render/scene/camera_controller.hpp"
 #include "render/scene/crown_shade.hpp"
@@ -93,7 +94,7 @@ PreviewScene buildPreview(const Species& edited, const PreviewSettings& settings
   const auto start = Clock::now();
   BuiltTree main =
       buildTree(edited, kPreviewEdited, settings.seed, settings.age, settings.level, settings.hint);
-  scene.stats.buildMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  scene.stats.buildMs = millisecondsSince(start);
   scene.stats.segments = main.measures.segments;
   scene.stats.leaves = main.leaves;
   scene.stats.height_m = main.measures.height_m;

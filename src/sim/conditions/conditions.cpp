@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/memory.hpp"
+#include "core/stopwatch.hpp"
 #include "sim/conditions/moisture.hpp"
 #include "sim/conditions/slope.hpp"
 #include "sim/conditions/windiness.hpp"
@@ -33,7 +34,7 @@ ConditionFields computeConditions(const Terrain& terrain, const Climate& climate
     if (progress) progress(name, 0.0);
     auto start = Clock::now();
     work();
-    double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    double ms = millisecondsSince(start);
     if (report) report->fieldMilliseconds.emplace_back(name, ms);
     if (progress) progress(name, 1.0);
     return ms;

@@ -47,12 +47,21 @@ void exportTreesGeoJson(const ExportArgs& args, const SceneSource& source, int y
       grid.epsg != 0 ? fmt::format("EPSG:{}", grid.epsg) : std::string("the map's local metres"));
 }
 
+// The trees as the run's CSV snapshot (a binary snapshot, docs/run_folder.md, for tools
+// that read CSV).
+void exportTreesCsv(const ExportArgs& args, const SceneSource& source, int year) {
+  const TreeSnapshot snapshot = snapshotToExport(args, source, year);
+  writeTrees(args.out, snapshot, SnapshotFormat::Csv);
+  std::cout << fmt::format("{}: year {}, {} trees as CSV rows\n", args.out, year,
+                           snapshot.trees.size());
+}
+
 void runExport(const ExportArgs& args) {
   const std::filesystem::path out(args.out);
-  const bool geojson = out.extension() == ".geojson";
-  if (out.extension() != ".glb" && out.extension() != ".gltf" && !geojson)
+  const bool geojson = out.extension() == ".geojson", csv = out.extension() == ".csv";
+  if (out.extension() != ".glb" && out.extension() != ".gltf" && !geojson && !csv)
     throw InputError({args.out, 0, "--out"},
-                     "the forest is written as .glb or .gltf, its trees as .geojson");
+                     "the forest is written as .glb or .gltf, its trees as .geojson or .csv");
   requireOutputFolder(out);
   ForestGltfOptions options;
   options.instancing = args.instancing == "gpu" ? Instancing::Gpu : Instancing::Nodes;
@@ -69,6 +78,7 @@ void runExport(const ExportArgs& args) {
   const int year = args.year.value_or(source.defaultYear());
   source.requireSnapshot(year);
   if (geojson) return exportTreesGeoJson(args, source, year);
+  if (csv) return exportTreesCsv(args, source, year);
   const TreeSnapshot snapshot = snapshotToExport(args, source, year);
   source.buildLibrary(LibrarySettings::shaped(!args.noShaping));
   const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
@@ -104,8 +114,9 @@ void addExportCommand(CLI::App& app) {
   command->add_option("--year", args->year, "Snapshot year (default: the run's last)");
   command
       ->add_option("--out", args->out,
-                   "forest.glb or forest.gltf (terrain and trees), or trees.geojson (the trees "
-                   "as points in the terrain's coordinates)")
+                   "forest.glb or forest.gltf (terrain and trees), trees.geojson (the trees "
+                   "as points in the terrain's coordinates) or trees.csv (the snapshot's rows, "
+                   "of a binary snapshot too)")
       ->required();
   CLI::Option* maxTriangles =
       command

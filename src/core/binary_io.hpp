@@ -80,6 +80,7 @@ class BinaryReader {
   }
   bool failed() const { return failed_; }
   bool atEnd() const { return offset_ == bytes_.size(); }
+  std::size_t remaining() const { return bytes_.size() - offset_; }
 
  private:
   bool take(std::uint64_t size) {

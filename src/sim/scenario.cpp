@@ -153,6 +153,12 @@ Scenario loadScenario(const std::filesystem::path& file) {
         output->integer("snapshot_every_years", s.output.snapshotEveryYears, {1, 100000}));
     s.output.checkpointEveryYears = static_cast<int>(
         output->integer("checkpoint_every_years", s.output.checkpointEveryYears, {1, 100000}));
+    const std::string format = output->string("snapshot_format", "csv");
+    if (format == "binary")
+      s.output.snapshotFormat = SnapshotFormat::Binary;
+    else if (format != "csv")
+      output->fail("snapshot_format",
+                   "unknown snapshot format '" + format + "' (expected csv or binary)");
     output->finish();
   }
   root.finish();

@@ -80,9 +80,14 @@ struct ScenarioSpecies {
   SourceLocation where;                 // the [[species]] entry, for errors about this species
 };
 
+// How tree snapshots are written (sim/run/trees_file.hpp): CSV for any tool, or binary
+// records, fewer bytes and no numbers to format, for landscapes of millions of plants.
+enum class SnapshotFormat { Csv, Binary };
+
 struct OutputSettings {
   std::filesystem::path dir;  // relative to the working directory; default out/<name>
   int snapshotEveryYears = 10;
+  SnapshotFormat snapshotFormat = SnapshotFormat::Csv;
   // The checkpoint (all plants) is rewritten every this many years, at the last year and
   // when a run is stopped; a run killed outright resumes from the last one written.
   int checkpointEveryYears = 1;

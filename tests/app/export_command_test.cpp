@@ -1,6 +1,7 @@
 // Runs `ecoforest export` as a user would, and opens what it writes in the clients users
 // have: the Khronos validator, Blender, assimp and three.js (each skipped with a message
 // where it is not installed; scripts/test installs them).
+#include <algorithm>
 #include <map>
 #include <set>
 #include <sstream>
@@ -30,8 +31,7 @@ bool installed(const std::string& program) {
 
 // The snapshot a test exports, and the year-20 export of it in one instancing mode.
 const eco::TreeSnapshot& snapshot() {
-  static const eco::TreeSnapshot s =
-      eco::readTreesCsv(shortDefaultRun() / "trees" / "year_0020.csv");
+  static const eco::TreeSnapshot s = eco::readTrees(shortDefaultRun() / "trees" / "year_0020.csv");
   return s;
 }
 const std::filesystem::path& exported(const std::string& instancing) {
@@ -233,7 +233,7 @@ TEST(ExportCommand, ThreeJsCountsTheGpuInstances) {
 
 TEST(ExportCommand, AFullDiskOrAReadOnlyFolderIsAClearErrorAndLeavesNothing) {
   const std::string run = shortDefaultRun().string();
-  for (const char* file : {"forest.glb", "forest.gltf", "trees.geojson"}) {
+  for (const char* file : {"forest.glb", "forest.gltf", "trees.geojson", "trees.csv"}) {
     const std::string out = " --out \"$SPACE/" + std::string(file) + "\"";
     eco::test::expectFullAndReadOnlyDisksFailCleanly("export " + run + out, 8,
                                                      "No space left on device");
@@ -278,6 +278,43 @@ TEST(ExportCommand, AnEditedScenarioUnderARunIsRefused) {
       << r.output;
   EXPECT_NE(r.output.find("has changed since this run"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "b.glb"));
+}
+
+// A run of the default scenario with binary snapshots (`snapshot_format = "binary"`): its
+// snapshot exported as CSV is, byte for byte, the snapshot of the same run written as CSV,
+// and `render` draws it as it draws any run.
+TEST(ExportCommand, ABinarySnapshotExportsAsTheCsvSnapshotOfTheSameRun) {
+  const auto dir = eco::test::freshDirectory("app_export_binary");
+  std::string scenario =
+      eco::test::readFile(std::filesystem::path(ECOFOREST_DATA_DIR) / "default.toml");
+  const std::string species = "file = \"species/";
+  for (std::size_t at = scenario.find(species); at != std::string::npos;
+       at = scenario.find(species, at + 1))
+    scenario.replace(at, species.size(),
+                     "file = \"" + std::string(ECOFOREST_DATA_DIR) + "/species/");
+  eco::test::writeFile(dir / "csv.toml", scenario);
+  eco::test::writeFile(dir / "binary.toml", scenario + "snapshot_format = \"binary\"\n");
+  for (const char* format : {"csv", "binary"}) {
+    CommandResult r = ecoforest(fmt::format("run {}/{}.toml --years 12 --out {}/{}", dir.string(),
+                                            format, dir.string(), format));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir / "binary" / "trees" / "year_0010.bin"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "binary" / "trees" / "year_0010.csv"));
+  CommandResult r = ecoforest("export " + (dir / "binary").string() + " --year 10 --out " +
+                              (dir / "trees.csv").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::string csv = eco::test::readFile(dir / "csv" / "trees" / "year_0010.csv");
+  EXPECT_NE(r.output.find(fmt::format("year 10, {} trees as CSV rows",
+                                      std::count(csv.begin(), csv.end(), '\n') - 1)),
+            std::string::npos)
+      << r.output;
+  EXPECT_TRUE(eco::test::readFile(dir / "trees.csv") == csv);
+  CommandResult still =
+      ecoforest("render " + (dir / "binary").string() + " --quality draft --size 160x90 --out " +
+                (dir / "still.png").string());
+  EXPECT_EQ(still.exitCode, 0) << still.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "still.png"));
 }
 
 TEST(ExportCommand, BadInputIsExitTwoAndWritesNothing) {

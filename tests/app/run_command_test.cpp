@@ -180,7 +180,7 @@ TEST(RunCommand, AGeoTiffHeightmapIsGeoreferencedFromInputToOutputs) {
       nlohmann::json::parse(eco::test::readFile(out / "conditions.json"));
   EXPECT_EQ(conditions["grid"]["cell_dx_m"], 8.0);
   EXPECT_EQ(conditions["grid"]["epsg"], 25832);
-  const eco::TreeSnapshot trees = eco::readTreesCsv(out / "trees" / "year_0004.csv");
+  const eco::TreeSnapshot trees = eco::readTrees(out / "trees" / "year_0004.csv");
   ASSERT_GT(trees.trees.size(), 100u);
   const eco::Grid grid{kWidth, kHeight, 8.0, 8.0};
   for (const eco::TreeRow& tree : trees.trees) {

@@ -4,6 +4,7 @@
 // checkCheckpoint -- the forged lengths and crafted values of a file made on purpose.
 #include "fuzz_support.hpp"
 #include "sim/run/checkpoint.hpp"
+#include "sim/run/checksummed_output.hpp"
 
 namespace {
 
@@ -23,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view bytes = eco::fuzz::asText(data, size);
   readAndCheck(eco::fuzz::inputFile(bytes, "checkpoint.bin"));
   std::string sealed(bytes);
-  const std::uint64_t checksum = eco::checkpointChecksum(sealed);
+  const std::uint64_t checksum = eco::blockChecksum(sealed);
   sealed.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
   readAndCheck(eco::fuzz::inputFile(sealed, "sealed.bin"));
   return 0;

@@ -78,16 +78,18 @@ TEST(Scenario, ReadsTheOutputTable) {
       loadScenario(write("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n"));
   EXPECT_EQ(defaults.output.snapshotEveryYears, 10);
   EXPECT_EQ(defaults.output.checkpointEveryYears, 1);
-  const Scenario s = loadScenario(write(R"([terrain]
-cell_size_m = 5
-[terrain.generate]
-size = 9
-[output]
-snapshot_every_years = 5
-checkpoint_every_years = 25
-)"));
+  EXPECT_EQ(defaults.output.snapshotFormat, SnapshotFormat::Csv);
+  const std::string output = "[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = 9\n[output]\n";
+  const Scenario s = loadScenario(write(output + "snapshot_every_years = 5\n"
+                                                 "checkpoint_every_years = 25\n"
+                                                 "snapshot_format = \"binary\"\n"));
   EXPECT_EQ(s.output.snapshotEveryYears, 5);
   EXPECT_EQ(s.output.checkpointEveryYears, 25);
+  EXPECT_EQ(s.output.snapshotFormat, SnapshotFormat::Binary);
+  EXPECT_NE(std::string(errorOf(output + "snapshot_format = \"parquet\"\n").what())
+                .find("s.toml:6: output.snapshot_format: unknown snapshot format 'parquet' "
+                      "(expected csv or binary)"),
+            std::string::npos);
 }
 
 TEST(Scenario, ReadsTheValidationTable) {

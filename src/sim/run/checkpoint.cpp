@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstring>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -16,6 +15,8 @@
 #include "core/atomic_file.hpp"
 #include "core/binary_io.hpp"
 #include "core/error.hpp"
+#include "core/mapped_file.hpp"
+#include "sim/run/checksummed_output.hpp"
 
 namespace eco {
 namespace {
@@ -24,78 +25,6 @@ constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
 // 2: block checksum; 3: growth factor, stand measures; 4: 32-bit variant seeds;
 // 5: plants' origin, the plan's stats; 6: no ground, cell and variant seed columns (derived)
 constexpr std::uint32_t kFormatVersion = 6;
-constexpr std::size_t kChecksumBlock = std::size_t{1} << 20;
-
-// FNV-1a of each 1 MiB block of `bytes`, in parallel, appended to `hashes`.
-void appendBlockHashes(std::string_view bytes, std::vector<std::uint64_t>& hashes) {
-  const std::size_t first = hashes.size();
-  const std::size_t blocks = (bytes.size() + kChecksumBlock - 1) / kChecksumBlock;
-  hashes.resize(first + blocks);
-  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    hashes[first + b] = fnv1a64(bytes.substr(b * kChecksumBlock, kChecksumBlock));
-  });
-}
-
-std::uint64_t combineBlockHashes(const std::vector<std::uint64_t>& hashes) {
-  return fnv1a64(std::string_view(reinterpret_cast<const char*>(hashes.data()),
-                                  hashes.size() * sizeof(std::uint64_t)));
-}
-
-// Writes a checkpoint through to its file as it is made, hashing whole blocks on the way:
-// a run of 50 million plants would otherwise hold its checkpoint's gigabytes in memory.
-class ChecksummedOutput {
- public:
-  explicit ChecksummedOutput(AtomicFile& out) : out_(out) {}
-  // Whole blocks go out; the rest waits for the next bytes.
-  void add(std::string_view bytes) {
-    if (!pending_.empty()) {
-      const std::size_t take = std::min(kChecksumBlock - pending_.size(), bytes.size());
-      pending_.append(bytes.substr(0, take));
-      bytes.remove_prefix(take);
-      if (pending_.size() < kChecksumBlock) return;
-      emit(pending_);
-      pending_.clear();
-    }
-    const std::size_t whole = bytes.size() - bytes.size() % kChecksumBlock;
-    emit(bytes.substr(0, whole));
-    pending_.assign(bytes.substr(whole));
-  }
-  // A column as BinaryWriter::putVector lays it out, straight from the vector.
-  template <typename T>
-  void addVector(const std::vector<T>& values) {
-    BinaryWriter count;
-    count.put<std::uint64_t>(values.size());
-    add(count.bytes());
-    add(std::string_view(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T)));
-  }
-  // Writes the rest; the checksum of everything written (checkpointChecksum's).
-  std::uint64_t finish() {
-    emit(pending_);
-    pending_.clear();
-    return combineBlockHashes(hashes_);
-  }
-
- private:
-  void emit(std::string_view bytes) {
-    appendBlockHashes(bytes, hashes_);
-    out_.write(bytes);
-  }
-  AtomicFile& out_;
-  std::string pending_;
-  std::vector<std::uint64_t> hashes_;
-};
-
-}  // namespace
-
-// FNV-1a of each 1 MiB block (in parallel: a checkpoint can be gigabytes), then FNV-1a over
-// the blocks' hashes.
-std::uint64_t checkpointChecksum(std::string_view bytes) {
-  std::vector<std::uint64_t> hashes;
-  appendBlockHashes(bytes, hashes);
-  return combineBlockHashes(hashes);
-}
-
-namespace {
 
 bool finiteAtLeast(float value, float least) {
   return std::isfinite(value) && value >= least;
@@ -236,20 +165,17 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expec
   auto refuse = [&](const std::string& why) -> InputError {
     return InputError({file.string(), 0, ""}, why);
   };
-  const std::optional<std::string> read = readFileBytes(file);
-  if (!read) throw refuse("cannot open the checkpoint (was the run started in this folder?)");
-  const std::string& bytes = *read;
+  const std::optional<MappedFile> mapping = MappedFile::open(file);
+  if (!mapping) throw refuse("cannot open the checkpoint (was the run started in this folder?)");
+  const std::string_view bytes = mapping->bytes();
   BinaryReader header(bytes);
   if (header.getString() != kMagic || header.failed()) throw refuse("not an ecoforest checkpoint");
   if (header.get<std::uint32_t>() != kFormatVersion)
     throw refuse("checkpoint format from another version of ecoforest; start the run afresh");
-  if (bytes.size() < sizeof(std::uint64_t)) throw refuse("checkpoint is truncated");
-  const std::string_view body(bytes.data(), bytes.size() - sizeof(std::uint64_t));
-  std::uint64_t stored = 0;
-  std::memcpy(&stored, bytes.data() + body.size(), sizeof stored);
-  if (stored != checkpointChecksum(body)) throw refuse("checkpoint is corrupt (checksum mismatch)");
+  const std::optional<std::string_view> body = checkedBody(bytes);
+  if (!body) throw refuse("checkpoint is corrupt (checksum mismatch)");
 
-  BinaryReader r(body);
+  BinaryReader r(*body);
   r.getString();
   r.get<std::uint32_t>();
   Checkpoint checkpoint;

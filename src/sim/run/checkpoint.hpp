@@ -1,6 +1,7 @@
 // checkpoint.bin (docs/run_folder.md): everything a run needs to continue exactly where it
 // stopped — the ecosystem state and the statistics so far — fingerprinted with the hash of
-// the scenario and species files and protected by a checksum.
+// the scenario and species files and ended by the blockChecksum (checksummed_output.hpp) of
+// the bytes before it.
 #pragma once
 
 #include <cstdint>
@@ -21,10 +22,6 @@ struct Checkpoint {
   EcosystemState state;
   std::vector<StatsRow> stats;
 };
-
-// The checksum that ends a checkpoint, of the bytes before it (the fuzz target seals mutated
-// files with it, to reach the parser behind the check).
-std::uint64_t checkpointChecksum(std::string_view body);
 
 void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkpoint);
 // The same from the run's own state, written through as it is made: no copy of the plants

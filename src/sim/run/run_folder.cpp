@@ -44,7 +44,7 @@ void requireSnapshotYear(const RunFolder& run, int year) {
 
 TreeSnapshot readSnapshot(const RunFolder& run, int year) {
   requireSnapshotYear(run, year);
-  TreeSnapshot snapshot = readTreesCsv(RunPaths{run.dir}.snapshot(year));
+  TreeSnapshot snapshot = readTrees(RunPaths{run.dir}.existingSnapshot(year));
   snapshot.year = year;
   return snapshot;
 }

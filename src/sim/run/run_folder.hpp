@@ -16,7 +16,7 @@ namespace eco {
 struct RunFolder {
   std::filesystem::path dir;
   Scenario scenario;               // as run.json names it
-  std::vector<int> snapshotYears;  // ascending; the years of trees/year_NNNN.csv
+  std::vector<int> snapshotYears;  // ascending; the years of trees/year_NNNN.csv or .bin
   // run.json's: running, complete, interrupted or failed; "killed" when it says running
   // but no run holds the folder any more.
   std::string status;

@@ -1,7 +1,7 @@
 // The files of a run folder (docs/run_folder.md), each writer beside its reader: the paths,
-// run.json, stats.csv and trees/year_NNNN.csv. Maps and conditions.json are written by
-// condition_maps.hpp (`ecoforest conditions` writes the same layout), checkpoint.bin by
-// checkpoint.hpp.
+// run.json and stats.csv. The tree snapshots are trees_file.hpp's; maps and conditions.json
+// are written by condition_maps.hpp (`ecoforest conditions` writes the same layout),
+// checkpoint.bin by checkpoint.hpp.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +11,7 @@
 
 #include "sim/ecology/canopy_gaps.hpp"
 #include "sim/ecology/ecosystem.hpp"
+#include "sim/run/trees_file.hpp"
 
 namespace eco {
 
@@ -22,13 +23,17 @@ struct RunPaths {
   std::filesystem::path stats() const { return dir / "stats.csv"; }
   std::filesystem::path checkpoint() const { return dir / "checkpoint.bin"; }
   std::filesystem::path treesFolder() const { return dir / "trees"; }
-  std::filesystem::path snapshot(int year) const;  // trees/year_NNNN.csv
+  // trees/year_NNNN.csv or .bin
+  std::filesystem::path snapshot(int year, SnapshotFormat format) const;
+  // The snapshot of `year` there is: the binary one where both are, the CSV path where
+  // neither is.
+  std::filesystem::path existingSnapshot(int year) const;
   std::filesystem::path removedFolder() const { return dir / "removed"; }
   std::filesystem::path removed(int year) const;  // removed/year_NNNN.csv: the year's thinning
   std::filesystem::path conditionsJson() const { return dir / "conditions.json"; }
   std::filesystem::path mapsFolder() const { return dir / "maps"; }
   std::filesystem::path map(const std::string& name) const;  // maps/NAME.exr, raw floats
-  // The years of the snapshots there are, ascending.
+  // The years of the snapshots there are (either format), ascending, each once.
   std::vector<int> snapshotYears() const;
   // The names of the maps there are (maps/*.exr), sorted.
   std::vector<std::string> mapNames() const;
@@ -70,39 +75,6 @@ struct StatsFile {
 // Columns are found by name, so files of earlier versions without the plan's columns read
 // with those as 0; a missing column, a bad number or species name is an InputError at its line.
 StatsFile readStatsCsv(const std::filesystem::path& file);
-
-// A snapshot: one row per living plant, under this header. The last four columns are the
-// plant's site as it shapes the tree (plant_site.hpp): toward the light and toward where the
-// wind blows, east and north, each of length 0..1.
-inline constexpr const char* kTreesCsvHeader =
-    "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,variant_seed,"
-    "light_east,light_north,wind_east,wind_north";
-// Snapshots of earlier versions, without the site: they read as unshaped trees.
-inline constexpr const char* kTreesCsvHeaderWithoutSite =
-    "id,species,x_m,y_m,z_m,age,height_m,crown_radius_m,crown_base_m,dbh_m,vigor,variant_seed";
-struct TreeRow {
-  std::uint64_t id = 0;
-  int species = 0;  // index into TreeSnapshot::speciesNames
-  double east_m = 0.0, north_m = 0.0, ground_m = 0.0;
-  int age_years = 0;
-  float height_m = 0.0f, crownRadius_m = 0.0f, crownBase_m = 0.0f, dbh_m = 0.0f, vigor = 0.0f;
-  std::uint32_t variantSeed = 0;
-  PlantSite site;
-};
-
-struct TreeSnapshot {
-  int year = 0;
-  std::vector<std::string> speciesNames;  // in order of first appearance
-  std::vector<TreeRow> trees;
-};
-
-// The ecosystem's plants after a step, with their sites under this year's canopy.
-void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem);
-// The same for any plants of the ecosystem's map and species (the trees a thinning removed).
-void writeTreesCsv(const std::filesystem::path& file, const Ecosystem& ecosystem,
-                   const Plants& plants);
-// Parses one trees CSV; errors give the file and line.
-TreeSnapshot readTreesCsv(const std::filesystem::path& file);
 
 // What a species looks like at the end of a run (run.json's final_counts).
 struct SpeciesCount {

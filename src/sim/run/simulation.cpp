@@ -264,13 +264,14 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
     const int year = ecosystem.year();
     plan.thinAtEndOf(year, done);
     if (done.removedPlants.size() > 0)
-      writeTreesCsv(run.removed(year), ecosystem, done.removedPlants);
+      writeTrees(run.removed(year), ecosystem, done.removedPlants, SnapshotFormat::Csv);
     std::vector<StatsRow> rows = statsOfYear(ecosystem, done);
     stats.insert(stats.end(), rows.begin(), rows.end());
     writeStatsCsv(run.stats(), stats, ecosystem.species());
     const bool last = year == summary.targetYears;
     if (year % scenario.output.snapshotEveryYears == 0 || last)
-      writeTreesCsv(run.snapshot(year), ecosystem);
+      writeTrees(run.snapshot(year, scenario.output.snapshotFormat), ecosystem, ecosystem.plants(),
+                 scenario.output.snapshotFormat);
     summary.lastYear = year;
     if (options.progress)
       options.progress(

@@ -48,7 +48,7 @@ RunFolder oneTreeRun(const std::string& name) {
   for (auto [year, height] : {std::pair{10, 0.0}, {20, 4.0}}) {
     std::string rows = std::string(kTreesCsvHeaderWithoutSite) + "\n";
     if (height > 0.0) rows += fmt::format("1,maple,160,160,100,5,{},1.0,1.5,0.05,0.9,1\n", height);
-    test::writeFile(RunPaths{dir}.snapshot(year), rows);
+    test::writeFile(RunPaths{dir}.snapshot(year, SnapshotFormat::Csv), rows);
     run.snapshotYears.push_back(year);
   }
   return run;

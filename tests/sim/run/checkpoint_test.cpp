@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "sim/run/checksummed_output.hpp"
 #include "test_files.hpp"
 
 namespace eco {
@@ -82,7 +83,7 @@ TEST(Checkpoint, AStateOfManyBlocksIsWrittenThroughWithItsChecksum) {
   // The stored checksum is that of the whole body, as if it had been made in memory.
   std::uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
-  EXPECT_EQ(stored, checkpointChecksum(std::string_view(bytes).substr(0, bytes.size() - 8)));
+  EXPECT_EQ(stored, blockChecksum(std::string_view(bytes).substr(0, bytes.size() - 8)));
   const Checkpoint back = readCheckpoint(file, 0x1234);
   EXPECT_EQ(back.state.plants.id, big.state.plants.id);
   EXPECT_EQ(back.state.plants.height_m, big.state.plants.height_m);

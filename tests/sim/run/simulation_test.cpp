@@ -258,7 +258,7 @@ TEST(Simulation, APlanIsCarriedOutAndCounted) {
         << year;
   EXPECT_TRUE(std::filesystem::exists(out / "maps/plan.png"));
   // Nothing stands in the ride, and no pine is left in the contour block at a removal.
-  const TreeSnapshot last = readTreesCsv(out / "trees/year_0030.csv");
+  const TreeSnapshot last = readTrees(out / "trees/year_0030.csv");
   const auto pine = std::find(last.speciesNames.begin(), last.speciesNames.end(), "pine");
   for (const TreeRow& t : last.trees) {
     EXPECT_GT(std::abs(t.north_m - 160.0), 4.0);

@@ -1,0 +1,72 @@
+#include "sim/run/checksummed_output.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include <tbb/parallel_for.h>
+
+#include "core/hash.hpp"
+
+namespace eco {
+namespace {
+
+constexpr std::size_t kChecksumBlock = std::size_t{1} << 20;
+
+// FNV-1a of each block of `bytes`, in parallel, appended to `hashes`.
+void appendBlockHashes(std::string_view bytes, std::vector<std::uint64_t>& hashes) {
+  const std::size_t first = hashes.size();
+  const std::size_t blocks = (bytes.size() + kChecksumBlock - 1) / kChecksumBlock;
+  hashes.resize(first + blocks);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    hashes[first + b] = fnv1a64(bytes.substr(b * kChecksumBlock, kChecksumBlock));
+  });
+}
+
+std::uint64_t combineBlockHashes(const std::vector<std::uint64_t>& hashes) {
+  return fnv1a64(std::string_view(reinterpret_cast<const char*>(hashes.data()),
+                                  hashes.size() * sizeof(std::uint64_t)));
+}
+
+}  // namespace
+
+std::uint64_t blockChecksum(std::string_view bytes) {
+  std::vector<std::uint64_t> hashes;
+  appendBlockHashes(bytes, hashes);
+  return combineBlockHashes(hashes);
+}
+
+void ChecksummedOutput::add(std::string_view bytes) {
+  if (!pending_.empty()) {
+    const std::size_t take = std::min(kChecksumBlock - pending_.size(), bytes.size());
+    pending_.append(bytes.substr(0, take));
+    bytes.remove_prefix(take);
+    if (pending_.size() < kChecksumBlock) return;
+    emit(pending_);
+    pending_.clear();
+  }
+  const std::size_t whole = bytes.size() - bytes.size() % kChecksumBlock;
+  emit(bytes.substr(0, whole));
+  pending_.assign(bytes.substr(whole));
+}
+
+std::uint64_t ChecksummedOutput::finish() {
+  emit(pending_);
+  pending_.clear();
+  return combineBlockHashes(hashes_);
+}
+
+void ChecksummedOutput::emit(std::string_view bytes) {
+  appendBlockHashes(bytes, hashes_);
+  out_.write(bytes);
+}
+
+std::optional<std::string_view> checkedBody(std::string_view bytes) {
+  if (bytes.size() < sizeof(std::uint64_t)) return std::nullopt;
+  const std::string_view body = bytes.substr(0, bytes.size() - sizeof(std::uint64_t));
+  std::uint64_t stored = 0;
+  std::memcpy(&stored, bytes.data() + body.size(), sizeof stored);
+  if (stored != blockChecksum(body)) return std::nullopt;
+  return body;
+}
+
+}  // namespace eco

@@ -1,0 +1,46 @@
+// The checksum of ecoforest's binary files (checkpoint.bin, binary tree snapshots) and a
+// writer that makes it while the bytes go through to their file: a landscape's file is
+// gigabytes, which would otherwise be held in memory to be hashed.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/atomic_file.hpp"
+
+namespace eco {
+
+// FNV-1a of each 1 MiB block (in parallel), then FNV-1a over the blocks' hashes.
+std::uint64_t blockChecksum(std::string_view bytes);
+
+// Writes bytes through to `out` as they come, hashing whole blocks on the way; finish()
+// writes the rest and gives blockChecksum() of everything written.
+class ChecksummedOutput {
+ public:
+  explicit ChecksummedOutput(AtomicFile& out) : out_(out) {}
+  // Whole blocks go out; the rest waits for the next bytes.
+  void add(std::string_view bytes);
+  // A column as BinaryWriter::putVector lays it out, straight from the vector.
+  template <typename T>
+  void addVector(const std::vector<T>& values) {
+    const std::uint64_t count = values.size();
+    add(std::string_view(reinterpret_cast<const char*>(&count), sizeof count));
+    add(std::string_view(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T)));
+  }
+  std::uint64_t finish();
+
+ private:
+  void emit(std::string_view bytes);
+  AtomicFile& out_;
+  std::string pending_;
+  std::vector<std::uint64_t> hashes_;
+};
+
+// Splits a file's bytes into the body and the checksum stored after it; nothing when the
+// file is too short to hold one or the stored checksum is not the body's.
+std::optional<std::string_view> checkedBody(std::string_view bytes);
+
+}  // namespace eco

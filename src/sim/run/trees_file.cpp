@@ -1,0 +1,465 @@
+#include "sim/run/trees_file.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <span>
+
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
+#include <glm/geometric.hpp>
+
+#include "core/atomic_file.hpp"
+#include "core/binary_io.hpp"
+#include "core/csv_text.hpp"
+#include "core/error.hpp"
+#include "core/mapped_file.hpp"
+#include "core/names.hpp"
+#include "sim/run/checksummed_output.hpp"
+
+namespace eco {
+namespace {
+
+constexpr std::size_t kTreesColumns = 16, kTreesColumnsWithoutSite = 12;
+
+// The binary format: this header, then one fixed-size little-endian record per plant (the
+// layout of appendRecord), then the blockChecksum of everything before it.
+constexpr std::string_view kBinaryMagic = "ECOFOREST-TREES";
+constexpr std::uint32_t kBinaryVersion = 1;
+// id, species, east, north, ground, age, height, crown radius, crown base, dbh, vigor,
+// variant seed, the site's four components: the simulation's numbers exactly, so a binary
+// snapshot written out as CSV has the bytes of the CSV snapshot.
+constexpr std::size_t kRecordBytes = 8 + 2 + 3 * 4 + 4 + 5 * 4 + 4 + 4 * 4;
+
+MappedFile mapped(const std::filesystem::path& file) {
+  std::optional<MappedFile> mapping = MappedFile::open(file);
+  if (!mapping) throw InputError({file.string(), 0, ""}, "cannot read the file");
+  return std::move(*mapping);
+}
+
+// What makes a parsed row of a trees file unusable (the numbers are finite already), or "".
+// No tree is taller than about 120 m or has a crown wider than about 50 m; the limits leave
+// room and keep an edited file from making meshes of astronomical size.
+std::string treeRowFault(const TreeRow& tree) {
+  constexpr float kTallest_m = 200.0f, kWidestCrown_m = 100.0f;
+  if (tree.id == 0) return "id 0: ids start at 1";
+  if (tree.age_years < 0) return fmt::format("age {} is negative", tree.age_years);
+  if (!(tree.height_m >= 0.0f && tree.height_m <= kTallest_m))
+    return fmt::format("height {} m is not between 0 and {} m", tree.height_m, kTallest_m);
+  if (!(tree.crownRadius_m >= 0.0f && tree.crownRadius_m <= kWidestCrown_m))
+    return fmt::format("crown radius {} m is not between 0 and {} m", tree.crownRadius_m,
+                       kWidestCrown_m);
+  if (!(tree.crownBase_m >= 0.0f && tree.crownBase_m <= tree.height_m))
+    return fmt::format("crown base {} m is not between 0 and the height {} m", tree.crownBase_m,
+                       tree.height_m);
+  if (!(tree.dbh_m >= 0.0f && tree.dbh_m <= 0.05f * kTallest_m))
+    return fmt::format("dbh {} m is not between 0 and {} m", tree.dbh_m, 0.05f * kTallest_m);
+  if (!(tree.vigor >= 0.0f && tree.vigor <= 1.0f))
+    return fmt::format("vigor {} is not between 0 and 1", tree.vigor);
+  // Lengths of at most 1, with room for the file's two decimals.
+  constexpr float kLongest = 1.01f;
+  if (glm::length(tree.site.light) > kLongest)
+    return fmt::format("light ({}, {}) is longer than 1", tree.site.light.x, tree.site.light.y);
+  if (glm::length(tree.site.wind) > kLongest)
+    return fmt::format("wind ({}, {}) is longer than 1", tree.site.wind.x, tree.site.wind.y);
+  return {};
+}
+
+using RowAt = std::function<TreeRow(std::size_t)>;
+
+// Encodes `count` rows side by side, a chunk of rows to a string, and hands the strings to
+// `write` in order, a batch of chunks at a time: a landscape's 100 million rows would
+// otherwise be gigabytes in memory at once, and so would their sites, which are worked out
+// row by row. While one batch is written out, the next is encoded.
+void writeInBatches(std::size_t count, std::size_t bytesPerRow,
+                    const std::function<void(std::size_t, std::string&)>& encode,
+                    const std::function<void(std::string_view)>& write) {
+  constexpr std::size_t kRowsPerChunk = 16384, kChunksPerBatch = 64;
+  constexpr std::size_t kRowsPerBatch = kRowsPerChunk * kChunksPerBatch;
+  auto encodeBatch = [&](std::size_t first, std::vector<std::string>& chunks) {
+    tbb::parallel_for(std::size_t{0}, kChunksPerBatch, [&](std::size_t c) {
+      std::string& bytes = chunks[c];
+      bytes.clear();
+      const std::size_t begin = std::min(count, first + c * kRowsPerChunk);
+      const std::size_t end = std::min(count, begin + kRowsPerChunk);
+      bytes.reserve((end - begin) * bytesPerRow);
+      for (std::size_t i = begin; i < end; ++i) encode(i, bytes);
+    });
+  };
+  std::vector<std::string> ready(kChunksPerBatch), next(kChunksPerBatch);
+  encodeBatch(0, ready);
+  for (std::size_t first = 0; first < count; first += kRowsPerBatch) {
+    tbb::task_group encoding;
+    if (first + kRowsPerBatch < count)
+      encoding.run([&] { encodeBatch(first + kRowsPerBatch, next); });
+    for (const std::string& bytes : ready) write(bytes);
+    encoding.wait();
+    std::swap(ready, next);
+  }
+}
+
+// A CSV row; the numbers one by one (appendFixed): fmt's float formatting was a tenth of a
+// run.
+void appendCsvRow(std::string& text, const TreeRow& row, std::string_view species) {
+  auto fixed = [&](double value, int decimals) {
+    appendFixed(text, static_cast<float>(value), decimals);
+    text += ',';
+  };
+  fmt::format_to(std::back_inserter(text), "{},{},", row.id, species);
+  fixed(row.east_m, 3);
+  fixed(row.north_m, 3);
+  fixed(row.ground_m, 3);
+  fmt::format_to(std::back_inserter(text), "{},", row.age_years);
+  fixed(row.height_m, 3);
+  fixed(row.crownRadius_m, 3);
+  fixed(row.crownBase_m, 3);
+  fixed(row.dbh_m, 4);
+  fixed(row.vigor, 3);
+  fmt::format_to(std::back_inserter(text), "{},", row.variantSeed);
+  fixed(row.site.light.x, 2);
+  fixed(row.site.light.y, 2);
+  fixed(row.site.wind.x, 2);
+  appendFixed(text, row.site.wind.y, 2);
+  text += '\n';
+}
+
+void writeCsv(const std::filesystem::path& file, std::size_t count, const RowAt& rowAt,
+              const std::vector<std::string>& speciesNames) {
+  AtomicFile out(file);
+  out.write(std::string(kTreesCsvHeader) + "\n");
+  constexpr std::size_t kLongestRow = 120;  // bytes: a tree's row is about 107
+  writeInBatches(
+      count, kLongestRow,
+      [&](std::size_t i, std::string& text) {
+        const TreeRow row = rowAt(i);
+        appendCsvRow(text, row, speciesNames[static_cast<std::size_t>(row.species)]);
+      },
+      [&](std::string_view text) { out.write(text); });
+  out.commit();
+}
+
+std::vector<std::string> speciesNamesOf(const Ecosystem& ecosystem) {
+  std::vector<std::string> names;
+  for (const EcosystemSpecies& s : ecosystem.species()) names.push_back(s.species.name);
+  return names;
+}
+
+RowAt plantRows(const Ecosystem& ecosystem, const Plants& p) {
+  return [&ecosystem, &p](std::size_t i) {
+    TreeRow row;
+    row.id = p.id[i];
+    row.species = p.species[i];
+    row.east_m = p.east_m[i];
+    row.north_m = p.north_m[i];
+    row.ground_m = ecosystem.groundOf(p, i);
+    row.age_years = p.age_years[i];
+    row.height_m = p.height_m[i];
+    row.crownRadius_m = p.crownRadius_m[i];
+    row.crownBase_m = p.crownBase_m[i];
+    row.dbh_m = p.dbh_m[i];
+    row.vigor = p.vigor[i];
+    row.variantSeed = ecosystem.variantSeedOf(p.id[i]);
+    row.site = ecosystem.siteOf(p, i);
+    return row;
+  };
+}
+
+template <typename T>
+void putField(char*& at, T value) {
+  std::memcpy(at, &value, sizeof value);
+  at += sizeof value;
+}
+template <typename T>
+T takeField(const char*& at) {
+  T value;
+  std::memcpy(&value, at, sizeof value);
+  at += sizeof value;
+  return value;
+}
+
+void appendRecord(std::string& bytes, const TreeRow& row) {
+  const std::size_t start = bytes.size();
+  bytes.resize(start + kRecordBytes);
+  char* at = bytes.data() + start;
+  putField(at, row.id);
+  putField(at, static_cast<std::uint16_t>(row.species));
+  putField(at, static_cast<float>(row.east_m));
+  putField(at, static_cast<float>(row.north_m));
+  putField(at, static_cast<float>(row.ground_m));
+  putField(at, static_cast<std::int32_t>(row.age_years));
+  for (float value : {row.height_m, row.crownRadius_m, row.crownBase_m, row.dbh_m, row.vigor})
+    putField(at, value);
+  putField(at, row.variantSeed);
+  for (float value : {row.site.light.x, row.site.light.y, row.site.wind.x, row.site.wind.y})
+    putField(at, value);
+}
+
+TreeRow recordAt(const char* at) {
+  TreeRow row;
+  row.id = takeField<std::uint64_t>(at);
+  row.species = takeField<std::uint16_t>(at);
+  row.east_m = takeField<float>(at);
+  row.north_m = takeField<float>(at);
+  row.ground_m = takeField<float>(at);
+  row.age_years = takeField<std::int32_t>(at);
+  for (float* value : {&row.height_m, &row.crownRadius_m, &row.crownBase_m, &row.dbh_m, &row.vigor})
+    *value = takeField<float>(at);
+  row.variantSeed = takeField<std::uint32_t>(at);
+  for (float* value : {&row.site.light.x, &row.site.light.y, &row.site.wind.x, &row.site.wind.y})
+    *value = takeField<float>(at);
+  return row;
+}
+
+void writeBinary(const std::filesystem::path& file, std::size_t count, const RowAt& rowAt,
+                 const std::vector<std::string>& speciesNames) {
+  ECO_ASSERT(speciesNames.size() <= 65535, "species indices of 16 bits");
+  AtomicFile out(file);
+  ChecksummedOutput body(out);
+  BinaryWriter header;
+  header.putString(kBinaryMagic);
+  header.put(kBinaryVersion);
+  header.put(static_cast<std::uint32_t>(speciesNames.size()));
+  for (const std::string& name : speciesNames) header.putString(name);
+  header.put(static_cast<std::uint64_t>(count));
+  body.add(header.bytes());
+  writeInBatches(
+      count, kRecordBytes,
+      [&](std::size_t i, std::string& bytes) { appendRecord(bytes, rowAt(i)); },
+      [&](std::string_view bytes) { body.add(bytes); });
+  BinaryWriter checksum;
+  checksum.put(body.finish());
+  out.write(checksum.bytes());
+  out.commit();
+}
+
+// A row of a trees file with `columns` fields (with or without the site's), its species
+// field aside; an InputError names the line of a row that is not one.
+std::string_view parseTreeRow(std::string_view row, std::size_t columns,
+                              const std::filesystem::path& file, int line, TreeRow& tree) {
+  std::string_view fields[kTreesColumns];
+  const std::size_t count = splitFields(row, std::span(fields, columns));
+  bool ok = count == columns && parseField(fields[0], tree.id) &&
+            parseField(fields[2], tree.east_m) && parseField(fields[3], tree.north_m) &&
+            parseField(fields[4], tree.ground_m) && parseField(fields[5], tree.age_years) &&
+            parseField(fields[6], tree.height_m) && parseField(fields[7], tree.crownRadius_m) &&
+            parseField(fields[8], tree.crownBase_m) && parseField(fields[9], tree.dbh_m) &&
+            parseField(fields[10], tree.vigor) && parseField(fields[11], tree.variantSeed) &&
+            !fields[1].empty();
+  if (ok && columns == kTreesColumns)
+    ok = parseField(fields[12], tree.site.light.x) && parseField(fields[13], tree.site.light.y) &&
+         parseField(fields[14], tree.site.wind.x) && parseField(fields[15], tree.site.wind.y);
+  std::uint64_t wideSeed = 0;
+  if (!ok && count == columns && !parseField(fields[11], tree.variantSeed) &&
+      parseField(fields[11], wideSeed))
+    throw InputError({file.string(), line, "variant_seed"},
+                     "a seed beyond 32 bits, as earlier builds of ecoforest wrote them: run "
+                     "the scenario again");
+  if (!ok)
+    throw InputError(
+        {file.string(), line, ""},
+        fmt::format("expected {} comma-separated numbers: {}", columns,
+                    columns == kTreesColumns ? kTreesCsvHeader : kTreesCsvHeaderWithoutSite));
+  return fields[1];
+}
+
+// A stretch of a trees file's rows, whole lines, read on its own: its trees go to their
+// lines' places, their species numbered in the stretch's order of first appearance.
+struct TreeChunk {
+  std::string_view text;
+  int firstLine = 0;
+  std::size_t firstSlot = 0;  // the place of its first line among the file's rows
+  std::size_t lines = 0;
+  std::vector<std::string> speciesNames;
+  std::exception_ptr fault;  // its first bad row: the file's first in the earliest chunk
+};
+
+void readTreeChunk(TreeChunk& chunk, std::size_t columns, const std::filesystem::path& file,
+                   std::vector<TreeRow>& trees, std::vector<char>& filled) {
+  try {
+    forEachLine(chunk.text, [&](int number, std::string_view row) {
+      if (row.empty()) return;
+      const int line = chunk.firstLine + number - 1;
+      const std::size_t slot = chunk.firstSlot + static_cast<std::size_t>(number - 1);
+      TreeRow& tree = trees[slot];
+      const std::string_view species = parseTreeRow(row, columns, file, line, tree);
+      auto known = std::find(chunk.speciesNames.begin(), chunk.speciesNames.end(), species);
+      if (known == chunk.speciesNames.end()) {
+        if (const std::string why = whyNotAPlainName(species); !why.empty())
+          throw InputError({file.string(), line, ""},
+                           fmt::format("species '{}' is not a species name: {}", species, why));
+        known = chunk.speciesNames.emplace(known, species);
+      }
+      if (const std::string fault = treeRowFault(tree); !fault.empty())
+        throw InputError({file.string(), line, ""}, fault);
+      tree.species = static_cast<int>(known - chunk.speciesNames.begin());
+      filled[slot] = 1;
+    });
+  } catch (...) {
+    chunk.fault = std::current_exception();
+  }
+}
+
+void writeRows(const std::filesystem::path& file, SnapshotFormat format, std::size_t count,
+               const RowAt& rowAt, const std::vector<std::string>& speciesNames) {
+  if (format == SnapshotFormat::Binary)
+    writeBinary(file, count, rowAt, speciesNames);
+  else
+    writeCsv(file, count, rowAt, speciesNames);
+}
+
+}  // namespace
+
+std::string_view extensionOf(SnapshotFormat format) {
+  return format == SnapshotFormat::Binary ? ".bin" : ".csv";
+}
+
+std::optional<SnapshotFormat> snapshotFormatOf(const std::filesystem::path& file) {
+  for (SnapshotFormat format : {SnapshotFormat::Csv, SnapshotFormat::Binary})
+    if (file.extension() == extensionOf(format)) return format;
+  return std::nullopt;
+}
+
+void writeTrees(const std::filesystem::path& file, const Ecosystem& ecosystem, const Plants& plants,
+                SnapshotFormat format) {
+  writeRows(file, format, plants.size(), plantRows(ecosystem, plants), speciesNamesOf(ecosystem));
+}
+
+void writeTrees(const std::filesystem::path& file, const TreeSnapshot& snapshot,
+                SnapshotFormat format) {
+  writeRows(
+      file, format, snapshot.trees.size(), [&](std::size_t i) { return snapshot.trees[i]; },
+      snapshot.speciesNames);
+}
+
+TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
+  const MappedFile mapping = mapped(file);
+  const std::string_view text = mapping.bytes();
+  if (text.empty()) throw InputError({file.string(), 0, ""}, "the file is empty");
+  const std::size_t headerEnd = std::min(text.find('\n'), text.size());
+  const std::string_view header(text.data(), headerEnd);
+  std::size_t columns = kTreesColumns;
+  if (header == kTreesCsvHeaderWithoutSite)
+    columns = kTreesColumnsWithoutSite;
+  else if (header != kTreesCsvHeader)
+    throw InputError({file.string(), 1, ""},
+                     fmt::format("not a trees file: the header must be '{}'", kTreesCsvHeader));
+
+  // The rows, read in stretches of whole lines side by side (a landscape's snapshot holds
+  // tens of millions), each tree put at its line's place: the trees, their species' order
+  // and the first fault reported are those of reading the lines in order.
+  const std::string_view body = std::string_view(text).substr(std::min(text.size(), headerEnd + 1));
+  constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
+  std::vector<TreeChunk> chunks;
+  for (std::size_t start = 0; start < body.size();) {
+    std::size_t end = std::min(body.size(), start + kChunkBytes);
+    end = std::min(body.size(), body.find('\n', end - 1) + 1);  // npos + 1 is 0
+    if (end <= start) end = body.size();
+    chunks.emplace_back().text = body.substr(start, end - start);
+    start = end;
+  }
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    const std::string_view t = chunks[c].text;
+    chunks[c].lines = static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n')) +
+                      (t.empty() || t.back() == '\n' ? 0 : 1);
+  });
+  std::size_t slots = 0;
+  for (TreeChunk& chunk : chunks) {
+    chunk.firstSlot = slots;
+    chunk.firstLine = static_cast<int>(2 + slots);
+    slots += chunk.lines;
+  }
+  std::vector<TreeRow> trees(slots);
+  std::vector<char> filled(slots, 0);  // false for the empty lines between rows
+  tbb::parallel_for(std::size_t{0}, chunks.size(),
+                    [&](std::size_t c) { readTreeChunk(chunks[c], columns, file, trees, filled); });
+  for (const TreeChunk& chunk : chunks)
+    if (chunk.fault) std::rethrow_exception(chunk.fault);
+
+  // The species in the file's order of first appearance, and the rows without the gaps.
+  TreeSnapshot snapshot;
+  std::vector<std::vector<int>> speciesOf(chunks.size());
+  for (std::size_t c = 0; c < chunks.size(); ++c)
+    for (const std::string& name : chunks[c].speciesNames) {
+      auto found = std::find(snapshot.speciesNames.begin(), snapshot.speciesNames.end(), name);
+      if (found == snapshot.speciesNames.end()) found = snapshot.speciesNames.insert(found, name);
+      speciesOf[c].push_back(static_cast<int>(found - snapshot.speciesNames.begin()));
+    }
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    for (std::size_t slot = chunks[c].firstSlot; slot < chunks[c].firstSlot + chunks[c].lines;
+         ++slot)
+      if (filled[slot]) trees[slot].species = speciesOf[c][trees[slot].species];
+  });
+  std::size_t kept = 0;
+  for (std::size_t slot = 0; slot < slots; ++slot)
+    if (filled[slot]) trees[kept++] = trees[slot];
+  trees.resize(kept);
+  snapshot.trees = std::move(trees);
+  return snapshot;
+}
+
+TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
+  auto refuse = [&](const std::string& why) { return InputError({file.string(), 0, ""}, why); };
+  const MappedFile mapping = mapped(file);
+  const std::string_view bytes = mapping.bytes();
+  BinaryReader magic(bytes);
+  if (magic.getString() != kBinaryMagic || magic.failed())
+    throw refuse("not a binary trees file of ecoforest");
+  if (magic.get<std::uint32_t>() != kBinaryVersion)
+    throw refuse("a binary trees file of another version of ecoforest: run the scenario again");
+  const std::optional<std::string_view> body = checkedBody(bytes);
+  if (!body) throw refuse("the file is corrupt (checksum mismatch)");
+
+  BinaryReader r(*body);
+  r.getString();
+  r.get<std::uint32_t>();
+  TreeSnapshot snapshot;
+  const auto speciesCount = r.get<std::uint32_t>();
+  for (std::uint32_t s = 0; s < speciesCount && !r.failed(); ++s) {
+    std::string name = r.getString();
+    if (const std::string why = whyNotAPlainName(name); !why.empty() && !r.failed())
+      throw refuse(fmt::format("species '{}' is not a species name: {}", name, why));
+    snapshot.speciesNames.push_back(std::move(name));
+  }
+  const auto count = r.get<std::uint64_t>();
+  const std::size_t recordsAt = body->size() - r.remaining();
+  if (r.failed() || r.remaining() / kRecordBytes != count || r.remaining() % kRecordBytes != 0)
+    throw refuse("the file is corrupt (its length is not that of its rows)");
+
+  // Side by side; the fault reported is the first row's that has one.
+  snapshot.trees.resize(count);
+  std::atomic<std::size_t> firstFaulty{count};
+  auto fault = [&](const TreeRow& tree) -> std::string {
+    if (!std::isfinite(tree.east_m) || !std::isfinite(tree.north_m) ||
+        !std::isfinite(tree.ground_m))
+      return "a position that is not a finite number";
+    if (static_cast<std::size_t>(tree.species) >= snapshot.speciesNames.size())
+      return fmt::format("species {} of {}", tree.species + 1, snapshot.speciesNames.size());
+    return treeRowFault(tree);
+  };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 65536), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      snapshot.trees[i] = recordAt(body->data() + recordsAt + i * kRecordBytes);
+      if (!fault(snapshot.trees[i]).empty()) {
+        std::size_t seen = firstFaulty.load();
+        while (i < seen && !firstFaulty.compare_exchange_weak(seen, i)) {
+        }
+        return;
+      }
+    }
+  });
+  if (const std::size_t i = firstFaulty.load(); i < count)
+    throw refuse(
+        fmt::format("row {} (tree {}): {}", i + 1, snapshot.trees[i].id, fault(snapshot.trees[i])));
+  return snapshot;
+}
+
+TreeSnapshot readTrees(const std::filesystem::path& file) {
+  return snapshotFormatOf(file) == SnapshotFormat::Binary ? readTreesBinary(file)
+                                                          : readTreesCsv(file);
+}
+
+}  // namespace eco

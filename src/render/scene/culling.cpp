@@ -53,7 +53,7 @@ std::array<float, 3> switchPixelsFor(RenderQuality quality) {
     case RenderQuality::Draft:
       return {1000.0f, 300.0f, 300.0f};
     case RenderQuality::Balanced:
-      return {600.0f, 220.0f, 220.0f};
+      return {600.0f, 150.0f, 150.0f};
     // LOD0 for every tree taller than 150 pixels, LOD1 down to the impostors at 40: between
     // 40 and 60 pixels LOD1 measured nearer LOD0 than the impostors (bench/fidelity_bench).
     case RenderQuality::High:

@@ -299,7 +299,7 @@ struct LoneMaple {
 // (leaf cards flicker in and out at this size), and their mean colours over the tree differ
 // by less than 20 of 255 (RMS over the channels; the impostor shows its frames from up to
 // 11 degrees off, out of 64-pixel tiles).
-// At each quality's switching size to impostors (balanced 220 px, high 40 px), drawn with
+// At each quality's switching size to impostors (balanced 150 px, high 40 px), drawn with
 // the impostors that quality bakes, the impostor covers the mesh's pixels to within 20 %
 // and their mean colours differ by less than 20 of 255. Measured: 10.1 and 10.7 (the
 // impostor a little lighter; 16.9 and 20.2 when shade() read a short mean normal as leaves

@@ -139,9 +139,7 @@ void writeCheckpoint(const std::filesystem::path& file, std::uint64_t scenarioHa
                      const std::vector<StatsRow>& stats) {
   AtomicFile out(file);
   ChecksummedOutput body(out);
-  BinaryWriter header;
-  header.putString(kMagic);
-  header.put(kFormatVersion);
+  BinaryWriter header = sealedHeader(kMagic, kFormatVersion);
   header.put(scenarioHash);
   header.putString(programVersion);
   header.put<std::int32_t>(state.year);
@@ -150,9 +148,7 @@ void writeCheckpoint(const std::filesystem::path& file, std::uint64_t scenarioHa
   // Straight from the columns: nothing of the plants is copied.
   state.plants.forEachColumn([&](const auto& column) { body.addVector(column); });
   body.addVector(stats);
-  BinaryWriter checksum;
-  checksum.put(body.finish());
-  out.write(checksum.bytes());
+  body.finish();
   out.commit();
 }
 
@@ -167,17 +163,19 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expec
   };
   const std::optional<MappedFile> mapping = MappedFile::open(file);
   if (!mapping) throw refuse("cannot open the checkpoint (was the run started in this folder?)");
-  const std::string_view bytes = mapping->bytes();
-  BinaryReader header(bytes);
-  if (header.getString() != kMagic || header.failed()) throw refuse("not an ecoforest checkpoint");
-  if (header.get<std::uint32_t>() != kFormatVersion)
-    throw refuse("checkpoint format from another version of ecoforest; start the run afresh");
-  const std::optional<std::string_view> body = checkedBody(bytes);
-  if (!body) throw refuse("checkpoint is corrupt (checksum mismatch)");
+  const SealedFile sealed = openSealed(mapping->bytes(), kMagic, kFormatVersion);
+  switch (sealed.fault) {
+    case SealedFile::Fault::NotOurs:
+      throw refuse("not an ecoforest checkpoint");
+    case SealedFile::Fault::OtherVersion:
+      throw refuse("checkpoint format from another version of ecoforest; start the run afresh");
+    case SealedFile::Fault::Corrupt:
+      throw refuse("checkpoint is corrupt (checksum mismatch)");
+    case SealedFile::Fault::None:
+      break;
+  }
 
-  BinaryReader r(*body);
-  r.getString();
-  r.get<std::uint32_t>();
+  BinaryReader r(sealed.afterHeader);
   Checkpoint checkpoint;
   checkpoint.scenarioHash = r.get<std::uint64_t>();
   checkpoint.programVersion = r.getString();

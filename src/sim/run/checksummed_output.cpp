@@ -49,10 +49,19 @@ void ChecksummedOutput::add(std::string_view bytes) {
   pending_.assign(bytes.substr(whole));
 }
 
+BinaryWriter sealedHeader(std::string_view magic, std::uint32_t version) {
+  BinaryWriter header;
+  header.putString(magic);
+  header.put(version);
+  return header;
+}
+
 std::uint64_t ChecksummedOutput::finish() {
   emit(pending_);
   pending_.clear();
-  return combineBlockHashes(hashes_);
+  const std::uint64_t checksum = combineBlockHashes(hashes_);
+  out_.write(std::string_view(reinterpret_cast<const char*>(&checksum), sizeof checksum));
+  return checksum;
 }
 
 void ChecksummedOutput::emit(std::string_view bytes) {
@@ -67,6 +76,17 @@ std::optional<std::string_view> checkedBody(std::string_view bytes) {
   std::memcpy(&stored, bytes.data() + body.size(), sizeof stored);
   if (stored != blockChecksum(body)) return std::nullopt;
   return body;
+}
+
+SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint32_t version) {
+  BinaryReader header(bytes);
+  if (header.getString() != magic || header.failed()) return {SealedFile::Fault::NotOurs, {}};
+  if (header.get<std::uint32_t>() != version) return {SealedFile::Fault::OtherVersion, {}};
+  const std::optional<std::string_view> body = checkedBody(bytes);
+  // A forged checksum over bytes shorter than the header is no body either.
+  const std::size_t headerBytes = bytes.size() - header.remaining();
+  if (!body || headerBytes > body->size()) return {SealedFile::Fault::Corrupt, {}};
+  return {SealedFile::Fault::None, body->substr(headerBytes)};
 }
 
 }  // namespace eco

@@ -1,6 +1,7 @@
-// The checksum of ecoforest's binary files (checkpoint.bin, binary tree snapshots) and a
-// writer that makes it while the bytes go through to their file: a landscape's file is
-// gigabytes, which would otherwise be held in memory to be hashed.
+// ecoforest's binary files (checkpoint.bin, binary tree snapshots): a magic, a format
+// version, the body, then the checksum of everything before it. A writer makes the checksum
+// while the bytes go through to their file (a landscape's file is gigabytes, which would
+// otherwise be held in memory to be hashed); a reader checks the three before the body.
 #pragma once
 
 #include <cstdint>
@@ -10,14 +11,18 @@
 #include <vector>
 
 #include "core/atomic_file.hpp"
+#include "core/binary_io.hpp"
 
 namespace eco {
 
 // FNV-1a of each 1 MiB block (in parallel), then FNV-1a over the blocks' hashes.
 std::uint64_t blockChecksum(std::string_view bytes);
 
+// A file's first bytes: its magic and format version, for the writer to add more to.
+BinaryWriter sealedHeader(std::string_view magic, std::uint32_t version);
+
 // Writes bytes through to `out` as they come, hashing whole blocks on the way; finish()
-// writes the rest and gives blockChecksum() of everything written.
+// writes the rest and after it their blockChecksum(), which it returns.
 class ChecksummedOutput {
  public:
   explicit ChecksummedOutput(AtomicFile& out) : out_(out) {}
@@ -42,5 +47,14 @@ class ChecksummedOutput {
 // Splits a file's bytes into the body and the checksum stored after it; nothing when the
 // file is too short to hold one or the stored checksum is not the body's.
 std::optional<std::string_view> checkedBody(std::string_view bytes);
+
+// A file's bytes after its magic and version, checked in that order (each reader says in
+// its own words which check failed).
+struct SealedFile {
+  enum class Fault { None, NotOurs, OtherVersion, Corrupt };
+  Fault fault = Fault::None;
+  std::string_view afterHeader;  // the body past the magic and version, without the checksum
+};
+SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint32_t version);
 
 }  // namespace eco

@@ -219,9 +219,7 @@ void writeBinary(const std::filesystem::path& file, std::size_t count, const Row
   ECO_ASSERT(speciesNames.size() <= 65535, "species indices of 16 bits");
   AtomicFile out(file);
   ChecksummedOutput body(out);
-  BinaryWriter header;
-  header.putString(kBinaryMagic);
-  header.put(kBinaryVersion);
+  BinaryWriter header = sealedHeader(kBinaryMagic, kBinaryVersion);
   header.put(static_cast<std::uint32_t>(speciesNames.size()));
   for (const std::string& name : speciesNames) header.putString(name);
   header.put(static_cast<std::uint64_t>(count));
@@ -230,9 +228,7 @@ void writeBinary(const std::filesystem::path& file, std::size_t count, const Row
       count, kRecordBytes,
       [&](std::size_t i, std::string& bytes) { appendRecord(bytes, rowAt(i)); },
       [&](std::string_view bytes) { body.add(bytes); });
-  BinaryWriter checksum;
-  checksum.put(body.finish());
-  out.write(checksum.bytes());
+  body.finish();
   out.commit();
 }
 
@@ -404,18 +400,19 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
 TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
   auto refuse = [&](const std::string& why) { return InputError({file.string(), 0, ""}, why); };
   const MappedFile mapping = mapped(file);
-  const std::string_view bytes = mapping.bytes();
-  BinaryReader magic(bytes);
-  if (magic.getString() != kBinaryMagic || magic.failed())
-    throw refuse("not a binary trees file of ecoforest");
-  if (magic.get<std::uint32_t>() != kBinaryVersion)
-    throw refuse("a binary trees file of another version of ecoforest: run the scenario again");
-  const std::optional<std::string_view> body = checkedBody(bytes);
-  if (!body) throw refuse("the file is corrupt (checksum mismatch)");
+  const SealedFile sealed = openSealed(mapping.bytes(), kBinaryMagic, kBinaryVersion);
+  switch (sealed.fault) {
+    case SealedFile::Fault::NotOurs:
+      throw refuse("not a binary trees file of ecoforest");
+    case SealedFile::Fault::OtherVersion:
+      throw refuse("a binary trees file of another version of ecoforest: run the scenario again");
+    case SealedFile::Fault::Corrupt:
+      throw refuse("the file is corrupt (checksum mismatch)");
+    case SealedFile::Fault::None:
+      break;
+  }
 
-  BinaryReader r(*body);
-  r.getString();
-  r.get<std::uint32_t>();
+  BinaryReader r(sealed.afterHeader);
   TreeSnapshot snapshot;
   const auto speciesCount = r.get<std::uint32_t>();
   for (std::uint32_t s = 0; s < speciesCount && !r.failed(); ++s) {
@@ -425,7 +422,7 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
     snapshot.speciesNames.push_back(std::move(name));
   }
   const auto count = r.get<std::uint64_t>();
-  const std::size_t recordsAt = body->size() - r.remaining();
+  const std::size_t recordsAt = sealed.afterHeader.size() - r.remaining();
   if (r.failed() || r.remaining() / kRecordBytes != count || r.remaining() % kRecordBytes != 0)
     throw refuse("the file is corrupt (its length is not that of its rows)");
 
@@ -442,7 +439,7 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
   };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 65536), [&](const auto& range) {
     for (std::size_t i = range.begin(); i < range.end(); ++i) {
-      snapshot.trees[i] = recordAt(body->data() + recordsAt + i * kRecordBytes);
+      snapshot.trees[i] = recordAt(sealed.afterHeader.data() + recordsAt + i * kRecordBytes);
       if (!fault(snapshot.trees[i]).empty()) {
         std::size_t seen = firstFaulty.load();
         while (i < seen && !firstFaulty.compare_exchange_weak(seen, i)) {

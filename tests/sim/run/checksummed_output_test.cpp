@@ -24,8 +24,8 @@ TEST(ChecksummedOutput, ASmallBodyIsTheHashOfItsOneBlocksHash) {
             fnv1a64(std::string_view(reinterpret_cast<const char*>(&block), sizeof block)));
 }
 
-// Pieces of any size, meeting the 1 MiB blocks anywhere, give the file the bytes and the
-// checksum of the whole.
+// Pieces of any size, meeting the 1 MiB blocks anywhere, give the file the bytes of the
+// whole followed by their checksum.
 TEST(ChecksummedOutput, PiecesOfAnySizeGiveTheChecksumOfTheWhole) {
   const std::string whole = patternOf((std::size_t{3} << 20) + 12345);
   const auto file = test::freshDirectory("checksummed_output") / "pieces.bin";
@@ -43,8 +43,9 @@ TEST(ChecksummedOutput, PiecesOfAnySizeGiveTheChecksumOfTheWhole) {
     checksum = body.finish();
     out.commit();
   }
-  EXPECT_EQ(test::readFile(file), whole);
   EXPECT_EQ(checksum, blockChecksum(whole));
+  EXPECT_EQ(test::readFile(file),
+            whole + std::string(reinterpret_cast<const char*>(&checksum), sizeof checksum));
 }
 
 TEST(ChecksummedOutput, ABodyIsCheckedAgainstTheChecksumAfterIt) {
@@ -57,6 +58,30 @@ TEST(ChecksummedOutput, ABodyIsCheckedAgainstTheChecksumAfterIt) {
   EXPECT_FALSE(checkedBody(sealed).has_value());
   EXPECT_FALSE(checkedBody(sealed.substr(0, sealed.size() - 1)).has_value());
   EXPECT_FALSE(checkedBody("1234567").has_value());
+}
+
+// A file written as its magic, version and body opens to the body; another magic, another
+// version or a changed byte does not.
+TEST(ChecksummedOutput, ASealedFileOpensToItsBodyAfterTheHeader) {
+  const auto file = test::freshDirectory("checksummed_sealed") / "sealed.bin";
+  {
+    AtomicFile out(file);
+    ChecksummedOutput body(out);
+    body.add(sealedHeader("MAGIC", 3).bytes());
+    body.add("the body");
+    body.finish();
+    out.commit();
+  }
+  const std::string bytes = test::readFile(file);
+  const SealedFile sealed = openSealed(bytes, "MAGIC", 3);
+  EXPECT_EQ(sealed.fault, SealedFile::Fault::None);
+  EXPECT_EQ(sealed.afterHeader, "the body");
+  EXPECT_EQ(openSealed(bytes, "OTHER", 3).fault, SealedFile::Fault::NotOurs);
+  EXPECT_EQ(openSealed("", "MAGIC", 3).fault, SealedFile::Fault::NotOurs);
+  EXPECT_EQ(openSealed(bytes, "MAGIC", 4).fault, SealedFile::Fault::OtherVersion);
+  std::string changed = bytes;
+  changed[changed.size() - 10] ^= 1;
+  EXPECT_EQ(openSealed(changed, "MAGIC", 3).fault, SealedFile::Fault::Corrupt);
 }
 
 }  // namespace

@@ -1,15 +1,12 @@
 #include "sim/run/checkpoint.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <optional>
 #include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
 #include "core/atomic_file.hpp"
@@ -17,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/mapped_file.hpp"
 #include "sim/run/checksummed_output.hpp"
+#include "sim/run/first_fault.hpp"
 
 namespace eco {
 namespace {
@@ -97,20 +95,10 @@ void checkCheckpoint(const Checkpoint& checkpoint, const CheckpointLimits& limit
     throw refuse(fmt::format("its year {} is not between 0 and the run's {} years", state.year,
                              limits.targetYears));
   const Plants& p = state.plants;
-  // Parallel: a checkpoint can hold millions of plants. The first fault in plant order is
-  // reported, whatever the thread count.
-  std::atomic<std::size_t> firstBad{p.size()};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), 65536), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i < range.end() && i < firstBad.load(); ++i)
-      if (plantFault(p, i, state.year, limits)) {
-        std::size_t current = firstBad.load();
-        while (i < current && !firstBad.compare_exchange_weak(current, i)) {
-        }
-        return;
-      }
+  const std::size_t i = firstFaulty(p.size(), [&](std::size_t row) {
+    return plantFault(p, row, state.year, limits).has_value();
   });
-  if (firstBad.load() < p.size()) {
-    const std::size_t i = firstBad.load();
+  if (i < p.size()) {
     throw refuse(
         fmt::format("plant {} (id {}): {}", i + 1, p.id[i], *plantFault(p, i, state.year, limits)));
   }

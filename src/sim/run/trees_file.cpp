@@ -1,14 +1,12 @@
 #include "sim/run/trees_file.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <exception>
 #include <span>
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 #include <glm/geometric.hpp>
@@ -20,6 +18,7 @@
 #include "core/mapped_file.hpp"
 #include "core/names.hpp"
 #include "sim/run/checksummed_output.hpp"
+#include "sim/run/first_fault.hpp"
 
 namespace eco {
 namespace {
@@ -426,9 +425,7 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
   if (r.failed() || r.remaining() / kRecordBytes != count || r.remaining() % kRecordBytes != 0)
     throw refuse("the file is corrupt (its length is not that of its rows)");
 
-  // Side by side; the fault reported is the first row's that has one.
   snapshot.trees.resize(count);
-  std::atomic<std::size_t> firstFaulty{count};
   auto fault = [&](const TreeRow& tree) -> std::string {
     if (!std::isfinite(tree.east_m) || !std::isfinite(tree.north_m) ||
         !std::isfinite(tree.ground_m))
@@ -437,18 +434,12 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
       return fmt::format("species {} of {}", tree.species + 1, snapshot.speciesNames.size());
     return treeRowFault(tree);
   };
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 65536), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i < range.end(); ++i) {
-      snapshot.trees[i] = recordAt(sealed.afterHeader.data() + recordsAt + i * kRecordBytes);
-      if (!fault(snapshot.trees[i]).empty()) {
-        std::size_t seen = firstFaulty.load();
-        while (i < seen && !firstFaulty.compare_exchange_weak(seen, i)) {
-        }
-        return;
-      }
-    }
+  // Each row is decoded as it is checked, side by side.
+  const std::size_t i = firstFaulty(count, [&](std::size_t row) {
+    snapshot.trees[row] = recordAt(sealed.afterHeader.data() + recordsAt + row * kRecordBytes);
+    return !fault(snapshot.trees[row]).empty();
   });
-  if (const std::size_t i = firstFaulty.load(); i < count)
+  if (i < count)
     throw refuse(
         fmt::format("row {} (tree {}): {}", i + 1, snapshot.trees[i].id, fault(snapshot.trees[i])));
   return snapshot;

@@ -172,13 +172,6 @@ void putField(char*& at, T value) {
   std::memcpy(at, &value, sizeof value);
   at += sizeof value;
 }
-template <typename T>
-T takeField(const char*& at) {
-  T value;
-  std::memcpy(&value, at, sizeof value);
-  at += sizeof value;
-  return value;
-}
 
 void appendRecord(std::string& bytes, const TreeRow& row) {
   const std::size_t start = bytes.size();
@@ -197,19 +190,21 @@ void appendRecord(std::string& bytes, const TreeRow& row) {
     putField(at, value);
 }
 
-TreeRow recordAt(const char* at) {
+// The record at the start of `record` (kRecordBytes of it).
+TreeRow recordAt(std::string_view record) {
+  BinaryReader r(record);
   TreeRow row;
-  row.id = takeField<std::uint64_t>(at);
-  row.species = takeField<std::uint16_t>(at);
-  row.east_m = takeField<float>(at);
-  row.north_m = takeField<float>(at);
-  row.ground_m = takeField<float>(at);
-  row.age_years = takeField<std::int32_t>(at);
+  row.id = r.get<std::uint64_t>();
+  row.species = r.get<std::uint16_t>();
+  row.east_m = r.get<float>();
+  row.north_m = r.get<float>();
+  row.ground_m = r.get<float>();
+  row.age_years = r.get<std::int32_t>();
   for (float* value : {&row.height_m, &row.crownRadius_m, &row.crownBase_m, &row.dbh_m, &row.vigor})
-    *value = takeField<float>(at);
-  row.variantSeed = takeField<std::uint32_t>(at);
+    *value = r.get<float>();
+  row.variantSeed = r.get<std::uint32_t>();
   for (float* value : {&row.site.light.x, &row.site.light.y, &row.site.wind.x, &row.site.wind.y})
-    *value = takeField<float>(at);
+    *value = r.get<float>();
   return row;
 }
 
@@ -436,7 +431,8 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
   };
   // Each row is decoded as it is checked, side by side.
   const std::size_t i = firstFaulty(count, [&](std::size_t row) {
-    snapshot.trees[row] = recordAt(sealed.afterHeader.data() + recordsAt + row * kRecordBytes);
+    snapshot.trees[row] =
+        recordAt(sealed.afterHeader.substr(recordsAt + row * kRecordBytes, kRecordBytes));
     return !fault(snapshot.trees[row]).empty();
   });
   if (i < count)

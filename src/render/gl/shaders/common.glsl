@@ -119,12 +119,26 @@ bool ditherKeeps(vec2 range) {
 }
 #endif
 
+// A seed of the surface an alpha-tested pixel belongs to (a sprite's tree, a tuft's card),
+// from numbers that stay with it from frame to frame (its position, its look), for
+// coverageThreshold().
+uint coverageSeed(vec3 v) {
+  uvec3 b = floatBitsToUint(v);
+  uint h = b.x * 0x8da6b343u ^ b.y * 0xd8163841u ^ b.z * 0xcb1ab31fu;
+  h = (h ^ (h >> 16)) * 0x7feb352du;
+  return h ^ (h >> 15);
+}
+
 #ifdef FRAGMENT_STAGE
 // A second per-pixel threshold in (0, 1), independent of ditherKeeps' (a fading tree's
 // pixels are not its alpha-tested ones): the hashed alpha test of far impostor texels.
-float coverageThreshold() {
+// Each surface draws its own thresholds (`seed`, coverageSeed()): a pixel's threshold shared
+// by every sprite over it let one high threshold discard them all, so a closed canopy of
+// sprites showed the dark ground through a third of its pixels where overlapping crowns,
+// each letting light through independently, leave a few percent.
+float coverageThreshold(uint seed) {
   uvec2 p = uvec2(gl_FragCoord.xy);
-  uint h = p.x * 7919u + p.y * 104729u + 0x9e3779b9u;
+  uint h = p.x * 7919u + p.y * 104729u + 0x9e3779b9u + seed;
   h = (h ^ (h >> 16)) * 0x7feb352du;
   h = (h ^ (h >> 15)) * 0x846ca68bu;
   return (float((h ^ (h >> 16)) & 0xffffu) + 0.5) / 65536.0;

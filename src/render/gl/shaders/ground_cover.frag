@@ -6,6 +6,7 @@ in vec3 vNormal;
 in vec2 vUv;
 flat in float vPlant;
 flat in vec3 vAlbedo;
+flat in uint vCoverageSeed;
 
 layout(binding = 7) uniform sampler2D uAtlas;
 
@@ -13,7 +14,7 @@ out vec4 outColor;
 
 void main() {
   vec4 texel = texture(uAtlas, vec2((vPlant + vUv.x) * 0.5, vUv.y));
-  if (texel.a <= coverageThreshold()) discard;
+  if (texel.a <= coverageThreshold(vCoverageSeed)) discard;
   vec3 normal = normalize(vNormal);
   if (!gl_FrontFacing) normal.xz = -normal.xz;
   // The tuft's own blades hide half the sky from its foot.

@@ -14,6 +14,7 @@ out vec3 vNormal;
 out vec2 vUv;
 flat out float vPlant;
 flat out vec3 vAlbedo;
+flat out uint vCoverageSeed;  // the card's own alpha-test thresholds
 
 void main() {
   float height = iFoot.w * smoothstep(uRadius, 0.5 * uRadius, distance(iFoot.xyz, uCamera.xyz));
@@ -34,6 +35,7 @@ void main() {
   vNormal = normalize(vec3(0.0, 1.0, 0.0) + 0.5 * vec3(-across.z, 0.0, across.x));
   vUv = vec2(aCorner.x + 0.5, aCorner.y);
   vPlant = iLook.y;
+  vCoverageSeed = coverageSeed(vec3(iFoot.xz, aCorner.z));
   float variation = 0.85 + 0.3 * iLook.z;
   if (iLook.y < 0.5) {
     // The meadow's own colour where the tuft stands, as the terrain shows it.

@@ -1,10 +1,12 @@
 flat in vec3 vCentre;
 flat in vec3 vRight, vUp, vToward;
+flat in vec2 vFrameScale;
 flat in vec2 vCell[3];
 flat in vec3 vWeight;
 flat in vec3 vTint;
 flat in vec2 vKeep;
 flat in float vYaw;
+flat in uint vCoverageSeed;
 
 layout(binding = 1) uniform sampler2D uAlbedoAtlas;
 layout(binding = 2) uniform sampler2D uNormalAtlas;
@@ -16,7 +18,9 @@ out vec4 outColor;
 void main() {
   if (!ditherKeeps(vKeep)) discard;
   // gl_PointCoord runs downward; the atlas (OpenGL's convention) upward.
-  vec2 inFrame = vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y);
+  vec2 onSprite = vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y) * 2.0 - 1.0;
+  vec2 inFrame = onSprite * vFrameScale * 0.5 + 0.5;
+  if (any(lessThan(inFrame, vec2(0.0))) || any(greaterThan(inFrame, vec2(1.0)))) discard;
   // The atlases hold values times coverage (alpha), filtered and mipmapped as such: a
   // texel's alpha is the share of it that the tree covers, and dividing by it gives the
   // mean over what covers it. The frames blend by their weights before the division, so a
@@ -37,7 +41,7 @@ void main() {
   // A hashed alpha test: a far texel half covered by twigs keeps half its pixels, as the
   // mesh's thin branches hit about that share of pixel centres, instead of vanishing at a
   // fixed threshold of one half.
-  if (albedo.a <= coverageThreshold()) discard;
+  if (albedo.a <= coverageThreshold(vCoverageSeed)) discard;
 #ifdef SHADOW_PASS
   return;
 #else
@@ -47,7 +51,6 @@ void main() {
   vec3 normal = rotateYaw(packedNormal.xyz * 2.0 - 1.0, vYaw);
   // The pixel's own place in the crown, so that it takes its own shadow and fog: inner
   // and far-side leaves fall in the shadow of the tree and its neighbours as a mesh's do.
-  vec2 onSprite = inFrame * 2.0 - 1.0;
   depthAndSky /= albedo.a;
   float toward = depthAndSky.r * 2.0 - 1.0;
   vec3 world = vCentre + onSprite.x * vRight + onSprite.y * vUp + toward * vToward;

@@ -14,11 +14,13 @@ flat out vec3 vCentre;
 // The sprite's world axes (right and up on the screen, toward the camera), each as long as
 // the tree's bounding radius: where each of its pixels lies.
 flat out vec3 vRight, vUp, vToward;
+flat out vec2 vFrameScale;  // sprite units per frame unit along right and up (>= 1)
 flat out vec2 vCell[3];  // the frames shown (column, row), with these weights
 flat out vec3 vWeight;
 flat out vec3 vTint;
 flat out vec2 vKeep;  // the dither thresholds this draw keeps: [lo, hi)
 flat out float vYaw;
+flat out uint vCoverageSeed;  // the tree's own alpha-test thresholds
 
 void main() {
   float yaw = iPositionYaw.w;
@@ -60,12 +62,20 @@ void main() {
   float radius = uBounds.w * max(scale.x, scale.y);
   vec3 right = cross(-toward, vec3(0.0, 1.0, 0.0));
   right = length(right) > 1e-4 ? normalize(right) : vec3(1.0, 0.0, 0.0);
+  vec3 up = cross(right, -toward);
   vRight = radius * right;
-  vUp = radius * cross(right, -toward);
-  vToward = radius * toward;
+  vUp = radius * up;
+  // A crown narrower or wider than its type's (scale.x against scale.y) is the frame
+  // stretched along each of the sprite's axes by the tree's scale seen along it: the
+  // horizontal right axis by scale.x, the up axis between scale.y seen level and scale.x seen
+  // from above. The sprite is as large as the larger scale needs; the frame fills it along
+  // that axis and less of it along the other.
+  vFrameScale = radius / (uBounds.w * vec2(scale.x, length(scale * up)));
+  vToward = uBounds.w * length(scale * toward) * toward;
   vTint = iTint.rgb;
   vKeep = vec2(iScale.z, iTint.w);
   vYaw = yaw;
+  vCoverageSeed = coverageSeed(iPositionYaw.xyz);
   float diameter = 2.0 * radius;
 #ifdef SHADOW_PASS
   gl_Position = uLightViewProj * vec4(centreWorld, 1.0);

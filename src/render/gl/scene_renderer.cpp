@@ -8,12 +8,16 @@
 
 #include "core/frames.hpp"
 #include "core/stopwatch.hpp"
+#include "sim/grid.hpp"
 
 namespace eco {
 namespace {
 
-// Clear air: a meteorological visibility of 100 km (Koschmieder: 3.9 / density).
+// Clear air: a meteorological visibility of 100 km (Koschmieder: 3.9 / density) at the
+// haze's base, the landscape's mean altitude, thinning upward with the scale height of the
+// aerosols (1.2 km: Bruneton and Neyret 2008, after Nishita et al. 1993).
 constexpr float kClearAirFogDensity = 3.9f / 100000.0f;
+constexpr float kHazeScaleHeight_m = 1200.0f;
 
 }  // namespace
 
@@ -21,6 +25,7 @@ SceneRenderer::SceneRenderer(const Terrain& terrain, double latitude_deg,
                              const TreeLibrary* library, const ImpostorSettings& impostors)
     : terrainData_(terrain),
       latitude_deg_(latitude_deg),
+      hazeBase_m_(static_cast<float>(statsOf(terrain.height_m).mean)),
       terrain_(terrain),
       groundCover_(terrain),
       sky_({{GL_VERTEX_SHADER, "sky.vert"}, {GL_FRAGMENT_SHADER, "sky.frag"}}),
@@ -88,8 +93,8 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   u.camera = glm::vec4(camera.position, static_cast<float>(options.wind.time));
   u.toSun = glm::vec4(light.toSun, shadows ? 1.0f : 0.0f);
   u.sunColor = glm::vec4(light.sunColor, options.fogDensity.value_or(kClearAirFogDensity));
-  u.skyZenith = glm::vec4(light.skyZenith, 0.0f);
-  u.skyHorizon = glm::vec4(light.skyHorizon, 0.0f);
+  u.skyZenith = glm::vec4(light.skyZenith, hazeBase_m_);
+  u.skyHorizon = glm::vec4(light.skyHorizon, kHazeScaleHeight_m);
   u.ambient = glm::vec4(light.ambient, 0.0f);
   const glm::dvec3 toward = worldDownwindOf(options.wind.fromBearing_deg);
   const double directed = options.wind.directed_wg / kBendBasis_wg;

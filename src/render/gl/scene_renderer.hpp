@@ -54,6 +54,7 @@ class SceneRenderer {
 
   const Terrain& terrainData_;  // the caller's, as for the library
   double latitude_deg_;
+  float hazeBase_m_;  // the altitude where the haze is as dense as the fog density says
   FrameUniformBuffer uniforms_;
   TerrainRenderer terrain_;
   GroundCoverRenderer groundCover_;

@@ -8,8 +8,8 @@ layout(std140, binding = 0) uniform FrameBlock {
   vec4 uCamera;      // xyz eye position; w wind time (radians of the sway oscillation)
   vec4 uToSun;       // xyz unit direction toward the sun; w 1 when the shadow map is used
   vec4 uSunColor;    // rgb beam; w fog density per metre
-  vec4 uSkyZenith;   // rgb
-  vec4 uSkyHorizon;  // rgb
+  vec4 uSkyZenith;   // rgb; w the altitude of the haze's base (m): the landscape's mean
+  vec4 uSkyHorizon;  // rgb; w the haze's scale height (m)
   vec4 uAmbient;     // rgb sky light
   vec4 uWind;        // xy directed wind toward (east, south) in units of the bend basis;
                      // z undirected sway in units of the sway basis; w gust amplitude
@@ -71,13 +71,21 @@ vec3 skyColor(vec3 direction) {
 }
 
 // Aerial perspective: the air between the eye and a point dims its light and adds the
-// sky's, more in blue than in red. uSunColor.w is the extinction at 550 nm (green); the
-// haze's aerosols scatter as lambda^-1.3 (Angstrom's exponent for continental air), so red
-// (680 nm) takes 0.76 of it and blue (440 nm) 1.34: far hills turn blue-grey.
+// sky's, more in blue than in red. uSunColor.w is the extinction at 550 nm (green) at the
+// haze's base; the haze's aerosols scatter as lambda^-1.3 (Angstrom's exponent for
+// continental air), so red (680 nm) takes 0.76 of it and blue (440 nm) 1.34: far hills turn
+// blue-grey. The haze thins with height as exp(-height / scale height), so the extinction
+// along the line to the point is the closed-form integral of that density over it: a view
+// down from kilometres up crosses the dense air once, where a level view runs through it.
 vec3 applyFog(vec3 color, vec3 worldPosition) {
   vec3 toPoint = worldPosition - uCamera.xyz;
   float distance = length(toPoint);
-  vec3 visible = exp(-uSunColor.w * vec3(0.76, 1.0, 1.34) * distance);
+  float scaleHeight = uSkyHorizon.w;
+  float rise = toPoint.y / scaleHeight;  // in scale heights
+  // The line's mean density against the eye's: (1 - e^-rise) / rise, 1 for a level line.
+  float alongLine = abs(rise) > 1e-3 ? (1.0 - exp(-rise)) / rise : 1.0 - 0.5 * rise;
+  float atEye = exp(-(uCamera.y - uSkyZenith.w) / scaleHeight);
+  vec3 visible = exp(-uSunColor.w * atEye * alongLine * distance * vec3(0.76, 1.0, 1.34));
   return mix(skyColor(normalize(vec3(toPoint.x, max(toPoint.y, 0.0) * 0.2, toPoint.z))), color,
              visible);
 }

@@ -147,5 +147,41 @@ TEST(SceneRenderer, DrawsATimelapseInWhichOneTreesSilhouetteGrows) {
   EXPECT_GT(previous, 5.0 * test::compareImages(sink.frames[1], background).differingShare);
 }
 
+// The haze thins with height (docs/rendering.md, "Light, shadows, sky and fog"): flat ground
+// 3 km away seen straight down from 3 km up is hazed far less than the same ground 3 km away
+// seen along it, where a haze of uniform density hazes both alike. Measured against the
+// ground seen from 200 m up (hazed by under 1 %), as the mean colour of the picture's middle;
+// with a scale height of 1.2 km the line down carries 0.37 of the level line's extinction.
+// Measured (colour distance, 0..1 a channel): 0.081 down against 0.200 along; with a uniform
+// haze 0.205 against 0.206.
+TEST(SceneRenderer, HazeThinsWithHeight) {
+  test::useHeadlessGl();
+  const Terrain terrain = test::flatTerrain(129, 100.0);  // 12.8 km square at 100 m
+  SceneRenderer renderer(terrain, 46.0, nullptr);
+  const RenderTarget target = RenderTarget::create(64, 64);
+  RenderOptions options;
+  options.shadows = false;
+  auto middleColor = [&](glm::dvec3 at, float pitch_deg) {
+    Camera camera;
+    camera.position = worldFromMap(at.x, at.y, at.z);
+    camera.pitch_deg = pitch_deg;
+    camera.fovY_deg = 2.0f;  // the picture's middle: the point 3 km away and its neighbours
+    renderer.render(nullptr, camera, options, target);
+    const Image image = readPixels(64, 64);
+    glm::dvec3 sum(0.0);
+    for (int y = 28; y < 36; ++y)
+      for (int x = 28; x < 36; ++x) sum += glm::dvec3(glm::vec3(image.get(x, y)));
+    return sum / 64.0;
+  };
+  const glm::dvec3 clear = middleColor({6400, 9400, 300}, -89.0f);
+  const glm::dvec3 down = middleColor({6400, 9400, 3100}, -89.0f);
+  // 100 m above the ground, looking down to the point 3 km north (1.9 degrees down).
+  const float level = -static_cast<float>(degrees(std::atan(100.0 / 3000.0)));
+  const glm::dvec3 along = middleColor({6400, 6400, 200}, level);
+  const double downHaze = glm::length(down - clear), levelHaze = glm::length(along - clear);
+  EXPECT_GT(levelHaze, 0.03) << "the level line is hazed";
+  EXPECT_LT(downHaze, 0.5 * levelHaze) << downHaze << " vs " << levelHaze;
+}
+
 }  // namespace
 }  // namespace eco

@@ -14,11 +14,11 @@ struct FrameUniforms {
   glm::mat4 viewProj{1.0f};
   glm::mat4 lightViewProj{1.0f};  // the shadow pass being drawn: its cascade's
   glm::mat4 inverseViewProj{1.0f};
-  glm::mat4 shadowCascades[kShadowCascades]{};  // every cascade's, nearest first: lookups
-  glm::vec4 camera{0.0f};                       // xyz eye; w wind time
-  glm::vec4 toSun{0.0f, 1.0f, 0.0f, 0.0f};      // w: 1 when the shadow map is used
-  glm::vec4 sunColor{1.0f};                     // w: fog density per metre
-  glm::vec4 skyZenith{0.0f};                    // w: the haze's base altitude (m)
+  glm::mat4 shadowCascades[kShadowCascades]{};   // every cascade's, nearest first: lookups
+  glm::vec4 camera{0.0f};                        // xyz eye; w wind time
+  glm::vec4 toSun{0.0f, 1.0f, 0.0f, 0.0f};       // w: 1 when the shadow map is used
+  glm::vec4 sunColor{1.0f};                      // w: fog density per metre
+  glm::vec4 skyZenith{0.0f};                     // w: the haze's base altitude (m)
   glm::vec4 skyHorizon{0.0f, 0.0f, 0.0f, 1.0f};  // w: the haze's scale height (m)
   glm::vec4 ambient{0.0f};
   glm::vec4 wind{0.0f};  // directed (east, south) / kBendBasis_wg, sway / kSwayBasis_ws, gust

@@ -140,10 +140,10 @@ uint coverageSeed(vec3 v) {
 #ifdef FRAGMENT_STAGE
 // A second per-pixel threshold in (0, 1), independent of ditherKeeps' (a fading tree's
 // pixels are not its alpha-tested ones): the hashed alpha test of far impostor texels.
-// Each surface draws its own thresholds (`seed`, coverageSeed()): a pixel's threshold shared
-// by every sprite over it let one high threshold discard them all, so a closed canopy of
-// sprites showed the dark ground through a third of its pixels where overlapping crowns,
-// each letting light through independently, leave a few percent.
+// Each surface draws its own thresholds (`seed`, coverageSeed()), so crowns one behind the
+// other let light through independently, as layers of leaves do: with one threshold a pixel
+// for every sprite over it, a high threshold discarded them all, and a closed canopy of
+// sprites showed the dark ground through gaps that overlapping crowns close.
 float coverageThreshold(uint seed) {
   uvec2 p = uvec2(gl_FragCoord.xy);
   uint h = p.x * 7919u + p.y * 104729u + 0x9e3779b9u + seed;

@@ -151,19 +151,13 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expec
   };
   const std::optional<MappedFile> mapping = MappedFile::open(file);
   if (!mapping) throw refuse("cannot open the checkpoint (was the run started in this folder?)");
-  const SealedFile sealed = openSealed(mapping->bytes(), kMagic, kFormatVersion);
-  switch (sealed.fault) {
-    case SealedFile::Fault::NotOurs:
-      throw refuse("not an ecoforest checkpoint");
-    case SealedFile::Fault::OtherVersion:
-      throw refuse("checkpoint format from another version of ecoforest; start the run afresh");
-    case SealedFile::Fault::Corrupt:
-      throw refuse("checkpoint is corrupt (checksum mismatch)");
-    case SealedFile::Fault::None:
-      break;
-  }
+  const std::string_view body = requireSealed(
+      mapping->bytes(), kMagic, kFormatVersion, file,
+      {.notOurs = "not an ecoforest checkpoint",
+       .otherVersion = "checkpoint format from another version of ecoforest; start the run afresh",
+       .corrupt = "checkpoint is corrupt (checksum mismatch)"});
 
-  BinaryReader r(sealed.afterHeader);
+  BinaryReader r(body);
   Checkpoint checkpoint;
   checkpoint.scenarioHash = r.get<std::uint64_t>();
   checkpoint.programVersion = r.getString();

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "core/error.hpp"
 #include "core/hash.hpp"
 
 namespace eco {
@@ -87,6 +88,27 @@ SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint3
   const std::size_t headerBytes = bytes.size() - header.remaining();
   if (!body || headerBytes > body->size()) return {SealedFile::Fault::Corrupt, {}};
   return {SealedFile::Fault::None, body->substr(headerBytes)};
+}
+
+std::string_view requireSealed(std::string_view bytes, std::string_view magic,
+                               std::uint32_t version, const std::filesystem::path& file,
+                               const SealedFileFaults& say) {
+  const SealedFile sealed = openSealed(bytes, magic, version);
+  const std::string* why = nullptr;
+  switch (sealed.fault) {
+    case SealedFile::Fault::NotOurs:
+      why = &say.notOurs;
+      break;
+    case SealedFile::Fault::OtherVersion:
+      why = &say.otherVersion;
+      break;
+    case SealedFile::Fault::Corrupt:
+      why = &say.corrupt;
+      break;
+    case SealedFile::Fault::None:
+      return sealed.afterHeader;
+  }
+  throw InputError({file.string(), 0, ""}, *why);
 }
 
 }  // namespace eco

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -48,13 +49,22 @@ class ChecksummedOutput {
 // file is too short to hold one or the stored checksum is not the body's.
 std::optional<std::string_view> checkedBody(std::string_view bytes);
 
-// A file's bytes after its magic and version, checked in that order (each reader says in
-// its own words which check failed).
+// A file's bytes after its magic and version, checked in that order.
 struct SealedFile {
   enum class Fault { None, NotOurs, OtherVersion, Corrupt };
   Fault fault = Fault::None;
   std::string_view afterHeader;  // the body past the magic and version, without the checksum
 };
 SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint32_t version);
+
+// What a reader says, in its own words, when its file fails each of openSealed's checks.
+struct SealedFileFaults {
+  std::string notOurs, otherVersion, corrupt;
+};
+// openSealed's body past the header, or an InputError naming `file` with the words of the
+// check that failed.
+std::string_view requireSealed(std::string_view bytes, std::string_view magic,
+                               std::uint32_t version, const std::filesystem::path& file,
+                               const SealedFileFaults& say);
 
 }  // namespace eco

@@ -394,19 +394,14 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
 TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
   auto refuse = [&](const std::string& why) { return InputError({file.string(), 0, ""}, why); };
   const MappedFile mapping = mapped(file);
-  const SealedFile sealed = openSealed(mapping.bytes(), kBinaryMagic, kBinaryVersion);
-  switch (sealed.fault) {
-    case SealedFile::Fault::NotOurs:
-      throw refuse("not a binary trees file of ecoforest");
-    case SealedFile::Fault::OtherVersion:
-      throw refuse("a binary trees file of another version of ecoforest: run the scenario again");
-    case SealedFile::Fault::Corrupt:
-      throw refuse("the file is corrupt (checksum mismatch)");
-    case SealedFile::Fault::None:
-      break;
-  }
+  const std::string_view body = requireSealed(
+      mapping.bytes(), kBinaryMagic, kBinaryVersion, file,
+      {.notOurs = "not a binary trees file of ecoforest",
+       .otherVersion =
+           "a binary trees file of another version of ecoforest: run the scenario again",
+       .corrupt = "the file is corrupt (checksum mismatch)"});
 
-  BinaryReader r(sealed.afterHeader);
+  BinaryReader r(body);
   TreeSnapshot snapshot;
   const auto speciesCount = r.get<std::uint32_t>();
   for (std::uint32_t s = 0; s < speciesCount && !r.failed(); ++s) {
@@ -416,7 +411,7 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
     snapshot.speciesNames.push_back(std::move(name));
   }
   const auto count = r.get<std::uint64_t>();
-  const std::size_t recordsAt = sealed.afterHeader.size() - r.remaining();
+  const std::size_t recordsAt = body.size() - r.remaining();
   if (r.failed() || r.remaining() / kRecordBytes != count || r.remaining() % kRecordBytes != 0)
     throw refuse("the file is corrupt (its length is not that of its rows)");
 
@@ -431,8 +426,7 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
   };
   // Each row is decoded as it is checked, side by side.
   const std::size_t i = firstFaulty(count, [&](std::size_t row) {
-    snapshot.trees[row] =
-        recordAt(sealed.afterHeader.substr(recordsAt + row * kRecordBytes, kRecordBytes));
+    snapshot.trees[row] = recordAt(body.substr(recordsAt + row * kRecordBytes, kRecordBytes));
     return !fault(snapshot.trees[row]).empty();
   });
   if (i < count)

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "core/hash.hpp"
 #include "test_files.hpp"
 
@@ -60,19 +61,22 @@ TEST(ChecksummedOutput, ABodyIsCheckedAgainstTheChecksumAfterIt) {
   EXPECT_FALSE(checkedBody("1234567").has_value());
 }
 
+// The bytes of a file written as the magic "MAGIC", version 3 and `body`.
+std::string sealedFileOf(std::string_view body) {
+  const auto file = test::freshDirectory("checksummed_sealed") / "sealed.bin";
+  AtomicFile out(file);
+  ChecksummedOutput output(out);
+  output.add(sealedHeader("MAGIC", 3).bytes());
+  output.add(body);
+  output.finish();
+  out.commit();
+  return test::readFile(file);
+}
+
 // A file written as its magic, version and body opens to the body; another magic, another
 // version or a changed byte does not.
 TEST(ChecksummedOutput, ASealedFileOpensToItsBodyAfterTheHeader) {
-  const auto file = test::freshDirectory("checksummed_sealed") / "sealed.bin";
-  {
-    AtomicFile out(file);
-    ChecksummedOutput body(out);
-    body.add(sealedHeader("MAGIC", 3).bytes());
-    body.add("the body");
-    body.finish();
-    out.commit();
-  }
-  const std::string bytes = test::readFile(file);
+  const std::string bytes = sealedFileOf("the body");
   const SealedFile sealed = openSealed(bytes, "MAGIC", 3);
   EXPECT_EQ(sealed.fault, SealedFile::Fault::None);
   EXPECT_EQ(sealed.afterHeader, "the body");
@@ -82,6 +86,28 @@ TEST(ChecksummedOutput, ASealedFileOpensToItsBodyAfterTheHeader) {
   std::string changed = bytes;
   changed[changed.size() - 10] ^= 1;
   EXPECT_EQ(openSealed(changed, "MAGIC", 3).fault, SealedFile::Fault::Corrupt);
+}
+
+// requireSealed gives the body, or an InputError at the file with the reader's words for the
+// check that failed.
+TEST(ChecksummedOutput, ASealedFileThatFailsACheckIsRefusedInTheReadersWords) {
+  const std::string bytes = sealedFileOf("the body");
+  const SealedFileFaults say{.notOurs = "not ours", .otherVersion = "other", .corrupt = "broken"};
+  EXPECT_EQ(requireSealed(bytes, "MAGIC", 3, "f.bin", say), "the body");
+  auto refusal = [&](std::string_view file, std::string_view magic, std::uint32_t version) {
+    try {
+      requireSealed(file, magic, version, "f.bin", say);
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().file, "f.bin");
+      return e.message();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal(bytes, "OTHER", 3), "not ours");
+  EXPECT_EQ(refusal(bytes, "MAGIC", 4), "other");
+  std::string changed = bytes;
+  changed[changed.size() - 10] ^= 1;
+  EXPECT_EQ(refusal(changed, "MAGIC", 3), "broken");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "core/csv_text.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <random>
@@ -99,4 +100,29 @@ TEST(CsvText, FixedDecimalsAreRoundedAsPrintfRoundsThem) {
 }
 
 }  // namespace
+TEST(CsvText, IntegersAreWrittenAsPrintfWritesThem) {
+  auto integer = [](auto value) {
+    std::string out = "x";
+    appendInteger(out, value);
+    return out.substr(1);  // appended, not replaced
+  };
+  auto printedInteger = [](long long value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%lld", value);
+    return std::string(text);
+  };
+  EXPECT_EQ(integer(0), "0");
+  EXPECT_EQ(integer(-17), "-17");
+  EXPECT_EQ(integer(std::numeric_limits<std::int64_t>::min()), "-9223372036854775808");
+  EXPECT_EQ(integer(std::numeric_limits<std::uint64_t>::max()), "18446744073709551615");
+  EXPECT_EQ(integer(std::numeric_limits<std::uint32_t>::max()), "4294967295");
+  std::mt19937_64 random(11);
+  for (int i = 0; i < 1000; ++i) {
+    const auto value = static_cast<std::int64_t>(random()) >> (i % 60);
+    ASSERT_EQ(integer(value), printedInteger(value));
+    ASSERT_EQ(integer(static_cast<std::int32_t>(value)),
+              printedInteger(static_cast<std::int32_t>(value)));
+  }
+}
+
 }  // namespace eco

@@ -265,10 +265,13 @@ void Ecosystem::computeLight() {
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     if (crownOfPlant_[i] == kNoCrown) return;
     const LifeHistory& life = species_[p.species[i]].ecology.life;
+    // The leaves spread over the crown as the light model draws it, so its leaf area index
+    // there is the one they were spread to.
+    const float radius = std::max(p.crownRadius_m[i], 0.05f);
     const CrownFoliage foliage =
-        crownFoliage(life, foliageLimit_[p.species[i]], p.dbh_m[i], p.height_m[i], p.light[i]);
-    crowns_[crownOfPlant_[i]] = {p.east_m[i], p.north_m[i], std::max(p.crownRadius_m[i], 0.05f),
-                                 p.height_m[i], static_cast<float>(foliage.leafArea_m2)};
+        crownFoliage(life, foliageLimit_[p.species[i]], p.dbh_m[i], radius, p.light[i]);
+    crowns_[crownOfPlant_[i]] = {p.east_m[i], p.north_m[i], radius, p.height_m[i],
+                                 static_cast<float>(foliage.leafArea_m2)};
     crownFoliage_kg_[crownOfPlant_[i]] = static_cast<float>(foliage.foliage_kg);
   });
   light_.compute(crowns_);

@@ -11,6 +11,19 @@ namespace {
 
 constexpr double kQuarterPi = std::numbers::pi / 4.0;
 
+// A step of Halley's method for f(x) = 0 from f, f' and f'': Newton's step f / f' divided by
+// 1 - f f'' / (2 f'^2), which makes the convergence cubic. Far from the root, where that
+// divisor is small, it is Newton's step.
+double halleyStep(double f, double slope, double curvature) {
+  const double newton = f / slope;
+  const double divisor = 1.0 - 0.5 * newton * curvature / slope;
+  return divisor > 0.5 ? newton / divisor : newton;
+}
+
+// Halley's iterations stop once a step is below this share of the value: the next step, the
+// error left, is near its cube (1e-12), far below a float's resolution (6e-8).
+constexpr double kHalleyTolerance = 1e-4;
+
 // SILVA's crown diameter; fitted to trees of measurable diameter, so below 1 cm (and a
 // sapling's breast height) it is held at its value there.
 double silvaCrownDiameter(const LifeHistory& life, double dbh_m, double height_m) {
@@ -46,21 +59,20 @@ FoliageLimit foliageLimitOf(const LifeHistory& life) {
 }
 
 CrownFoliage crownFoliage(const LifeHistory& life, double dbh_m, double height_m, double topLight) {
-  return crownFoliage(life, foliageLimitOf(life), dbh_m, height_m, topLight);
+  return crownFoliage(life, foliageLimitOf(life), dbh_m, crownRadiusOf(life, dbh_m, height_m),
+                      topLight);
 }
 
 CrownFoliage crownFoliage(const LifeHistory& life, const FoliageLimit& limit, double dbh_m,
-                          double height_m, double topLight) {
-  const double radius = crownRadiusOf(life, dbh_m, height_m);
-  const double area = std::numbers::pi * radius * radius;
+                          double crownRadius_m, double topLight) {
+  const double area = std::numbers::pi * crownRadius_m * crownRadius_m;
   if (area <= 0.0) return {0.0, 0.0};
   const double sunMass = 1.0 / life.specificLeafArea;  // kg per m2 of sun leaves
   const double r = life.shadeLeafMassRatio;
   const double top = std::clamp(topLight, 0.0, 1.0);
   // Foliage mass per m2 of projection down to a leaf area index L, whose leaves absorb
   // 1 - exp(-k L) of the light: m(L) = sunMass (r L + (1 - r) top (1 - exp(-k L)) / k),
-  // increasing and concave, so Newton's method from below (the sun leaves' area) climbs to
-  // the root without passing it.
+  // increasing and concave.
   auto massTo = [&](double lai, double absorbedShare) {
     return sunMass * (r * lai + (1.0 - r) * top * absorbedShare / kLeafExtinction);
   };
@@ -69,24 +81,31 @@ CrownFoliage crownFoliage(const LifeHistory& life, const FoliageLimit& limit, do
   const double allometric_kg = life.foliage.at(100.0 * dbh_m);
   const double mass = allometric_kg / area;
   if (mass >= maxMass) return {maxLai * area, maxMass * area};
+  // Halley's method from the sun leaves' area (below the root): m' is the mass per m2 of
+  // leaf of the layer at depth L and m'' = -k (1 - r) top exp(-k L) sunMass its change,
+  // both from the one exponential. Each step cubes the relative error, so a step below 1e-4
+  // of L leaves an error near 1e-12, far below a float's resolution.
   double lai = mass / sunMass;
   for (int i = 0; i < 50; ++i) {
-    // The layer at the current depth: its mass per m2 of leaf.
-    const double slope = sunMass * leafMassShare(life, top * std::exp(-kLeafExtinction * lai));
-    const double step = (mass - massTo(lai, -std::expm1(-kLeafExtinction * lai))) / slope;
-    lai += step;
-    if (step <= 1e-9 * lai) break;
+    const double absorbedShare = -std::expm1(-kLeafExtinction * lai);
+    const double transmitted = 1.0 - absorbedShare;
+    const double excess = massTo(lai, absorbedShare) - mass;
+    const double slope = sunMass * leafMassShare(life, top * transmitted);
+    const double curvature = -sunMass * kLeafExtinction * (1.0 - r) * top * transmitted;
+    const double step = halleyStep(excess, slope, curvature);
+    lai -= step;
+    if (std::abs(step) <= kHalleyTolerance * lai) break;
   }
   return {std::min(lai, maxLai) * area, allometric_kg};
 }
 
 namespace {
 
-// The wood at a diameter (cm) and its derivative. The three compartments' power laws share
-// the diameter's logarithm: one log and three exps instead of three pows, which matters in
-// the yearly step's hottest call (each tree, each year, three times).
+// The wood at a diameter (cm) and its first two derivatives. The three compartments' power
+// laws share the diameter's logarithm: one log and three exps instead of three pows, which
+// matters in the yearly step's hottest call (each tree, each year, twice).
 struct WoodyAt {
-  double biomass_kg = 0.0, slope_kg_per_cm = 0.0;
+  double biomass_kg = 0.0, slope_kg_per_cm = 0.0, curvature_kg_per_cm2 = 0.0;
 };
 
 WoodyAt woodyAt(const LifeHistory& life, double d_cm) {
@@ -95,29 +114,34 @@ WoodyAt woodyAt(const LifeHistory& life, double d_cm) {
   const double stem = life.stem.a * std::exp(life.stem.b * lnD);
   const double branches = life.branches.a * std::exp(life.branches.b * lnD);
   const double roots = life.coarseRoots.a * std::exp(life.coarseRoots.b * lnD);
+  auto curvature = [](double b, double term) { return b * (b - 1.0) * term; };
   return {stem + branches + roots,
-          (life.stem.b * stem + life.branches.b * branches + life.coarseRoots.b * roots) / d_cm};
+          (life.stem.b * stem + life.branches.b * branches + life.coarseRoots.b * roots) / d_cm,
+          (curvature(life.stem.b, stem) + curvature(life.branches.b, branches) +
+           curvature(life.coarseRoots.b, roots)) /
+              (d_cm * d_cm)};
 }
 
-// Newton's method on the increasing, convex sum of power laws, from d_cm where the wood is
-// `at`: from a tree's last diameter two steps suffice.
-double newtonDiameter_m(const LifeHistory& life, double biomass_kg, double d_cm, WoodyAt at) {
+// Halley's method on the increasing sum of power laws, from d_cm where the wood is `at`:
+// from a tree's last diameter a year's growth takes one step and a second that confirms it.
+double halleyDiameter_m(const LifeHistory& life, double biomass_kg, double d_cm, WoodyAt at) {
   for (int i = 0; i < 30; ++i) {
-    const double next =
-        std::max(0.5 * d_cm, d_cm - (at.biomass_kg - biomass_kg) / at.slope_kg_per_cm);
-    if (std::abs(next - d_cm) < 1e-9 * d_cm) return next / 100.0;
+    const double step =
+        halleyStep(at.biomass_kg - biomass_kg, at.slope_kg_per_cm, at.curvature_kg_per_cm2);
+    const double next = std::max(0.5 * d_cm, d_cm - step);
+    if (std::abs(next - d_cm) < kHalleyTolerance * d_cm) return next / 100.0;
     d_cm = next;
     at = woodyAt(life, d_cm);
   }
   return d_cm / 100.0;
 }
 
-// The diameter after a year adds wood_kg to a tree of dbh_m: Newton's method from the
+// The diameter after a year adds wood_kg to a tree of dbh_m: Halley's method from the
 // evaluation that measured the tree's wood (none without a diameter).
 double diameterAddingWood(const LifeHistory& life, double dbh_m, double wood_kg) {
   if (dbh_m <= 0.0) return diameterOfWoodyBiomass(life, wood_kg, 0.0);
   const WoodyAt now = woodyAt(life, 100.0 * dbh_m);
-  return newtonDiameter_m(life, now.biomass_kg + wood_kg, 100.0 * dbh_m, now);
+  return halleyDiameter_m(life, now.biomass_kg + wood_kg, 100.0 * dbh_m, now);
 }
 
 }  // namespace
@@ -133,7 +157,7 @@ double diameterOfWoodyBiomass(const LifeHistory& life, double biomass_kg, double
       guess_m > 0.0 ? 100.0 * guess_m
                     : std::pow(biomass_kg / (life.stem.a + life.branches.a + life.coarseRoots.a),
                                1.0 / life.stem.b);
-  return newtonDiameter_m(life, biomass_kg, d_cm, woodyAt(life, d_cm));
+  return halleyDiameter_m(life, biomass_kg, d_cm, woodyAt(life, d_cm));
 }
 
 double leafMassShare(const LifeHistory& life, double light) {

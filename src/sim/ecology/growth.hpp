@@ -55,8 +55,10 @@ struct FoliageLimit {
   double absorbedShare = 0.0;
 };
 FoliageLimit foliageLimitOf(const LifeHistory& life);
+// The yearly step's form: with the species' limit worked out once, and the crown's radius as
+// the light model spreads its leaves (crownRadiusOf's, kept from last year's growth).
 CrownFoliage crownFoliage(const LifeHistory& life, const FoliageLimit& limit, double dbh_m,
-                          double height_m, double topLight);
+                          double crownRadius_m, double topLight);
 // Wood (stem, branches, coarse roots), kg, and its inverse.
 double woodyBiomass(const LifeHistory& life, double dbh_m);
 // The inverse starts from `guess_m` when given (the diameter before a year's growth).

@@ -101,24 +101,30 @@ void writeInBatches(std::size_t count, std::size_t bytesPerRow,
   }
 }
 
-// A CSV row; the numbers one by one (appendFixed): fmt's float formatting was a tenth of a
-// run.
+// A CSV row; the numbers one by one (appendFixed, appendInteger): fmt's float formatting was
+// a tenth of a run.
 void appendCsvRow(std::string& text, const TreeRow& row, std::string_view species) {
   auto fixed = [&](double value, int decimals) {
     appendFixed(text, static_cast<float>(value), decimals);
     text += ',';
   };
-  fmt::format_to(std::back_inserter(text), "{},{},", row.id, species);
+  auto integer = [&](auto value) {
+    appendInteger(text, value);
+    text += ',';
+  };
+  integer(row.id);
+  text += species;
+  text += ',';
   fixed(row.east_m, 3);
   fixed(row.north_m, 3);
   fixed(row.ground_m, 3);
-  fmt::format_to(std::back_inserter(text), "{},", row.age_years);
+  integer(row.age_years);
   fixed(row.height_m, 3);
   fixed(row.crownRadius_m, 3);
   fixed(row.crownBase_m, 3);
   fixed(row.dbh_m, 4);
   fixed(row.vigor, 3);
-  fmt::format_to(std::back_inserter(text), "{},", row.variantSeed);
+  integer(row.variantSeed);
   fixed(row.site.light.x, 2);
   fixed(row.site.light.y, 2);
   fixed(row.site.wind.x, 2);

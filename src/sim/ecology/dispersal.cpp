@@ -168,4 +168,26 @@ double SeedMap::density(int species, double east_m, double north_m) const {
   return seeds;
 }
 
+SeedMap::Lattice SeedMap::latticeOf(const std::vector<double>& easts,
+                                    const std::vector<double>& norths) const {
+  Lattice lattice;
+  for (const Layer& layer : layers_) {
+    std::vector<int>& columns = lattice.columns.emplace_back(easts.size());
+    std::vector<int>& rows = lattice.rows.emplace_back(norths.size());
+    for (std::size_t x = 0; x < easts.size(); ++x) columns[x] = cellOf(layer, easts[x], 0.0).x;
+    for (std::size_t y = 0; y < norths.size(); ++y) rows[y] = cellOf(layer, 0.0, norths[y]).y;
+  }
+  return lattice;
+}
+
+double SeedMap::density(int species, const Lattice& lattice, int x, int y) const {
+  double seeds = 0.0;
+  for (std::size_t l : layersOf_[species]) {
+    const Layer& layer = layers_[l];
+    seeds += layer.density[static_cast<std::size_t>(lattice.rows[l][y]) * layer.width +
+                           lattice.columns[l][x]];
+  }
+  return seeds;
+}
+
 }  // namespace eco

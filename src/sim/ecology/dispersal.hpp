@@ -51,6 +51,17 @@ class SeedMap {
   // Seeds per m2 of a species at a map position this year (before any seed rain).
   double density(int species, double east_m, double north_m) const;
 
+  // The seed cells of every layer under a lattice of places, the east of each column and the
+  // north of each row: a lattice's places share their columns and rows, so a pass over
+  // millions of them (establishment's regeneration cells) finds each once, not a division
+  // per layer per place. density(species, lattice, x, y) is density(species, easts[x],
+  // norths[y]), to the bit.
+  struct Lattice {
+    std::vector<std::vector<int>> columns, rows;  // per layer
+  };
+  Lattice latticeOf(const std::vector<double>& easts, const std::vector<double>& norths) const;
+  double density(int species, const Lattice& lattice, int x, int y) const;
+
  private:
   struct Tap {
     int dx, dy;

@@ -440,20 +440,34 @@ void Ecosystem::establish() {
     int species;
     double east, north;
   };
+  // The cells' centres share their easts along a row and their norths along a column.
+  std::vector<double> easts(regenerationX_), norths(regenerationY_);
+  for (int x = 0; x < regenerationX_; ++x) easts[x] = regenerationCentre(x, 0).x;
+  for (int y = 0; y < regenerationY_; ++y) norths[y] = regenerationCentre(0, y).y;
+  const SeedMap::Lattice seedCells = seeds_.latticeOf(easts, norths);
   std::vector<std::vector<Newcomer>> rows(regenerationY_);
   tbb::parallel_for(0, regenerationY_, [&](int y) {
+    // The light and the species' responses to it hold over a light column, which spans
+    // several cells of the row: they are worked out once a column.
+    long lightColumn = -1;
+    double ground = 0.0, sky = 0.0;
+    std::vector<double> response(species_.size());
     for (int x = 0; x < regenerationX_; ++x) {
       const std::size_t index = static_cast<std::size_t>(y) * regenerationX_ + x;
       YoungPlants cell = young[index];
       if (cell.closed || cell.count >= kYoungPlantsPerCell ||
           (!openCell_.empty() && openCell_[index]))
         continue;
-      const glm::dvec2 centre = regenerationCentre(x, y);
-      const double east = centre.x, north = centre.y;
+      const double east = easts[x], north = norths[y];
       const long terrainCell = g.cellAt(east, north);
       if (terrainCell < 0 || terrain_.isOutside(static_cast<std::size_t>(terrainCell))) continue;
-      const double ground = light_.groundLightAt(east, north);
-      const double sky = light_.skyLightAt(east, north);
+      if (const long column = light_.columnAt(east, north); column != lightColumn) {
+        lightColumn = column;
+        ground = light_.groundLightInColumn(column);
+        sky = light_.skyLightInColumn(column);
+        for (std::size_t s = 0; s < species_.size(); ++s)
+          response[s] = std::clamp(species_[s].ecology.lightResponse(ground), 0.0, 1.0);
+      }
       const double groundLight = sky > 0.0 ? ground / sky : 1.0;  // relative to the open
       const Seedbed seedbed =
           seedbedAt(groundLight, moisture_[terrainCell], slope_deg_[terrainCell]);
@@ -465,11 +479,10 @@ void Ecosystem::establish() {
         const EcosystemSpecies& sp = species_[s];
         const LifeHistory& life = sp.ecology.life;
         const double seeds =
-            (seeds_.density(static_cast<int>(s), east, north) + sp.seedRainPerHaPerYear / 1e4) *
+            (seeds_.density(static_cast<int>(s), seedCells, x, y) + sp.seedRainPerHaPerYear / 1e4) *
             cellArea;
         const double expected = seeds * life.germination * sp.suitability[terrainCell] *
-                                std::clamp(sp.ecology.lightResponse(ground), 0.0, 1.0) *
-                                seedbedEstablishment(life, seedbed);
+                                response[s] * seedbedEstablishment(life, seedbed);
         if (expected <= 0.0) continue;
         // A seedling arrives with chance 1 - exp(-expected), which is below `expected`: a
         // draw at or above that settles it without the exponential, as it does in most

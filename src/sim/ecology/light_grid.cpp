@@ -183,13 +183,16 @@ double LightGrid::lightInColumn(long column, double height_m) const {
 }
 
 double LightGrid::groundLightAt(double east_m, double north_m) const {
-  const long column = columnAt(east_m, north_m);
+  return groundLightInColumn(columnAt(east_m, north_m));
+}
+
+double LightGrid::groundLightInColumn(long column) const {
   return layersBegin(column) == layersEnd(column) ? topLight_[column]
                                                   : (layersEnd(column) - 1)->lightBelow;
 }
 
 double LightGrid::skyLightAt(double east_m, double north_m) const {
-  return topLight_[columnAt(east_m, north_m)];
+  return skyLightInColumn(columnAt(east_m, north_m));
 }
 
 double LightGrid::beyondCrown_m(double crownRadius_m) {

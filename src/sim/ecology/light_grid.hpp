@@ -52,6 +52,9 @@ class LightGrid {
   // The same on the ground, below every crown, and above them all (the terrain's light).
   double groundLightAt(double east_m, double north_m) const;
   double skyLightAt(double east_m, double north_m) const;
+  // The same in a column (columnAt), for a pass that asks both of one place.
+  double groundLightInColumn(long column) const;
+  double skyLightInColumn(long column) const { return topLight_[column]; }
   // The lowest height in [from_m, top_m] where the light beside a crown -- the mean over
   // the four columns `reach_m` east, north, west and south of the stem -- reaches at least
   // `light` (crown pruning: a lower branch lives on the light that comes in from the side

@@ -1,6 +1,7 @@
 #include "sim/ecology/dispersal.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -139,6 +140,40 @@ TEST(Dispersal, SeedsFromASourceOffTheMapLandAtTheKernelsDistances) {
     EXPECT_NEAR(seeds.density(0, east, 100.0), expected, 0.03 * expected + 1e-4) << "cell " << cell;
   }
   EXPECT_LT(seeds.density(0, 700.0, 100.0), 1e-6);  // 14 means away: no seed
+}
+
+// Establishment asks for the seeds at millions of regeneration cells a year, which lie on a
+// lattice: looked up through the lattice's columns and rows, each layer's cell is the one
+// the place's own lookup finds, so the density is the same to the bit, on the map, on its
+// edges and beyond them (clamped to the edge cells).
+TEST(Dispersal, ALatticeOfPlacesFindsEachPlacesOwnSeeds) {
+  LifeHistory pine, beech;
+  pine.dispersalMean_m = 40.0;
+  beech.dispersal = DispersalVector::Animal;
+  beech.dispersalMean_m = 15.0;
+  beech.longDistanceFraction = 0.1;
+  beech.longDistanceMean_m = 200.0;  // a second layer on its own grid
+  const Grid grid{60, 40, 10.0, 10.0};
+  SeedMap seeds(grid, {&pine, &beech}, {1.0, 0.0});
+  seeds.setSurroundingSeeds(0, 0.5);
+  Rng rng(streamKey(13, purpose("test")));
+  for (int k = 0; k < 200; ++k)
+    seeds.addSeeds(k % 2, rng.uniform() * 590.0, rng.uniform() * 390.0, 1000.0 * rng.uniform());
+  seeds.disperse();
+  std::vector<double> easts, norths;
+  for (double east = -20.0; east < 620.0; east += 2.0 / 3.0) easts.push_back(east);
+  for (double north = -20.0; north < 420.0; north += 2.0) norths.push_back(north);
+  const SeedMap::Lattice lattice = seeds.latticeOf(easts, norths);
+  int seeded = 0;
+  for (int species = 0; species < 2; ++species)
+    for (std::size_t y = 0; y < norths.size(); ++y)
+      for (std::size_t x = 0; x < easts.size(); ++x) {
+        const double own = seeds.density(species, easts[x], norths[y]);
+        ASSERT_EQ(seeds.density(species, lattice, static_cast<int>(x), static_cast<int>(y)), own)
+            << species << " at " << easts[x] << ", " << norths[y];
+        seeded += own > 0.0;
+      }
+  EXPECT_GT(seeded, 0);
 }
 
 }  // namespace

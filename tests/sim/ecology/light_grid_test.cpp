@@ -53,6 +53,10 @@ TEST(LightGrid, TheTallerCrownTakesItsLightFirst) {
               leftInColumn - m.light.absorbed(0) / (kLightColumn_m * kLightColumn_m), 1e-6);
   EXPECT_DOUBLE_EQ(m.light.groundLightAt(20.0, 20.0), m.light.lightAt(20.0, 20.0, 0.0));
   EXPECT_DOUBLE_EQ(m.light.skyLightAt(20.0, 20.0), 1.0);
+  // The same asked of the column.
+  const long column = m.light.columnAt(20.0, 20.0);
+  EXPECT_EQ(m.light.groundLightInColumn(column), m.light.groundLightAt(20.0, 20.0));
+  EXPECT_EQ(m.light.skyLightInColumn(column), m.light.skyLightAt(20.0, 20.0));
   // The neighbouring column is untouched.
   EXPECT_DOUBLE_EQ(m.light.lightAt(30.0, 20.0, 1.0), 1.0);
   // Crown pruning: the lowest height with at least this much light beside a crown, the

@@ -99,7 +99,6 @@ TEST(CsvText, FixedDecimalsAreRoundedAsPrintfRoundsThem) {
       EXPECT_EQ(fixed(edge, decimals), printed(edge, decimals)) << edge << " " << decimals;
 }
 
-}  // namespace
 TEST(CsvText, IntegersAreWrittenAsPrintfWritesThem) {
   auto integer = [](auto value) {
     std::string out = "x";
@@ -125,4 +124,5 @@ TEST(CsvText, IntegersAreWrittenAsPrintfWritesThem) {
   }
 }
 
+}  // namespace
 }  // namespace eco

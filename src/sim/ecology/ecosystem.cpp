@@ -440,7 +440,8 @@ void Ecosystem::establish() {
     int species;
     double east, north;
   };
-  // The cells' centres share their easts along a row and their norths along a column.
+  // The cells' centres share their east down each column of cells and their north along
+  // each row.
   std::vector<double> easts(regenerationX_), norths(regenerationY_);
   for (int x = 0; x < regenerationX_; ++x) easts[x] = regenerationCentre(x, 0).x;
   for (int y = 0; y < regenerationY_; ++y) norths[y] = regenerationCentre(0, y).y;

@@ -31,9 +31,17 @@ struct Grid {
   double northOf(int y) const { return (height - 1 - y) * dy_m; }
   // The cell holding a map position, or -1 outside the grid.
   long cellAt(double east_m, double north_m) const {
-    const double fx = east_m / dx_m + 0.5, fy = (height - 1) + 0.5 - north_m / dy_m;
-    if (!(fx >= 0.0 && fy >= 0.0 && fx < width && fy < height)) return -1;
-    return static_cast<long>(index(static_cast<int>(fx), static_cast<int>(fy)));
+    const int x = columnAt(east_m), y = rowAt(north_m);
+    return x < 0 || y < 0 ? -1 : static_cast<long>(index(x, y));
+  }
+  // The column holding an east and the row holding a north, or -1 outside the grid.
+  int columnAt(double east_m) const {
+    const double fx = east_m / dx_m + 0.5;
+    return fx >= 0.0 && fx < width ? static_cast<int>(fx) : -1;
+  }
+  int rowAt(double north_m) const {
+    const double fy = (height - 1) + 0.5 - north_m / dy_m;
+    return fy >= 0.0 && fy < height ? static_cast<int>(fy) : -1;
   }
 };
 

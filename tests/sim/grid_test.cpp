@@ -1,5 +1,7 @@
 #include "sim/grid.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace eco {
@@ -12,6 +14,28 @@ TEST(Grid, IndexingAndArea) {
   EXPECT_FALSE(g.contains(4, 0));
   EXPECT_FALSE(g.contains(0, -1));
   EXPECT_DOUBLE_EQ(g.area_m2(), 12 * 200.0);
+}
+
+TEST(Grid, ThePlaceOfAPositionIsItsColumnAndRow) {
+  const Grid g{4, 3, 10.0, 20.0};  // centres at east 0..30, north 0..40; row 0 the northmost
+  EXPECT_EQ(g.cellAt(0.0, 40.0), 0);
+  EXPECT_EQ(g.cellAt(34.9, -9.9), static_cast<long>(g.index(3, 2)));
+  EXPECT_EQ(g.columnAt(14.9), 1);
+  EXPECT_EQ(g.columnAt(15.0), 2);
+  EXPECT_EQ(g.rowAt(30.1), 0);
+  EXPECT_EQ(g.rowAt(29.9), 1);
+  // Outside: -1, for the cell when either part is.
+  EXPECT_EQ(g.columnAt(-5.1), -1);
+  EXPECT_EQ(g.columnAt(35.0), -1);
+  EXPECT_EQ(g.rowAt(50.1), -1);
+  EXPECT_EQ(g.rowAt(std::nan("")), -1);
+  EXPECT_EQ(g.cellAt(-5.1, 20.0), -1);
+  EXPECT_EQ(g.cellAt(10.0, 50.1), -1);
+  for (double east = -8.0; east < 40.0; east += 0.7)
+    for (double north = -14.0; north < 56.0; north += 1.1) {
+      const int x = g.columnAt(east), y = g.rowAt(north);
+      EXPECT_EQ(g.cellAt(east, north), x < 0 || y < 0 ? -1 : static_cast<long>(g.index(x, y)));
+    }
 }
 
 TEST(Grid, Stats) {

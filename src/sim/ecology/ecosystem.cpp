@@ -441,13 +441,20 @@ void Ecosystem::establish() {
     double east, north;
   };
   // The cells' centres share their east down each column of cells and their north along
-  // each row.
+  // each row, and so their columns of the terrain's, the light's and the seeds' grids.
   std::vector<double> easts(regenerationX_), norths(regenerationY_);
-  for (int x = 0; x < regenerationX_; ++x) easts[x] = regenerationCentre(x, 0).x;
+  std::vector<int> terrainXs(regenerationX_), lightXs(regenerationX_);
+  for (int x = 0; x < regenerationX_; ++x) {
+    easts[x] = regenerationCentre(x, 0).x;
+    terrainXs[x] = g.columnAt(easts[x]);
+    lightXs[x] = light_.columnXAt(easts[x]);
+  }
   for (int y = 0; y < regenerationY_; ++y) norths[y] = regenerationCentre(0, y).y;
   const SeedMap::Lattice seedCells = seeds_.latticeOf(easts, norths);
   std::vector<std::vector<Newcomer>> rows(regenerationY_);
   tbb::parallel_for(0, regenerationY_, [&](int y) {
+    const int terrainY = g.rowAt(norths[y]);
+    const long lightRow = static_cast<long>(light_.columnYAt(norths[y])) * light_.columnsX();
     // The light and the species' responses to it hold over a light column, which spans
     // several cells of the row: they are worked out once a column.
     long lightColumn = -1;
@@ -460,9 +467,10 @@ void Ecosystem::establish() {
           (!openCell_.empty() && openCell_[index]))
         continue;
       const double east = easts[x], north = norths[y];
-      const long terrainCell = g.cellAt(east, north);
-      if (terrainCell < 0 || terrain_.isOutside(static_cast<std::size_t>(terrainCell))) continue;
-      if (const long column = light_.columnAt(east, north); column != lightColumn) {
+      if (terrainXs[x] < 0 || terrainY < 0) continue;  // off the terrain's grid
+      const std::size_t terrainCell = g.index(terrainXs[x], terrainY);
+      if (terrain_.isOutside(terrainCell)) continue;
+      if (const long column = lightRow + lightXs[x]; column != lightColumn) {
         lightColumn = column;
         ground = light_.groundLightInColumn(column);
         sky = light_.skyLightInColumn(column);

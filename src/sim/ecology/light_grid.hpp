@@ -68,6 +68,10 @@ class LightGrid {
   // The column holding a map position (clamped to the map), numbered row by row from the
   // south-west corner.
   long columnAt(double east_m, double north_m) const;
+  // Its two parts, the column's place west to east and south to north: columnAt is
+  // columnY * columnsX() + columnX.
+  int columnXAt(double east_m) const;
+  int columnYAt(double north_m) const;
   int columnsX() const { return columnsX_; }
   int columnsY() const { return columnsY_; }
 

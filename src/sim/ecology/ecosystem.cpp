@@ -197,9 +197,10 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
       if (height >= kBreastHeight_m) dbh = saplingDiameter(life, height);
       continue;
     }
-    const CrownFoliage foliage = crownFoliage(life, dbh, height, 1.0);
-    const CrownShape crown{0.0f, 0.0f, static_cast<float>(crownRadiusOf(life, dbh, height)),
-                           static_cast<float>(height), static_cast<float>(foliage.leafArea_m2)};
+    const double radius = crownRadiusOf(life, dbh, height);
+    const CrownFoliage foliage = crownFoliage(life, foliageLimit_[species], dbh, radius, 1.0);
+    const CrownShape crown{0.0f, 0.0f, static_cast<float>(radius), static_cast<float>(height),
+                           static_cast<float>(foliage.leafArea_m2)};
     GrowingConditions conditions;
     conditions.aging = agingFactor(life, height, year + 1);
     const TreeYear grown = growTree(life, dbh, height, foliage.foliage_kg,

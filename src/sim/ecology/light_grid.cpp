@@ -197,10 +197,6 @@ double LightGrid::groundLightInColumn(long column) const {
                                                   : (layersEnd(column) - 1)->lightBelow;
 }
 
-double LightGrid::skyLightAt(double east_m, double north_m) const {
-  return skyLightInColumn(columnAt(east_m, north_m));
-}
-
 double LightGrid::beyondCrown_m(double crownRadius_m) {
   return crownRadius_m + kLightColumn_m * std::numbers::sqrt2;
 }

@@ -49,10 +49,9 @@ class LightGrid {
   // Light (a fraction of open level ground's) at a height above the ground: what the crowns
   // with their tops above it leave.
   double lightAt(double east_m, double north_m, double height_m) const;
-  // The same on the ground, below every crown, and above them all (the terrain's light).
+  // The same on the ground, below every crown.
   double groundLightAt(double east_m, double north_m) const;
-  double skyLightAt(double east_m, double north_m) const;
-  // The same in a column (columnAt), for a pass that asks both of one place.
+  // In a column (columnAt): on the ground, and above every crown (the terrain's light).
   double groundLightInColumn(long column) const;
   double skyLightInColumn(long column) const { return topLight_[column]; }
   // The lowest height in [from_m, top_m] where the light beside a crown -- the mean over

@@ -4,6 +4,7 @@
 #include <unistd.h>
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -145,6 +146,27 @@ AtomicFile& AtomicFileSet::add(const std::filesystem::path& target) {
 void AtomicFileSet::commit() {
   for (AtomicFile& file : files_) file.flush();
   for (AtomicFile& file : files_) file.commit();
+}
+
+BackgroundCommits::~BackgroundCommits() {
+  if (last_.valid()) last_.wait();
+}
+
+void BackgroundCommits::commit(AtomicFile file) {
+  // A failure already known stops the caller now, not at the end of its work.
+  if (last_.valid() && last_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+    last_.get();
+  last_ =
+      std::async(std::launch::async, [before = std::move(last_), file = std::move(file)]() mutable {
+        // In order: a file is renamed into place after the one before it. If that one
+        // failed, this one's temporary is removed with `file`.
+        if (before.valid()) before.get();
+        file.commit();
+      });
+}
+
+void BackgroundCommits::wait() {
+  if (last_.valid()) last_.get();
 }
 
 }  // namespace eco

@@ -9,6 +9,7 @@
 
 #include <deque>
 #include <filesystem>
+#include <future>
 #include <span>
 #include <string_view>
 
@@ -56,6 +57,30 @@ class AtomicFileSet {
 
  private:
   std::deque<AtomicFile> files_;  // a deque: references from add() stay valid
+};
+
+// Commits AtomicFiles on another thread, one after the other in the order handed over: what
+// is left of a file once its bytes are written -- waiting for the disk to hold them (fsync)
+// and the rename into place -- overlaps the caller's next work (a run's next years, where a
+// valley run's checkpoints had waited 5 s for the disk). A file fails as its commit()
+// would; the files handed over after a failed one are not renamed into place either, and
+// the error is rethrown by the next commit() that finds it or by wait().
+class BackgroundCommits {
+ public:
+  BackgroundCommits() = default;
+  BackgroundCommits(const BackgroundCommits&) = delete;
+  BackgroundCommits& operator=(const BackgroundCommits&) = delete;
+  // Waits for the files still being committed; an error then is not rethrown (the owner is
+  // unwinding from one of its own, or did not ask).
+  ~BackgroundCommits();
+
+  // Hands over a file whose bytes are all written.
+  void commit(AtomicFile file);
+  // Returns once every file handed over is in place; rethrows the first failure.
+  void wait();
+
+ private:
+  std::future<void> last_;  // the last file's commit, which waits for the one before
 };
 
 // Whether a file name is that of an AtomicFile's temporary (NAME.tmp-PID-N).

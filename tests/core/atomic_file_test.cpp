@@ -14,6 +14,17 @@ namespace eco {
 using test::entriesIn;
 using test::freshDirectory;
 
+namespace {
+
+std::string contentsOf(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
 TEST(AtomicFile, AppearsOnlyOnCommit) {
   auto dir = freshDirectory("atomic");
   {
@@ -26,10 +37,7 @@ TEST(AtomicFile, AppearsOnlyOnCommit) {
     EXPECT_FALSE(isAtomicTemporary("a.txt"));
     file.commit();
   }
-  std::ifstream in(dir / "a.txt");
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_EQ(text.str(), "hello");
+  EXPECT_EQ(contentsOf(dir / "a.txt"), "hello");
   EXPECT_EQ(entriesIn(dir), 1u);  // no temporary left behind
 }
 
@@ -109,6 +117,61 @@ TEST(AtomicFileSet, AllOrNothing) {
   first.write(std::string_view("still valid"));  // references survive later additions
   set.commit();
   EXPECT_EQ(entriesIn(dir), 21u);
+}
+
+namespace {
+
+AtomicFile writtenFile(const std::filesystem::path& target, std::string_view text) {
+  AtomicFile file(target);
+  file.write(text);
+  return file;
+}
+
+}  // namespace
+
+TEST(BackgroundCommits, RenamesTheFilesIntoPlaceInTheirOrder) {
+  auto dir = freshDirectory("background");
+  BackgroundCommits commits;
+  commits.commit(writtenFile(dir / "a.txt", "first"));
+  commits.commit(writtenFile(dir / "b.txt", "other"));
+  commits.commit(writtenFile(dir / "a.txt", "second"));  // renamed after the first
+  commits.wait();
+  EXPECT_EQ(contentsOf(dir / "a.txt"), "second");
+  EXPECT_EQ(contentsOf(dir / "b.txt"), "other");
+  EXPECT_EQ(entriesIn(dir), 2u);  // no temporary left behind
+}
+
+TEST(BackgroundCommits, ItsEndWaitsForTheFiles) {
+  auto dir = freshDirectory("background-end");
+  {
+    BackgroundCommits commits;
+    commits.commit(writtenFile(dir / "c.txt", "kept"));
+  }
+  EXPECT_EQ(contentsOf(dir / "c.txt"), "kept");
+  EXPECT_EQ(entriesIn(dir), 1u);
+}
+
+TEST(BackgroundCommits, AFailureIsRethrownAndStopsTheFilesAfterIt) {
+  auto dir = freshDirectory("background-full");
+  BackgroundCommits commits;
+  {
+    // Below the buffer: the bytes reach the disk in the commit, on the other thread.
+    FileSizeLimit limit(1000);
+    commits.commit(writtenFile(dir / "big.bin", std::string(5000, 'y')));
+    commits.commit(writtenFile(dir / "after.txt", "small"));
+    try {
+      commits.wait();
+      FAIL() << "a commit beyond the file size limit succeeded";
+    } catch (const EnvironmentError& error) {
+      EXPECT_NE(std::string(error.what()).find("big.bin: writing failed"), std::string::npos)
+          << error.what();
+    }
+  }
+  EXPECT_EQ(entriesIn(dir), 0u);  // neither file, nor a temporary
+  // The failure was reported: later files are committed again.
+  commits.commit(writtenFile(dir / "later.txt", "fine"));
+  commits.wait();
+  EXPECT_EQ(contentsOf(dir / "later.txt"), "fine");
 }
 
 }  // namespace eco

@@ -122,10 +122,8 @@ void checkCheckpoint(const Checkpoint& checkpoint, const CheckpointLimits& limit
       throw refuse(fmt::format("statistics row {}: {}", r + 1, *fault));
 }
 
-void writeCheckpoint(const std::filesystem::path& file, std::uint64_t scenarioHash,
-                     std::string_view programVersion, const EcosystemState& state,
-                     const std::vector<StatsRow>& stats) {
-  AtomicFile out(file);
+void writeCheckpoint(AtomicFile& out, std::uint64_t scenarioHash, std::string_view programVersion,
+                     const EcosystemState& state, const std::vector<StatsRow>& stats) {
   ChecksummedOutput body(out);
   BinaryWriter header = sealedHeader(kMagic, kFormatVersion);
   header.put(scenarioHash);
@@ -137,12 +135,13 @@ void writeCheckpoint(const std::filesystem::path& file, std::uint64_t scenarioHa
   state.plants.forEachColumn([&](const auto& column) { body.addVector(column); });
   body.addVector(stats);
   body.finish();
-  out.commit();
 }
 
 void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkpoint) {
-  writeCheckpoint(file, checkpoint.scenarioHash, checkpoint.programVersion, checkpoint.state,
+  AtomicFile out(file);
+  writeCheckpoint(out, checkpoint.scenarioHash, checkpoint.programVersion, checkpoint.state,
                   checkpoint.stats);
+  out.commit();
 }
 
 Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expectedHash) {

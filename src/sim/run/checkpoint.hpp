@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/atomic_file.hpp"
 #include "sim/ecology/ecosystem.hpp"
 #include "sim/grid.hpp"
 #include "sim/run/run_outputs.hpp"
@@ -24,11 +25,11 @@ struct Checkpoint {
 };
 
 void writeCheckpoint(const std::filesystem::path& file, const Checkpoint& checkpoint);
-// The same from the run's own state, written through as it is made: no copy of the plants
-// and no checkpoint-sized buffer.
-void writeCheckpoint(const std::filesystem::path& file, std::uint64_t scenarioHash,
-                     std::string_view programVersion, const EcosystemState& state,
-                     const std::vector<StatsRow>& stats);
+// The same from the run's own state into `out`, which the caller commits (a run, in the
+// background), written through as it is made: no copy of the plants and no checkpoint-sized
+// buffer.
+void writeCheckpoint(AtomicFile& out, std::uint64_t scenarioHash, std::string_view programVersion,
+                     const EcosystemState& state, const std::vector<StatsRow>& stats);
 
 // Throws InputError for a missing, truncated, corrupt or foreign file; `expectedHash` is the
 // fingerprint of the scenario being resumed.

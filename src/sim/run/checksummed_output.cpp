@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "core/error.hpp"
 #include "core/hash.hpp"
@@ -66,8 +67,9 @@ std::uint64_t ChecksummedOutput::finish() {
 }
 
 void ChecksummedOutput::emit(std::string_view bytes) {
-  appendBlockHashes(bytes, hashes_);
-  out_.write(bytes);
+  // Hashed while they are written: the system call's copy into the page cache takes one
+  // core, the hashing the others.
+  tbb::parallel_invoke([&] { appendBlockHashes(bytes, hashes_); }, [&] { out_.write(bytes); });
 }
 
 std::optional<std::string_view> checkedBody(std::string_view bytes) {

@@ -254,6 +254,9 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
   claimed = runRecord(scenario, options, fingerprint, summary, "running");
   writeRunJson(run, *claimed);
 
+  // The snapshots and checkpoints wait for the disk (fsync) and are renamed into place while
+  // the next years grow; the run is complete once they are in place.
+  BackgroundCommits commits;
   const auto start = Clock::now();
   const int firstYear = ecosystem.year() + 1;
   while (ecosystem.year() < summary.targetYears) {
@@ -269,22 +272,28 @@ RunSummary simulateInto(const Scenario& scenario, const std::filesystem::path& f
     stats.insert(stats.end(), rows.begin(), rows.end());
     writeStatsCsv(run.stats(), stats, ecosystem.species());
     const bool last = year == summary.targetYears;
-    if (year % scenario.output.snapshotEveryYears == 0 || last)
-      writeTrees(run.snapshot(year, scenario.output.snapshotFormat), ecosystem, ecosystem.plants(),
-                 scenario.output.snapshotFormat);
+    if (year % scenario.output.snapshotEveryYears == 0 || last) {
+      AtomicFile snapshotFile(run.snapshot(year, scenario.output.snapshotFormat));
+      writeTrees(snapshotFile, ecosystem, ecosystem.plants(), scenario.output.snapshotFormat);
+      commits.commit(std::move(snapshotFile));
+    }
     summary.lastYear = year;
     if (options.progress)
       options.progress(
           {year, summary.targetYears, firstYear, ecosystem.plants().size(), secondsSince(start)});
     const bool stopping = options.stop && options.stop->load() && !last;
-    if (year % scenario.output.checkpointEveryYears == 0 || last || stopping)
-      writeCheckpoint(run.checkpoint(), fingerprint, options.programVersion, ecosystem.state(),
+    if (year % scenario.output.checkpointEveryYears == 0 || last || stopping) {
+      AtomicFile checkpointFile(run.checkpoint());
+      writeCheckpoint(checkpointFile, fingerprint, options.programVersion, ecosystem.state(),
                       stats);
+      commits.commit(std::move(checkpointFile));
+    }
     if (stopping) {
       summary.interrupted = true;
       break;
     }
   }
+  commits.wait();
   summary.simulationSeconds = secondsSince(start);
   recordCounts(summary, ecosystem, fields);
   if (!summary.interrupted)

@@ -132,9 +132,8 @@ void appendCsvRow(std::string& text, const TreeRow& row, std::string_view specie
   text += '\n';
 }
 
-void writeCsv(const std::filesystem::path& file, std::size_t count, const RowAt& rowAt,
+void writeCsv(AtomicFile& out, std::size_t count, const RowAt& rowAt,
               const std::vector<std::string>& speciesNames) {
-  AtomicFile out(file);
   out.write(std::string(kTreesCsvHeader) + "\n");
   constexpr std::size_t kLongestRow = 120;  // bytes: a tree's row is about 107
   writeInBatches(
@@ -144,7 +143,6 @@ void writeCsv(const std::filesystem::path& file, std::size_t count, const RowAt&
         appendCsvRow(text, row, speciesNames[static_cast<std::size_t>(row.species)]);
       },
       [&](std::string_view text) { out.write(text); });
-  out.commit();
 }
 
 std::vector<std::string> speciesNamesOf(const Ecosystem& ecosystem) {
@@ -214,10 +212,9 @@ TreeRow recordAt(std::string_view record) {
   return row;
 }
 
-void writeBinary(const std::filesystem::path& file, std::size_t count, const RowAt& rowAt,
+void writeBinary(AtomicFile& out, std::size_t count, const RowAt& rowAt,
                  const std::vector<std::string>& speciesNames) {
   ECO_ASSERT(speciesNames.size() <= 65535, "species indices of 16 bits");
-  AtomicFile out(file);
   ChecksummedOutput body(out);
   BinaryWriter header = sealedHeader(kBinaryMagic, kBinaryVersion);
   header.put(static_cast<std::uint32_t>(speciesNames.size()));
@@ -229,7 +226,6 @@ void writeBinary(const std::filesystem::path& file, std::size_t count, const Row
       [&](std::size_t i, std::string& bytes) { appendRecord(bytes, rowAt(i)); },
       [&](std::string_view bytes) { body.add(bytes); });
   body.finish();
-  out.commit();
 }
 
 // A row of a trees file with `columns` fields (with or without the site's), its species
@@ -299,12 +295,12 @@ void readTreeChunk(TreeChunk& chunk, std::size_t columns, const std::filesystem:
   }
 }
 
-void writeRows(const std::filesystem::path& file, SnapshotFormat format, std::size_t count,
-               const RowAt& rowAt, const std::vector<std::string>& speciesNames) {
+void writeRows(AtomicFile& out, SnapshotFormat format, std::size_t count, const RowAt& rowAt,
+               const std::vector<std::string>& speciesNames) {
   if (format == SnapshotFormat::Binary)
-    writeBinary(file, count, rowAt, speciesNames);
+    writeBinary(out, count, rowAt, speciesNames);
   else
-    writeCsv(file, count, rowAt, speciesNames);
+    writeCsv(out, count, rowAt, speciesNames);
 }
 
 }  // namespace
@@ -319,16 +315,25 @@ std::optional<SnapshotFormat> snapshotFormatOf(const std::filesystem::path& file
   return std::nullopt;
 }
 
+void writeTrees(AtomicFile& out, const Ecosystem& ecosystem, const Plants& plants,
+                SnapshotFormat format) {
+  writeRows(out, format, plants.size(), plantRows(ecosystem, plants), speciesNamesOf(ecosystem));
+}
+
 void writeTrees(const std::filesystem::path& file, const Ecosystem& ecosystem, const Plants& plants,
                 SnapshotFormat format) {
-  writeRows(file, format, plants.size(), plantRows(ecosystem, plants), speciesNamesOf(ecosystem));
+  AtomicFile out(file);
+  writeTrees(out, ecosystem, plants, format);
+  out.commit();
 }
 
 void writeTrees(const std::filesystem::path& file, const TreeSnapshot& snapshot,
                 SnapshotFormat format) {
+  AtomicFile out(file);
   writeRows(
-      file, format, snapshot.trees.size(), [&](std::size_t i) { return snapshot.trees[i]; },
+      out, format, snapshot.trees.size(), [&](std::size_t i) { return snapshot.trees[i]; },
       snapshot.speciesNames);
+  out.commit();
 }
 
 TreeSnapshot readTreesCsv(const std::filesystem::path& file) {

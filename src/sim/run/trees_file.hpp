@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/atomic_file.hpp"
 #include "sim/ecology/ecosystem.hpp"
 #include "sim/ecology/plant_site.hpp"
 #include "sim/scenario.hpp"
@@ -53,6 +54,9 @@ struct TreeSnapshot {
 // Plants of the ecosystem's map and species: its plants after a step, with their sites
 // under this year's canopy, or the trees a thinning removed.
 void writeTrees(const std::filesystem::path& file, const Ecosystem& ecosystem, const Plants& plants,
+                SnapshotFormat format);
+// The same into `out`, which the caller commits (a run, in the background).
+void writeTrees(AtomicFile& out, const Ecosystem& ecosystem, const Plants& plants,
                 SnapshotFormat format);
 // A snapshot read back, in either format (`export` writes a binary snapshot as CSV).
 void writeTrees(const std::filesystem::path& file, const TreeSnapshot& snapshot,

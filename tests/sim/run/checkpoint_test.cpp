@@ -77,7 +77,9 @@ TEST(Checkpoint, AStateOfManyBlocksIsWrittenThroughWithItsChecksum) {
     big.state.plants.age_years[i] = static_cast<std::int32_t>(i % 300);
   }
   const auto file = test::freshDirectory("checkpoint_big") / "checkpoint.bin";
-  writeCheckpoint(file, big.scenarioHash, big.programVersion, big.state, big.stats);
+  AtomicFile out(file);
+  writeCheckpoint(out, big.scenarioHash, big.programVersion, big.state, big.stats);
+  out.commit();
   const std::string bytes = test::readFile(file);
   ASSERT_GT(bytes.size(), std::size_t{15} << 20);  // 53 bytes a plant: 15 blocks and a part
   // The stored checksum is that of the whole body, as if it had been made in memory.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <utility>
 
@@ -348,15 +349,28 @@ void Ecosystem::produceSeeds() {
     Rng rng(streamKey(settings_.seed, state_.year, s, purpose("mast year")));
     mast[s] = rng.uniform() * species_[s].ecology.life.mastIntervalYears < 1.0;
   }
-  // In plant order: the source sums do not depend on the thread count.
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const LifeHistory& life = species_[p.species[i]].ecology.life;
-    if (p.height_m[i] < kBreastHeight_m || p.age_years[i] < life.maturityAge_years) continue;
-    const double suitability = species_[p.species[i]].suitability[cellOf(p, i)];
-    const double relative = suitability > 0.0 ? p.vigor[i] / suitability : 0.0;
-    const double seeds = seedProduction(life, p.crownRadius_m[i], mast[p.species[i]], relative);
-    if (seeds > 0.0) seeds_.addSeeds(p.species[i], p.east_m[i], p.north_m[i], seeds);
-  }
+  // The trees' seeds are worked out side by side, a block of plants at a time, and summed
+  // into the source cells in plant order: the sums do not depend on the thread count.
+  struct Fruiting {
+    std::size_t plant;
+    double seeds;
+  };
+  constexpr std::size_t kBlock = 65536;
+  std::vector<std::vector<Fruiting>> fruiting((p.size() + kBlock - 1) / kBlock);
+  tbb::parallel_for(std::size_t{0}, fruiting.size(), [&](std::size_t block) {
+    for (std::size_t i = block * kBlock; i < std::min(p.size(), (block + 1) * kBlock); ++i) {
+      const LifeHistory& life = species_[p.species[i]].ecology.life;
+      if (p.height_m[i] < kBreastHeight_m || p.age_years[i] < life.maturityAge_years) continue;
+      const double suitability = species_[p.species[i]].suitability[cellOf(p, i)];
+      const double relative = suitability > 0.0 ? p.vigor[i] / suitability : 0.0;
+      const double seeds = seedProduction(life, p.crownRadius_m[i], mast[p.species[i]], relative);
+      if (seeds > 0.0) fruiting[block].push_back({i, seeds});
+    }
+  });
+  for (const std::vector<Fruiting>& block : fruiting)
+    for (const Fruiting& tree : block)
+      seeds_.addSeeds(p.species[tree.plant], p.east_m[tree.plant], p.north_m[tree.plant],
+                      tree.seeds);
   // The forest around the map: a closed canopy of full-grown trees in the light, each
   // species fruiting on its share of the ground.
   for (std::size_t s = 0; s < species_.size(); ++s) {
@@ -426,16 +440,22 @@ void Ecosystem::establish() {
   const Grid& g = terrain_.grid;
   std::vector<YoungPlants>& young = youngPlants_;
   young.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, YoungPlants{});
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.height_m[i] >= kRegenerationHeight_m) continue;
+  // Side by side: what a cell's tally decides -- the species it holds, whether it is full or
+  // has a sapling past breast height -- does not depend on the order of its plants, so each
+  // plant takes the cell's next place atomically.
+  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+    if (p.height_m[i] >= kRegenerationHeight_m) return;
     YoungPlants& cell = young[regenerationCellOf(p.east_m[i], p.north_m[i])];
-    if (p.height_m[i] >= kBreastHeight_m) cell.closed = true;
+    std::atomic_ref<bool> closed(cell.closed);
+    if (p.height_m[i] >= kBreastHeight_m) closed.store(true, std::memory_order_relaxed);
     // Planted stock may stand closer than a cell: a full cell is closed however many it holds.
-    if (cell.count < kYoungPlantsPerCell)
-      cell.species[cell.count++] = p.species[i];
+    const int place =
+        std::atomic_ref<std::uint8_t>(cell.count).fetch_add(1, std::memory_order_relaxed);
+    if (place < kYoungPlantsPerCell)
+      cell.species[place] = p.species[i];
     else
-      cell.closed = true;
-  }
+      closed.store(true, std::memory_order_relaxed);
+  });
   const double cellArea = kRegenerationCell_m * kRegenerationCell_m;
   struct Newcomer {
     int species;

@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 #include <tbb/parallel_for.h>
@@ -34,6 +35,22 @@ Field terrainLightOf(const ConditionFields& fields) {
     light[c] =
         std::isfinite(fields.sunniness[c]) ? static_cast<float>(fields.terrainLight(c)) : 1.0f;
   return light;
+}
+
+// Work whose results are combined in plant order (sums, numbering) is done side by side in
+// blocks of plants, each block's part in plant order, and the blocks' parts taken in order.
+constexpr std::size_t kPlantBlock = 65536;
+
+std::size_t plantBlocks(std::size_t plants) {
+  return (plants + kPlantBlock - 1) / kPlantBlock;
+}
+
+// Calls f(block, first, end) for each block of `plants`, side by side.
+template <typename F>
+void forEachPlantBlock(std::size_t plants, F&& f) {
+  tbb::parallel_for(std::size_t{0}, plantBlocks(plants), [&](std::size_t block) {
+    f(block, block * kPlantBlock, std::min(plants, (block + 1) * kPlantBlock));
+  });
 }
 
 std::vector<const LifeHistory*> livesOf(const std::vector<EcosystemSpecies>& species) {
@@ -258,9 +275,20 @@ bool Ecosystem::addSeedSource(const std::function<bool(glm::dvec2)>& covered, do
 void Ecosystem::computeLight() {
   const Plants& p = state_.plants;
   crownOfPlant_.resize(p.size());
-  std::uint32_t crowns = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    crownOfPlant_[i] = p.height_m[i] >= kBreastHeight_m ? crowns++ : kNoCrown;
+  // The crowns are numbered in plant order: each block's count, then its numbers.
+  std::vector<std::uint32_t> firstCrown(plantBlocks(p.size()) + 1, 0);
+  forEachPlantBlock(p.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
+    firstCrown[block + 1] = static_cast<std::uint32_t>(
+        std::count_if(p.height_m.begin() + first, p.height_m.begin() + end,
+                      [](float height) { return height >= kBreastHeight_m; }));
+  });
+  std::partial_sum(firstCrown.begin(), firstCrown.end(), firstCrown.begin());
+  forEachPlantBlock(p.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
+    std::uint32_t crown = firstCrown[block];
+    for (std::size_t i = first; i < end; ++i)
+      crownOfPlant_[i] = p.height_m[i] >= kBreastHeight_m ? crown++ : kNoCrown;
+  });
+  const std::uint32_t crowns = firstCrown.back();
   crowns_.resize(crowns);
   crownFoliage_kg_.resize(crowns);
   // Each crown spreads its foliage as last year's light at its top built the leaves.
@@ -349,16 +377,15 @@ void Ecosystem::produceSeeds() {
     Rng rng(streamKey(settings_.seed, state_.year, s, purpose("mast year")));
     mast[s] = rng.uniform() * species_[s].ecology.life.mastIntervalYears < 1.0;
   }
-  // The trees' seeds are worked out side by side, a block of plants at a time, and summed
-  // into the source cells in plant order: the sums do not depend on the thread count.
+  // The trees' seeds are worked out side by side and summed into the source cells in plant
+  // order: the sums do not depend on the thread count.
   struct Fruiting {
     std::size_t plant;
     double seeds;
   };
-  constexpr std::size_t kBlock = 65536;
-  std::vector<std::vector<Fruiting>> fruiting((p.size() + kBlock - 1) / kBlock);
-  tbb::parallel_for(std::size_t{0}, fruiting.size(), [&](std::size_t block) {
-    for (std::size_t i = block * kBlock; i < std::min(p.size(), (block + 1) * kBlock); ++i) {
+  std::vector<std::vector<Fruiting>> fruiting(plantBlocks(p.size()));
+  forEachPlantBlock(p.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
+    for (std::size_t i = first; i < end; ++i) {
       const LifeHistory& life = species_[p.species[i]].ecology.life;
       if (p.height_m[i] < kBreastHeight_m || p.age_years[i] < life.maturityAge_years) continue;
       const double suitability = species_[p.species[i]].suitability[cellOf(p, i)];

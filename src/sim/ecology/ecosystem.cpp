@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <utility>
@@ -467,22 +466,16 @@ void Ecosystem::establish() {
   const Grid& g = terrain_.grid;
   std::vector<YoungPlants>& young = youngPlants_;
   young.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, YoungPlants{});
-  // Side by side: what a cell's tally decides -- the species it holds, whether it is full or
-  // has a sapling past breast height -- does not depend on the order of its plants, so each
-  // plant takes the cell's next place atomically.
-  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    if (p.height_m[i] >= kRegenerationHeight_m) return;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.height_m[i] >= kRegenerationHeight_m) continue;
     YoungPlants& cell = young[regenerationCellOf(p.east_m[i], p.north_m[i])];
-    std::atomic_ref<bool> closed(cell.closed);
-    if (p.height_m[i] >= kBreastHeight_m) closed.store(true, std::memory_order_relaxed);
+    if (p.height_m[i] >= kBreastHeight_m) cell.closed = true;
     // Planted stock may stand closer than a cell: a full cell is closed however many it holds.
-    const int place =
-        std::atomic_ref<std::uint8_t>(cell.count).fetch_add(1, std::memory_order_relaxed);
-    if (place < kYoungPlantsPerCell)
-      cell.species[place] = p.species[i];
+    if (cell.count < kYoungPlantsPerCell)
+      cell.species[cell.count++] = p.species[i];
     else
-      closed.store(true, std::memory_order_relaxed);
-  });
+      cell.closed = true;
+  }
   const double cellArea = kRegenerationCell_m * kRegenerationCell_m;
   struct Newcomer {
     int species;

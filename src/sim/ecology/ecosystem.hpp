@@ -187,10 +187,8 @@ class Ecosystem {
   // What a regeneration cell holds in its sapling layer (establish); kept from year to year,
   // as a landscape has tens of millions of cells.
   struct YoungPlants {
-    // How many it holds; beyond kYoungPlantsPerCell (and past 255, wrapped) only in a
-    // closed cell, whose species are not asked.
     std::uint8_t count = 0;
-    bool closed = false;  // one of them has passed breast height, or the cell is full
+    bool closed = false;  // one of them has passed breast height
     std::array<std::uint8_t, kYoungPlantsPerCell> species{};
     bool holds(std::size_t s) const {
       return std::find(species.begin(), species.begin() + count, s) != species.begin() + count;

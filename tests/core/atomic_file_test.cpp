@@ -2,8 +2,6 @@
 
 #include <sys/resource.h>
 #include <csignal>
-#include <fstream>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -13,17 +11,7 @@
 namespace eco {
 using test::entriesIn;
 using test::freshDirectory;
-
-namespace {
-
-std::string contentsOf(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-}  // namespace
+using test::readFile;
 
 TEST(AtomicFile, AppearsOnlyOnCommit) {
   auto dir = freshDirectory("atomic");
@@ -37,7 +25,7 @@ TEST(AtomicFile, AppearsOnlyOnCommit) {
     EXPECT_FALSE(isAtomicTemporary("a.txt"));
     file.commit();
   }
-  EXPECT_EQ(contentsOf(dir / "a.txt"), "hello");
+  EXPECT_EQ(readFile(dir / "a.txt"), "hello");
   EXPECT_EQ(entriesIn(dir), 1u);  // no temporary left behind
 }
 
@@ -136,8 +124,8 @@ TEST(BackgroundCommits, RenamesTheFilesIntoPlaceInTheirOrder) {
   commits.commit(writtenFile(dir / "b.txt", "other"));
   commits.commit(writtenFile(dir / "a.txt", "second"));  // renamed after the first
   commits.wait();
-  EXPECT_EQ(contentsOf(dir / "a.txt"), "second");
-  EXPECT_EQ(contentsOf(dir / "b.txt"), "other");
+  EXPECT_EQ(readFile(dir / "a.txt"), "second");
+  EXPECT_EQ(readFile(dir / "b.txt"), "other");
   EXPECT_EQ(entriesIn(dir), 2u);  // no temporary left behind
 }
 
@@ -147,7 +135,7 @@ TEST(BackgroundCommits, ItsEndWaitsForTheFiles) {
     BackgroundCommits commits;
     commits.commit(writtenFile(dir / "c.txt", "kept"));
   }
-  EXPECT_EQ(contentsOf(dir / "c.txt"), "kept");
+  EXPECT_EQ(readFile(dir / "c.txt"), "kept");
   EXPECT_EQ(entriesIn(dir), 1u);
 }
 
@@ -171,7 +159,7 @@ TEST(BackgroundCommits, AFailureIsRethrownAndStopsTheFilesAfterIt) {
   // The failure was reported: later files are committed again.
   commits.commit(writtenFile(dir / "later.txt", "fine"));
   commits.wait();
-  EXPECT_EQ(contentsOf(dir / "later.txt"), "fine");
+  EXPECT_EQ(readFile(dir / "later.txt"), "fine");
 }
 
 }  // namespace eco

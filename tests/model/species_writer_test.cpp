@@ -1,8 +1,6 @@
 #include "model/species_writer.hpp"
 
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -13,13 +11,6 @@
 
 namespace eco {
 namespace {
-
-std::string readText(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 template <typename T>
 bool sameBytes(const Buffer<T>& a, const Buffer<T>& b) {
@@ -58,7 +49,7 @@ TEST_P(SpeciesWriterRoundTrip, SavedSpeciesBuildsTheSameTreeByteForByte) {
   Species reloaded = loaded;
   reloaded.file = original.file;
   saveSpecies(reloaded, again);
-  EXPECT_EQ(readText(again), readText(saved));
+  EXPECT_EQ(test::readFile(again), test::readFile(saved));
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedStrandSpecies, SpeciesWriterRoundTrip,
@@ -88,7 +79,7 @@ TEST(SpeciesWriter, KeepsTheEcologyTablesWithTheirComments) {
   EXPECT_EQ(ecology.find("[strand"), std::string::npos);
   EXPECT_EQ(ecology.find("[appearance]"), std::string::npos);
   // Every line of the original from the ecology's comment on is kept, in order.
-  const std::string original = readText(beech.file);
+  const std::string original = test::readFile(beech.file);
   EXPECT_EQ(original.substr(original.find("# Ecology for the ecosystem")), ecology);
 }
 

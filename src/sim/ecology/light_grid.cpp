@@ -55,20 +55,6 @@ LightGrid::LightGrid(const Grid& terrain, const Field& topLight)
   columnStart_.assign(topLight_.size() + 1, 0);
 }
 
-long LightGrid::columnAt(double east_m, double north_m) const {
-  return static_cast<long>(columnYAt(north_m)) * columnsX_ + columnXAt(east_m);
-}
-
-int LightGrid::columnXAt(double east_m) const {
-  return std::clamp(static_cast<int>(std::floor((east_m - originEast_m_) / kLightColumn_m)), 0,
-                    columnsX_ - 1);
-}
-
-int LightGrid::columnYAt(double north_m) const {
-  return std::clamp(static_cast<int>(std::floor((north_m - originNorth_m_) / kLightColumn_m)), 0,
-                    columnsY_ - 1);
-}
-
 void LightGrid::footprint(const CrownShape& crown, std::vector<Footprint>& out) const {
   out.clear();
   const double r = crown.radius_m;

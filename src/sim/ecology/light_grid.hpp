@@ -14,6 +14,8 @@
 // size.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -65,12 +67,21 @@ class LightGrid {
   static double beyondCrown_m(double crownRadius_m);
 
   // The column holding a map position (clamped to the map), numbered row by row from the
-  // south-west corner.
-  long columnAt(double east_m, double north_m) const;
+  // south-west corner. Inline: the plants are kept in order of it, so it is worked out for
+  // every new plant's search among them (Ecosystem::settleNewcomers).
+  long columnAt(double east_m, double north_m) const {
+    return static_cast<long>(columnYAt(north_m)) * columnsX_ + columnXAt(east_m);
+  }
   // Its two parts, the column's place west to east and south to north: columnAt is
   // columnY * columnsX() + columnX.
-  int columnXAt(double east_m) const;
-  int columnYAt(double north_m) const;
+  int columnXAt(double east_m) const {
+    return std::clamp(static_cast<int>(std::floor((east_m - originEast_m_) / kLightColumn_m)), 0,
+                      columnsX_ - 1);
+  }
+  int columnYAt(double north_m) const {
+    return std::clamp(static_cast<int>(std::floor((north_m - originNorth_m_) / kLightColumn_m)), 0,
+                      columnsY_ - 1);
+  }
   int columnsX() const { return columnsX_; }
   int columnsY() const { return columnsY_; }
 

@@ -18,6 +18,14 @@ std::string clock(double seconds) {
                    : fmt::format("{}:{:02d}", s / 60, s % 60);
 }
 
+// Years a second, or seconds a year where a year takes longer than a second (a landscape's
+// years take half a minute: "0.0 years/s" would say nothing).
+std::string pace(double yearsPerSecond) {
+  if (yearsPerSecond >= 1.0 || yearsPerSecond <= 0.0)
+    return fmt::format("{:.1f} years/s", yearsPerSecond);
+  return fmt::format("{:.1f} s/year", 1.0 / yearsPerSecond);
+}
+
 }  // namespace
 
 void reportToTheUser(RunOptions& options) {
@@ -35,17 +43,17 @@ void showRunProgress(const RunProgress& p, bool terminal) {
   if (terminal) {
     constexpr int kWidth = 24;
     const int filled = kWidth * p.year / p.lastYear;
-    std::fprintf(stderr, "\ryear %d/%d [%s%s] %zu plants  %.1f years/s  ETA %s   ", p.year,
-                 p.lastYear, std::string(filled, '#').c_str(),
-                 std::string(kWidth - filled, '.').c_str(), p.plants, rate, clock(eta).c_str());
+    std::fprintf(stderr, "\ryear %d/%d [%s%s] %zu plants  %s  ETA %s   ", p.year, p.lastYear,
+                 std::string(filled, '#').c_str(), std::string(kWidth - filled, '.').c_str(),
+                 p.plants, pace(rate).c_str(), clock(eta).c_str());
     if (p.year == p.lastYear) std::fputc('\n', stderr);
     std::fflush(stderr);
     return;
   }
   const int every = std::max(1, (p.lastYear - p.firstYear + 1) / 10);
   if (done % every == 0 || p.year == p.lastYear)
-    std::fprintf(stderr, "year %d/%d: %zu plants, %.1f years/s, ETA %s\n", p.year, p.lastYear,
-                 p.plants, rate, clock(eta).c_str());
+    std::fprintf(stderr, "year %d/%d: %zu plants, %s, ETA %s\n", p.year, p.lastYear, p.plants,
+                 pace(rate).c_str(), clock(eta).c_str());
 }
 
 }  // namespace eco

@@ -17,6 +17,18 @@ TEST(RunProgress, PlainLinesAboutEveryTenthOfTheRun) {
   EXPECT_NE(lines.find("year 40/40: 4000 plants, 2.0 years/s, ETA 0:00\n"), std::string::npos);
 }
 
+TEST(RunProgress, SlowYearsShowSecondsAYear) {
+  // A landscape's years take half a minute each: 5 years in 130 s is 26 s a year, and the
+  // 45 years left take 1,170 s.
+  testing::internal::CaptureStderr();
+  showRunProgress({55, 100, 51, 1000, 130.0}, false);
+  showRunProgress({55, 100, 51, 1000, 130.0}, true);
+  const std::string text = testing::internal::GetCapturedStderr();
+  EXPECT_NE(text.find("year 55/100: 1000 plants, 26.0 s/year, ETA 19:30\n"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("1000 plants  26.0 s/year  ETA 19:30"), std::string::npos) << text;
+}
+
 TEST(RunProgress, ABarRedrawnInPlaceOnATerminal) {
   testing::internal::CaptureStderr();
   showRunProgress({20, 40, 1, 123, 10.0}, true);

@@ -147,8 +147,9 @@ class Ecosystem {
   // each from the west), and of birth within a column. Neighbours then lie near each other
   // in memory, and so do the light columns, crowns and seed cells each year's passes read
   // for them: in birth order each plant's came from anywhere on the map, and the valley's
-  // run took an eighth longer, waiting for memory (README, "Ecosystem simulation"). The
-  // plants appended since the last call, established or planted, are moved into that order.
+  // run took an eighth longer, waiting for memory (docs/performance.md, "Plants in order of
+  // place"). The plants appended since the last call, established or planted, are moved
+  // into that order.
   void settleNewcomers();
   // Appends a seedling of the species at a place; returns its row.
   std::size_t addPlant(int species, double east_m, double north_m);

@@ -110,8 +110,8 @@ class LightGrid {
   Buffer<Layer> layers_;
   // compute()'s working arrays, kept from one year to the next: at a landscape's scale they
   // hold gigabytes, which, allocated afresh each year, the kernel zeroed page by page and
-  // the vectors zeroed again (README, "Working arrays kept from year to year"). Each is
-  // written before it is read. Per crown: where its footprint starts (32 bits: a landscape
+  // the vectors zeroed again (docs/performance.md, "Working arrays kept from year to year").
+  // Each is written before it is read. Per crown: where its footprint starts (32 bits: a landscape
   // has tens of millions of crowns). Per footprint entry, in crown order: the column and
   // share, the crown, and the light it takes; and the entries in column order.
   Buffer<std::uint32_t> crownStart_;

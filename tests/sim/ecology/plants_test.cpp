@@ -107,7 +107,7 @@ TEST(Plants, SettleTailMergesTheNewRowsStablyByKey) {
 
 TEST(Plants, SettleTailAgreesWithAStableSortOfEveryRow) {
   // A year's worth at a small scale: 20,000 settled rows and 9,000 new ones (the new rows'
-  // places are searched for in blocks of 4,096, side by side), keys from a narrow range so
+  // places are searched for in blocks of up to 4,096, side by side), keys from a narrow range so
   // that many are equal, and new keys below and above every settled one.
   Rng rng(streamKey(17, purpose("test")));
   constexpr std::size_t kSettled = 20000, kNew = 9000;

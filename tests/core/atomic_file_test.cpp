@@ -145,9 +145,10 @@ TEST(BackgroundCommits, AFailureIsRethrownAndStopsTheFilesAfterIt) {
   {
     // Below the buffer: the bytes reach the disk in the commit, on the other thread.
     FileSizeLimit limit(1000);
-    commits.commit(writtenFile(dir / "big.bin", std::string(5000, 'y')));
-    commits.commit(writtenFile(dir / "after.txt", "small"));
     try {
+      commits.commit(writtenFile(dir / "big.bin", std::string(5000, 'y')));
+      // Where the first has failed by now, this commit rethrows its failure, else wait() does.
+      commits.commit(writtenFile(dir / "after.txt", "small"));
       commits.wait();
       FAIL() << "a commit beyond the file size limit succeeded";
     } catch (const EnvironmentError& error) {

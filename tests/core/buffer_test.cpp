@@ -29,5 +29,19 @@ TEST(Buffer, AWorkingBufferThatShrinksAndGrowsBackKeepsItsStorage) {
   EXPECT_EQ(buffer.size(), 800u);
 }
 
+TEST(Buffer, AWorkingArrayGrowingPastItsRoomTakesNewRoomWithAQuarterMore) {
+  Buffer<double> buffer(800);
+  resizeForOverwrite(buffer, 600);  // within its room: the same storage
+  EXPECT_EQ(buffer.size(), 600u);
+  EXPECT_EQ(buffer.capacity(), 800u);
+  resizeForOverwrite(buffer, 1000);
+  EXPECT_EQ(buffer.size(), 1000u);
+  EXPECT_EQ(buffer.capacity(), 1250u);
+  // A plain vector's new elements are value-initialised, as its resize() makes them.
+  std::vector<int> values{1, 2, 3};
+  resizeForOverwrite(values, 8);
+  EXPECT_EQ(values, std::vector<int>(8, 0));
+}
+
 }  // namespace
 }  // namespace eco

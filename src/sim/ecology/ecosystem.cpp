@@ -271,46 +271,41 @@ bool Ecosystem::addSeedSource(const std::function<bool(glm::dvec2)>& covered, do
   return true;
 }
 
+CrownColumns Ecosystem::crownsOf(const Plants& p) const {
+  return {p.east_m, p.north_m, p.crownRadius_m, p.height_m, leafArea_m2_};
+}
+
 void Ecosystem::computeLight() {
   const Plants& p = state_.plants;
-  crownOfPlant_.resize(p.size());
-  // The crowns are numbered in plant order: each block's count, then its numbers.
-  std::vector<std::uint32_t> firstCrown(plantBlocks(p.size()) + 1, 0);
-  forEachPlantBlock(p.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
-    firstCrown[block + 1] = static_cast<std::uint32_t>(
-        std::count_if(p.height_m.begin() + first, p.height_m.begin() + end,
-                      [](float height) { return height >= kBreastHeight_m; }));
-  });
-  std::partial_sum(firstCrown.begin(), firstCrown.end(), firstCrown.begin());
-  forEachPlantBlock(p.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
-    std::uint32_t crown = firstCrown[block];
-    for (std::size_t i = first; i < end; ++i)
-      crownOfPlant_[i] = p.height_m[i] >= kBreastHeight_m ? crown++ : kNoCrown;
-  });
-  const std::uint32_t crowns = firstCrown.back();
-  crowns_.resize(crowns);
-  crownFoliage_kg_.resize(crowns);
-  // Each crown spreads its foliage as last year's light at its top built the leaves.
+  resizeForOverwrite(leafArea_m2_, p.size());
+  resizeForOverwrite(crownFoliage_kg_, p.size());
+  // Each tree's crown spreads its foliage as last year's light at its top built the leaves.
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    if (crownOfPlant_[i] == kNoCrown) return;
+    if (p.height_m[i] < kBreastHeight_m) {  // no crown in the light model
+      leafArea_m2_[i] = 0.0f;
+      crownFoliage_kg_[i] = 0.0f;
+      return;
+    }
     const LifeHistory& life = species_[p.species[i]].ecology.life;
     // The leaves spread over the crown as the light model draws it, so its leaf area index
     // there is the one they were spread to.
-    const float radius = std::max(p.crownRadius_m[i], 0.05f);
+    const float radius = std::max(p.crownRadius_m[i], kMinCrownRadius_m);
     const CrownFoliage foliage =
         crownFoliage(life, foliageLimit_[p.species[i]], p.dbh_m[i], radius, p.light[i]);
-    crowns_[crownOfPlant_[i]] = {p.east_m[i], p.north_m[i], radius, p.height_m[i],
-                                 static_cast<float>(foliage.leafArea_m2)};
-    crownFoliage_kg_[crownOfPlant_[i]] = static_cast<float>(foliage.foliage_kg);
+    leafArea_m2_[i] = static_cast<float>(foliage.leafArea_m2);
+    crownFoliage_kg_[i] = static_cast<float>(foliage.foliage_kg);
   });
-  light_.compute(crowns_);
+  light_.compute(crownsOf(p));
   lightComputed_ = true;
 }
 
 void Ecosystem::grow() {
   Plants& p = state_.plants;
-  carbonDeficit_.assign(crowns_.size(), 0.0f);
-  recruited_.resize(p.size());  // the young first, then those of them grown out of the layer
+  const CrownColumns crowns = crownsOf(p);  // as the light grid drew them
+  resizeForOverwrite(carbonDeficit_, p.size());
+  std::fill(carbonDeficit_.begin(), carbonDeficit_.end(), 0.0f);
+  // The young first, then those of them grown out of the layer.
+  resizeForOverwrite(recruited_, p.size());
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     recruited_[i] = p.height_m[i] < kRegenerationHeight_m;
     const EcosystemSpecies& s = species_[p.species[i]];
@@ -338,18 +333,17 @@ void Ecosystem::grow() {
       p.light[i] = static_cast<float>(light);
       return;
     }
-    const CrownShape& crown = crowns_[crownOfPlant_[i]];
-    const double absorbed = light_.absorbed(crownOfPlant_[i]);
+    const CrownShape crown = crowns[i];  // read before this year's growth changes the row
+    const double absorbed = light_.absorbed(i);
     const double open = LightGrid::absorbedInTheOpen(crown);
     const double relative = open > 0.0 ? std::min(1.0, absorbed / open) : 0.0;
     const double topLight = light_.lightAt(p.east_m[i], p.north_m[i], p.height_m[i] + 0.5);
     // Height growth answers the light the whole crown gets, relative to the open.
     const double response = std::clamp(s.ecology.lightResponse(relative), 0.0, 1.0);
-    const TreeYear year =
-        growTree(life, p.dbh_m[i], p.height_m[i], crownFoliage_kg_[crownOfPlant_[i]], absorbed,
-                 {suitability, response, p.growthFactor[i],
-                  agingFactor(life, p.height_m[i], p.age_years[i])});
-    carbonDeficit_[crownOfPlant_[i]] = static_cast<float>(year.carbonDeficit());
+    const TreeYear year = growTree(life, p.dbh_m[i], p.height_m[i], crownFoliage_kg_[i], absorbed,
+                                   {suitability, response, p.growthFactor[i],
+                                    agingFactor(life, p.height_m[i], p.age_years[i])});
+    carbonDeficit_[i] = static_cast<float>(year.carbonDeficit());
     // The branches that this year's light beside the crown left below the compensation point
     // die.
     const double pruned = light_.heightWithSideLight(
@@ -426,10 +420,9 @@ void Ecosystem::applyMortality() {
         p.age_years[i] >= life.maxAge_years)
       chance = 1.0;
     else if (p.dbh_m[i] > 0.0f) {  // treeMortality, with the intrinsic part computed once
-      // A sapling that passed breast height this year has no crown in the light grid yet.
-      const std::uint32_t crown = crownOfPlant_[i];
-      const double deficit = crown == kNoCrown ? 0.0 : carbonDeficit_[crown];
-      chance = std::min(1.0, intrinsic[p.species[i]] + starvationMortality(life, deficit));
+      // A sapling that passed breast height this year had no crown: its deficit is 0.
+      chance =
+          std::min(1.0, intrinsic[p.species[i]] + starvationMortality(life, carbonDeficit_[i]));
     } else
       chance = p.stressYears[i] >= life.saplingStressYears ? 1.0 : intrinsic[p.species[i]];
     if (rng.uniform() < chance) p.alive[i] = 0;

@@ -135,6 +135,9 @@ class Ecosystem {
   void restore(EcosystemState state);
 
  private:
+  // The plants' crowns as the light grid reads them: their own columns and this year's leaf
+  // areas, one row a plant.
+  CrownColumns crownsOf(const Plants& p) const;
   void computeLight();
   void grow();
   void applyMortality();
@@ -175,12 +178,11 @@ class Ecosystem {
   SeedMap seeds_;
   int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;
-  std::uint64_t settledBelowId_ = 0;    // the plants below this id are in order of place
-  std::vector<CrownShape> crowns_;      // this year's, of the trees
-  std::vector<float> crownFoliage_kg_;  // per crown: the foliage its leaf area holds
-  Buffer<std::uint32_t> crownOfPlant_;  // per plant: its crown, or kNoCrown
-  static constexpr std::uint32_t kNoCrown = ~std::uint32_t{0};
-  std::vector<float> carbonDeficit_;     // per crown, this year's
+  std::uint64_t settledBelowId_ = 0;  // the plants below this id are in order of place
+  // Per plant, this year's: its crown's leaf area (0 below breast height: no crown) and the
+  // foliage it holds, and what its production left of its upkeep (carbonDeficit()).
+  Buffer<float> leafArea_m2_, crownFoliage_kg_;
+  std::vector<float> carbonDeficit_;
   std::vector<std::uint8_t> recruited_;  // per plant: grew out of the sapling layer this year
   std::vector<int> born_, died_, plantedDied_;
   std::function<bool(glm::dvec2)> isOpen_;

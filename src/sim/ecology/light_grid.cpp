@@ -57,6 +57,7 @@ LightGrid::LightGrid(const Grid& terrain, const Field& topLight)
 
 void LightGrid::footprint(const CrownShape& crown, std::vector<Footprint>& out) const {
   out.clear();
+  if (!(crown.leafArea_m2 > 0.0f)) return;
   const double r = crown.radius_m;
   if (r <= 0.5 * kLightColumn_m) {
     out.push_back({static_cast<std::int32_t>(columnAt(crown.east_m, crown.north_m)), 1.0f});
@@ -92,9 +93,21 @@ void LightGrid::footprint(const CrownShape& crown, std::vector<Footprint>& out) 
 }
 
 void LightGrid::compute(const std::vector<CrownShape>& crowns) {
+  std::vector<float> east, north, radius, top, leafArea;
+  for (const CrownShape& crown : crowns) {
+    east.push_back(crown.east_m);
+    north.push_back(crown.north_m);
+    radius.push_back(crown.radius_m);
+    top.push_back(crown.top_m);
+    leafArea.push_back(crown.leafArea_m2);
+  }
+  compute(CrownColumns{east, north, radius, top, leafArea});
+}
+
+void LightGrid::compute(const CrownColumns& crowns) {
   const std::size_t n = crowns.size();
   // Each crown's footprint, in crown order (CSR): count, then fill.
-  crownStart_.resize(n + 1);
+  resizeForOverwrite(crownStart_, n + 1);
   crownStart_[0] = 0;
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     thread_local std::vector<Footprint> columns;
@@ -108,12 +121,13 @@ void LightGrid::compute(const std::vector<CrownShape>& crowns) {
                "more crown footprint entries than 32 bits index");
     crownStart_[i + 1] = static_cast<std::uint32_t>(entryCount);
   }
-  entries_.resize(entryCount);
-  entryCrown_.resize(entryCount);
+  resizeForOverwrite(entries_, entryCount);
+  resizeForOverwrite(entryCrown_, entryCount);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     thread_local std::vector<Footprint> columns;
     footprint(crowns[i], columns);
-    std::copy(columns.begin(), columns.end(), entries_.begin() + crownStart_[i]);
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      entries_[crownStart_[i] + k].footprint = columns[k];
     std::fill(entryCrown_.begin() + crownStart_[i], entryCrown_.begin() + crownStart_[i + 1],
               static_cast<std::uint32_t>(i));
   });
@@ -121,38 +135,38 @@ void LightGrid::compute(const std::vector<CrownShape>& crowns) {
   // Each column's entries, tallest crown first (ties: the earlier crown).
   const std::size_t columns = topLight_.size();
   columnStart_.assign(columns + 1, 0);
-  for (const Footprint& f : entries_) ++columnStart_[f.column + 1];
+  for (const Entry& entry : entries_) ++columnStart_[entry.footprint.column + 1];
   for (std::size_t c = 0; c < columns; ++c) columnStart_[c + 1] += columnStart_[c];
-  columnOrder_.resize(entryCount);
+  resizeForOverwrite(columnOrder_, entryCount);
   {
     std::vector<std::size_t> next(columnStart_.begin(), columnStart_.end() - 1);
     for (std::size_t e = 0; e < entryCount; ++e)
-      columnOrder_[next[entries_[e].column]++] = static_cast<std::uint32_t>(e);
+      columnOrder_[next[entries_[e].footprint.column]++] = static_cast<std::uint32_t>(e);
   }
-  entryAbsorbed_.resize(entryCount);
-  layers_.resize(entryCount);
+  resizeForOverwrite(layers_, entryCount);
   tbb::parallel_for(std::size_t{0}, columns, [&](std::size_t c) {
     const auto first = columnOrder_.begin() + static_cast<std::ptrdiff_t>(columnStart_[c]);
     const auto last = columnOrder_.begin() + static_cast<std::ptrdiff_t>(columnStart_[c + 1]);
     std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
-      const float ta = crowns[entryCrown_[a]].top_m, tb = crowns[entryCrown_[b]].top_m;
+      const float ta = crowns.top_m[entryCrown_[a]], tb = crowns.top_m[entryCrown_[b]];
       return ta != tb ? ta > tb : entryCrown_[a] < entryCrown_[b];
     });
     double light = topLight_[c];
     for (auto it = first; it != last; ++it) {
-      const CrownShape& crown = crowns[entryCrown_[*it]];
-      const double area = std::min(kColumnArea_m2, crownArea(crown) * entries_[*it].weight);
+      const CrownShape crown = crowns[entryCrown_[*it]];
+      const double area =
+          std::min(kColumnArea_m2, crownArea(crown) * entries_[*it].footprint.weight);
       const double taken = area * light * absorbedShare(crown);
-      entryAbsorbed_[*it] = taken;
+      entries_[*it].taken = taken;  // the footprint is read for the last time above
       light = std::max(0.0, light - taken / kColumnArea_m2);
       layers_[columnStart_[c] + static_cast<std::size_t>(it - first)] = {crown.top_m,
                                                                          static_cast<float>(light)};
     }
   });
-  absorbed_.resize(n);
+  resizeForOverwrite(absorbed_, n);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     double sum = 0.0;
-    for (std::size_t e = crownStart_[i]; e < crownStart_[i + 1]; ++e) sum += entryAbsorbed_[e];
+    for (std::size_t e = crownStart_[i]; e < crownStart_[i + 1]; ++e) sum += entries_[e].taken;
     absorbed_[i] = sum;
   });
 }

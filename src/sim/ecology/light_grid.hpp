@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/buffer.hpp"
@@ -27,12 +28,29 @@ namespace eco {
 inline constexpr double kLightColumn_m = 5.0;
 inline constexpr double kLeafExtinction = 0.5;  // Beer's law k for a random leaf angle distribution
 
-// A crown as the light grid sees it: a disc of leaves at the top of the tree.
+// A crown as the light grid sees it: a disc of leaves at the top of the tree. One without
+// leaves takes no light and casts no shade.
 struct CrownShape {
   float east_m = 0.0f, north_m = 0.0f;  // map coordinates of the stem
   float radius_m = 0.5f;
   float top_m = 1.0f;  // height above the ground
   float leafArea_m2 = 0.0f;
+};
+
+// The light grid draws no crown narrower than this.
+inline constexpr float kMinCrownRadius_m = 0.05f;
+
+// A year's crowns as columns of equal length, one row a crown: the ecosystem's plants' own
+// columns, with their leaf areas (a plant below breast height has none), so a landscape's
+// 80 million crowns are not copied into 20-byte records each year.
+struct CrownColumns {
+  std::span<const float> east_m, north_m, radius_m, top_m, leafArea_m2;
+  std::size_t size() const { return east_m.size(); }
+  // Row i as a crown, at least kMinCrownRadius_m across.
+  CrownShape operator[](std::size_t i) const {
+    return {east_m[i], north_m[i], std::max(radius_m[i], kMinCrownRadius_m), top_m[i],
+            leafArea_m2[i]};
+  }
 };
 
 class LightGrid {
@@ -42,9 +60,10 @@ class LightGrid {
   LightGrid(const Grid& terrain, const Field& topLight);
 
   // This year's light through these crowns (any order; ties in height go to the earlier).
+  void compute(const CrownColumns& crowns);
   void compute(const std::vector<CrownShape>& crowns);
 
-  // Light absorbed by crown i of the last compute(), in m2 of open-sky light.
+  // Light absorbed by crown (row) i of the last compute(), in m2 of open-sky light.
   double absorbed(std::size_t crown) const { return absorbed_[crown]; }
   // What the same crown would absorb standing alone on open level ground.
   static double absorbedInTheOpen(const CrownShape& crown);
@@ -90,6 +109,14 @@ class LightGrid {
     std::int32_t column;
     float weight;  // share of the crown's projection over the column
   };
+  // A crown's entry in a column: its footprint there until its column's pass has read it,
+  // then the light it takes there. The one overwrites the other, as no pass needs both: a
+  // landscape's year has some 80 million entries, and a separate array for the light took
+  // 8 bytes more each.
+  union Entry {
+    Footprint footprint;
+    double taken;
+  };
   // A crown's place in a column's light profile: its top, and the light it leaves below it.
   struct Layer {
     float top_m;
@@ -111,13 +138,12 @@ class LightGrid {
   // compute()'s working arrays, kept from one year to the next: at a landscape's scale they
   // hold gigabytes, which, allocated afresh each year, the kernel zeroed page by page and
   // the vectors zeroed again (docs/performance.md, "Working arrays kept from year to year").
-  // Each is written before it is read. Per crown: where its footprint starts (32 bits: a landscape
-  // has tens of millions of crowns). Per footprint entry, in crown order: the column and
-  // share, the crown, and the light it takes; and the entries in column order.
+  // Each is written before it is read. Per crown: where its entries start (32 bits: a landscape
+  // has tens of millions of crowns). Per entry, in crown order: the entry and its crown; and
+  // the entries in column order.
   Buffer<std::uint32_t> crownStart_;
-  Buffer<Footprint> entries_;
+  Buffer<Entry> entries_;
   Buffer<std::uint32_t> entryCrown_;
-  Buffer<double> entryAbsorbed_;
   Buffer<std::uint32_t> columnOrder_;
 };
 

@@ -156,6 +156,29 @@ TEST(LightGrid, TheTerrainsLightScalesWhatCrownsGet) {
   EXPECT_DOUBLE_EQ(half.lightAt(20.0, 20.0, 30.0), 0.5);
 }
 
+TEST(LightGrid, ARowWithoutLeavesIsNoCrown) {
+  // The ecosystem gives the grid a row for every plant, and one below breast height has no
+  // leaves: it takes no light, shades nothing and leaves no layer in its column.
+  FiftyMetres m;
+  const CrownShape leafless{20.0f, 20.0f, 2.0f, 20.0f, 0.0f};
+  const CrownShape low{21.0f, 21.0f, 2.0f, 10.0f, 30.0f};
+  m.light.compute({leafless, low});
+  EXPECT_EQ(m.light.absorbed(0), 0.0);
+  EXPECT_DOUBLE_EQ(m.light.absorbed(1), LightGrid::absorbedInTheOpen(low));
+  EXPECT_DOUBLE_EQ(m.light.lightAt(20.0, 20.0, 15.0), 1.0);
+}
+
+TEST(LightGrid, CrownColumnsDrawNoCrownNarrowerThanTheLeast) {
+  FiftyMetres m;
+  const std::vector<float> east{20.0f, 40.0f}, north{20.0f, 40.0f}, radius{0.01f, 1.5f},
+      top{5.0f, 8.0f}, leafArea{0.002f, 6.0f};
+  m.light.compute(CrownColumns{east, north, radius, top, leafArea});
+  EXPECT_DOUBLE_EQ(m.light.absorbed(0),
+                   LightGrid::absorbedInTheOpen({20.0f, 20.0f, kMinCrownRadius_m, 5.0f, 0.002f}));
+  EXPECT_DOUBLE_EQ(m.light.absorbed(1),
+                   LightGrid::absorbedInTheOpen({40.0f, 40.0f, 1.5f, 8.0f, 6.0f}));
+}
+
 TEST(LightGrid, TheOrderOfTheCrownsAndTheThreadCountDoNotMatter) {
   FiftyMetres m;
   std::vector<CrownShape> crowns;

@@ -99,7 +99,7 @@ TEST(PlantSite, TheWindOfARidgeAndOfAValley) {
   fields.windiness[static_cast<std::size_t>(ridge)] = 0.93f;
   fields.windiness[static_cast<std::size_t>(valley)] = 0.1f;
   LightGrid light(terrain.grid, Field(terrain.grid.cellCount(), 1.0f));
-  light.compute({});
+  light.compute(std::vector<CrownShape>{});
   Plants p;
   p.resize(3);
   const float east[] = {20.0f, 70.0f, 20.0f}, height[] = {12.0f, 12.0f, 1.0f};

@@ -132,43 +132,45 @@ void LightGrid::compute(const CrownColumns& crowns) {
               static_cast<std::uint32_t>(i));
   });
 
-  // Each column's entries, tallest crown first (ties: the earlier crown).
+  // Each column's layers, tallest crown first (ties: the earlier crown, whose entries come
+  // first; a crown has one entry in a column).
   const std::size_t columns = topLight_.size();
   columnStart_.assign(columns + 1, 0);
   for (const Entry& entry : entries_) ++columnStart_[entry.footprint.column + 1];
   for (std::size_t c = 0; c < columns; ++c) columnStart_[c + 1] += columnStart_[c];
-  resizeForOverwrite(columnOrder_, entryCount);
+  resizeForOverwrite(layers_, entryCount);
   {
     std::vector<std::size_t> next(columnStart_.begin(), columnStart_.end() - 1);
-    for (std::size_t e = 0; e < entryCount; ++e)
-      columnOrder_[next[entries_[e].footprint.column]++] = static_cast<std::uint32_t>(e);
+    for (std::size_t e = 0; e < entryCount; ++e) {
+      Layer& layer = layers_[next[entries_[e].footprint.column]++];
+      layer.top_m = crowns.top_m[entryCrown_[e]];
+      layer.entry = static_cast<std::uint32_t>(e);
+    }
   }
-  resizeForOverwrite(layers_, entryCount);
   tbb::parallel_for(std::size_t{0}, columns, [&](std::size_t c) {
-    const auto first = columnOrder_.begin() + static_cast<std::ptrdiff_t>(columnStart_[c]);
-    const auto last = columnOrder_.begin() + static_cast<std::ptrdiff_t>(columnStart_[c + 1]);
-    std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
-      const float ta = crowns.top_m[entryCrown_[a]], tb = crowns.top_m[entryCrown_[b]];
-      return ta != tb ? ta > tb : entryCrown_[a] < entryCrown_[b];
+    Layer* first = layers_.data() + columnStart_[c];
+    Layer* last = layers_.data() + columnStart_[c + 1];
+    std::sort(first, last, [](const Layer& a, const Layer& b) {
+      return a.top_m != b.top_m ? a.top_m > b.top_m : a.entry < b.entry;
     });
     double light = topLight_[c];
-    for (auto it = first; it != last; ++it) {
-      const CrownShape crown = crowns[entryCrown_[*it]];
-      const double area =
-          std::min(kColumnArea_m2, crownArea(crown) * entries_[*it].footprint.weight);
+    for (Layer* layer = first; layer != last; ++layer) {
+      Entry& entry = entries_[layer->entry];
+      const CrownShape crown = crowns[entryCrown_[layer->entry]];
+      const double area = std::min(kColumnArea_m2, crownArea(crown) * entry.footprint.weight);
       const double taken = area * light * absorbedShare(crown);
-      entries_[*it].taken = taken;  // the footprint is read for the last time above
+      entry.taken = taken;  // the footprint is read for the last time above
       light = std::max(0.0, light - taken / kColumnArea_m2);
-      layers_[columnStart_[c] + static_cast<std::size_t>(it - first)] = {crown.top_m,
-                                                                         static_cast<float>(light)};
+      layer->lightBelow = static_cast<float>(light);  // the entry is read for the last time above
     }
   });
-  resizeForOverwrite(absorbed_, n);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    double sum = 0.0;
-    for (std::size_t e = crownStart_[i]; e < crownStart_[i + 1]; ++e) sum += entries_[e].taken;
-    absorbed_[i] = sum;
-  });
+}
+
+double LightGrid::absorbed(std::size_t crown) const {
+  double sum = 0.0;
+  for (std::size_t e = crownStart_[crown]; e < crownStart_[crown + 1]; ++e)
+    sum += entries_[e].taken;
+  return sum;
 }
 
 double LightGrid::absorbedInTheOpen(const CrownShape& crown) {

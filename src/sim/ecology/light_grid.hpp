@@ -64,7 +64,9 @@ class LightGrid {
   void compute(const std::vector<CrownShape>& crowns);
 
   // Light absorbed by crown (row) i of the last compute(), in m2 of open-sky light.
-  double absorbed(std::size_t crown) const { return absorbed_[crown]; }
+  // The sum of its entries' light, worked out when asked: each crown is asked once a year,
+  // and an array of the sums took 8 bytes a plant.
+  double absorbed(std::size_t crown) const;
   // What the same crown would absorb standing alone on open level ground.
   static double absorbedInTheOpen(const CrownShape& crown);
   // Light (a fraction of open level ground's) at a height above the ground: what the crowns
@@ -118,9 +120,15 @@ class LightGrid {
     double taken;
   };
   // A crown's place in a column's light profile: its top, and the light it leaves below it.
+  // Until the column's pass has read it, the place holds the crown's entry instead of the
+  // light: the places are sorted by top as they will stay, with no other array in column
+  // order and no lookup of each top while sorting.
   struct Layer {
     float top_m;
-    float lightBelow;
+    union {
+      float lightBelow;
+      std::uint32_t entry;
+    };
   };
   void footprint(const CrownShape& crown, std::vector<Footprint>& out) const;
   double lightInColumn(long column, double height_m) const;
@@ -131,7 +139,6 @@ class LightGrid {
   int columnsX_ = 0, columnsY_ = 0;
   double originEast_m_ = 0.0, originNorth_m_ = 0.0;  // south-west corner of the columns
   std::vector<float> topLight_;                      // per column
-  Buffer<double> absorbed_;                          // per crown
   // Per column: its crowns' layers, tallest first (CSR).
   std::vector<std::size_t> columnStart_;
   Buffer<Layer> layers_;
@@ -139,12 +146,10 @@ class LightGrid {
   // hold gigabytes, which, allocated afresh each year, the kernel zeroed page by page and
   // the vectors zeroed again (docs/performance.md, "Working arrays kept from year to year").
   // Each is written before it is read. Per crown: where its entries start (32 bits: a landscape
-  // has tens of millions of crowns). Per entry, in crown order: the entry and its crown; and
-  // the entries in column order.
+  // has tens of millions of crowns). Per entry, in crown order: the entry and its crown.
   Buffer<std::uint32_t> crownStart_;
   Buffer<Entry> entries_;
   Buffer<std::uint32_t> entryCrown_;
-  Buffer<std::uint32_t> columnOrder_;
 };
 
 }  // namespace eco

@@ -100,6 +100,29 @@ double sideLightHeightByDefinition(const LightGrid& light, const std::vector<Cro
   return top;
 }
 
+TEST(LightGrid, OfCrownsOfOneHeightTheEarlierTakesItsLightFirst) {
+  FiftyMetres m;
+  // Two crowns of one column and one height, and a wide one of the same height over them.
+  const CrownShape a{20.0f, 20.0f, 2.0f, 12.0f, 30.0f}, b{21.0f, 21.0f, 1.5f, 12.0f, 20.0f};
+  const CrownShape wide{21.0f, 19.0f, 6.0f, 12.0f, 150.0f};
+  const double shareA = 1.0 - std::exp(-kLeafExtinction * 30.0 / discArea(2.0));
+  m.light.compute({a, b});
+  EXPECT_NEAR(m.light.absorbed(0), discArea(2.0) * shareA, 1e-4);  // in the open sky's light
+  const double firstB = m.light.absorbed(1);
+  m.light.compute({b, a});
+  EXPECT_NEAR(m.light.absorbed(0), LightGrid::absorbedInTheOpen(b), 1e-4);
+  EXPECT_LT(m.light.absorbed(1), discArea(2.0) * shareA - 1e-3);  // under b now
+  EXPECT_GT(m.light.absorbed(0), firstB + 1e-3);
+  // The wide crown covers other columns: in theirs it is first, in the shared one last.
+  m.light.compute({a, b, wide});
+  const double lastWide = m.light.absorbed(2);
+  EXPECT_LT(lastWide, LightGrid::absorbedInTheOpen(wide));
+  m.light.compute({wide, a, b});
+  EXPECT_NEAR(m.light.absorbed(0), LightGrid::absorbedInTheOpen(wide),
+              1e-4 * LightGrid::absorbedInTheOpen(wide));
+  EXPECT_GT(m.light.absorbed(0), lastWide);
+}
+
 TEST(LightGrid, TheSideLightHeightIsTheLowestTopWhereTheLightSuffices) {
   // A dense, uneven canopy of 400 crowns: every stem's answer for a range of thresholds
   // and starting heights, against the definition.

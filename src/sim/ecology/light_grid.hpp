@@ -61,6 +61,7 @@ class LightGrid {
 
   // This year's light through these crowns (any order; ties in height go to the earlier).
   void compute(const CrownColumns& crowns);
+  // The same of crowns as records (a few crowns: a scene, a test), copied into columns.
   void compute(const std::vector<CrownShape>& crowns);
 
   // Light absorbed by crown (row) i of the last compute(), in m2 of open-sky light.

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <utility>
 
 #include <tbb/parallel_for.h>
@@ -36,8 +35,8 @@ Field terrainLightOf(const ConditionFields& fields) {
   return light;
 }
 
-// Work whose results are combined in plant order (sums, numbering) is done side by side in
-// blocks of plants, each block's part in plant order, and the blocks' parts taken in order.
+// Work whose results are combined in plant order (the year's fruiting trees) is done side by side
+// in blocks of plants, each block's part in plant order, and the blocks' parts taken in order.
 constexpr std::size_t kPlantBlock = 65536;
 
 std::size_t plantBlocks(std::size_t plants) {

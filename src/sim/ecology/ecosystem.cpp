@@ -208,7 +208,7 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
   // Grown alone: a sapling at its potential, then a tree with its whole crown in the light.
   double height = life.seedlingHeight_m, dbh = 0.0;
   for (int year = 0; year < age_years; ++year) {
-    if (height < kBreastHeight_m) {
+    if (height < kRegenerationHeight_m) {
       height = growSapling(life, height, {}).height_m;
       if (height >= kBreastHeight_m) dbh = saplingDiameter(life, height);
       continue;
@@ -280,7 +280,7 @@ void Ecosystem::computeLight() {
   resizeForOverwrite(crownFoliage_kg_, p.size());
   // Each tree's crown spreads its foliage as last year's light at its top built the leaves.
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    if (p.height_m[i] < kBreastHeight_m) {  // no crown in the light model
+    if (p.height_m[i] < kRegenerationHeight_m) {  // the sapling layer: no crown in the light
       leafArea_m2_[i] = 0.0f;
       crownFoliage_kg_[i] = 0.0f;
       return;
@@ -311,7 +311,10 @@ void Ecosystem::grow() {
     const LifeHistory& life = s.ecology.life;
     const double suitability = s.suitability[cellOf(p, i)];
     p.age_years[i] += 1;
-    if (p.height_m[i] < kBreastHeight_m) {
+    if (p.height_m[i] < kRegenerationHeight_m) {
+      // The sapling layer, as iLand's: in height only, by the light the trees' crowns leave
+      // on the ground (the layer casts no shade), its diameter the sapling height/diameter
+      // ratio's from breast height on.
       const double light = light_.groundLightAt(p.east_m[i], p.north_m[i]);
       const double response = std::clamp(s.ecology.lightResponse(light), 0.0, 1.0);
       const SaplingYear year =
@@ -418,8 +421,9 @@ void Ecosystem::applyMortality() {
     if (p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::PlantedRuledOut) ||
         p.age_years[i] >= life.maxAge_years)
       chance = 1.0;
-    else if (p.dbh_m[i] > 0.0f) {  // treeMortality, with the intrinsic part computed once
-      // A sapling that passed breast height this year had no crown: its deficit is 0.
+    else if (p.height_m[i] >= kRegenerationHeight_m) {
+      // treeMortality, with the intrinsic part computed once. A sapling that became a tree
+      // this year had no crown: its deficit is 0.
       chance =
           std::min(1.0, intrinsic[p.species[i]] + starvationMortality(life, carbonDeficit_[i]));
     } else

@@ -42,7 +42,9 @@ namespace eco {
 // lacks while all its young plants are below breast height (1.3 m); the first to pass
 // kRegenerationHeight_m becomes a tree and the cell's other seedlings and saplings die
 // (planted stock, which iLand plants as trees, stays). So species that arrive together race
-// for the cell by their height growth.
+// for the cell by their height growth. The layer's young plants grow as iLand's saplings do,
+// in height by the light the trees leave on the ground, and cast no shade: only trees (from
+// kRegenerationHeight_m) are crowns in the light grid.
 inline constexpr double kRegenerationCell_m = 2.0;
 inline constexpr double kRegenerationHeight_m = 4.0;
 inline constexpr int kYoungPlantsPerCell = 5;  // iLand's NSAPCELLS
@@ -179,7 +181,7 @@ class Ecosystem {
   int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;
   std::uint64_t settledBelowId_ = 0;  // the plants below this id are in order of place
-  // Per plant, this year's: its crown's leaf area (0 below breast height: no crown) and the
+  // Per plant, this year's: its crown's leaf area (0 in the sapling layer: no crown) and the
   // foliage it holds, and what its production left of its upkeep (carbonDeficit()).
   Buffer<float> leafArea_m2_, crownFoliage_kg_;
   std::vector<float> carbonDeficit_;

@@ -1,7 +1,9 @@
 // One year of a plant's life (docs/ecology.md, "Growth" and "Mortality"), as pure
 // functions of its state and what its site and the canopy give it.
-// - A sapling (below breast height) grows in height only: the species' potential height
-//   increment, scaled by the site's suitability and its light response.
+// - A sapling (a young plant of iLand's sapling layer, below 4 m: ecosystem.hpp) grows in
+//   height only: the species' potential height increment, scaled by the site's suitability
+//   and its light response. From breast height on its diameter is the sapling
+//   height/diameter ratio's.
 // - A tree makes biomass from the light its crown absorbs (a light-use efficiency). It first
 //   renews its leaves and fine roots (their turnover: iLand's allocation, Seidl et al. 2012);
 //   what is left adds wood to stem, branches and coarse roots by their allometries, which
@@ -17,7 +19,7 @@
 
 namespace eco {
 
-// Plants shorter than this have no stem diameter and cast no shade in the light model.
+// Plants shorter than this have no stem diameter.
 inline constexpr double kBreastHeight_m = 1.3;
 
 // Stem volume: form factor x basal area x height, m3.
@@ -114,7 +116,8 @@ struct SaplingYear {
 };
 SaplingYear growSapling(const LifeHistory& life, double height_m,
                         const GrowingConditions& conditions);
-// The stem diameter a sapling has as it passes breast height.
+// The stem diameter of a sapling this tall (at least breast height), and of a tree as it
+// leaves the sapling layer.
 double saplingDiameter(const LifeHistory& life, double height_m);
 
 // Probability that a tree dies this year: the intrinsic rate that lets `intrinsicSurvival` of

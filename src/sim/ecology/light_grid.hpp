@@ -41,7 +41,7 @@ struct CrownShape {
 inline constexpr float kMinCrownRadius_m = 0.05f;
 
 // A year's crowns as columns of equal length, one row a crown: the ecosystem's plants' own
-// columns, with their leaf areas (a plant below breast height has none), so a landscape's
+// columns, with their leaf areas (a plant of the sapling layer has none), so a landscape's
 // 80 million crowns are not copied into 20-byte records each year.
 struct CrownColumns {
   std::span<const float> east_m, north_m, radius_m, top_m, leafArea_m2;

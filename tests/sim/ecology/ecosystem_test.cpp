@@ -1,5 +1,6 @@
 #include "sim/ecology/ecosystem.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -225,6 +226,39 @@ TEST(Ecosystem, TheFirstToPassFourMetresClearsItsCell) {
   EXPECT_FLOAT_EQ(p.east_m[2], 18.5f);
 }
 
+// The young plants of the sapling layer (below 4 m) grow as iLand's saplings do: in height,
+// with the diameter of the sapling height/diameter ratio from breast height on, and they cast
+// no shade. The first to pass 4 m is a tree: a crown in the light grid, whose shade reaches
+// the ground.
+TEST(Ecosystem, TheSaplingLayerCastsNoShadeAndTreesDo) {
+  const Terrain terrain = flat(12, 5.0);
+  const ConditionFields fields = test::uniformConditions(terrain);
+  TestEcology barren;  // no seeds within these years
+  barren.maturityAge_years = 100;
+  Ecosystem ecosystem(terrain, fields,
+                      {test::inEcosystem(test::testSpecies("a", barren), fields)}, settings());
+  const LifeHistory& life = ecosystem.species()[0].ecology.life;
+  for (double north = 10.5; north < 40.0; north += 1.0)
+    for (double east = 10.5; east < 40.0; east += 1.0) ecosystem.plantSapling(0, east, north, 0.3);
+  const Plants& p = ecosystem.plants();
+  auto tallest = [&] { return *std::max_element(p.height_m.begin(), p.height_m.end()); };
+  int polesSeen = 0;
+  while (tallest() < kRegenerationHeight_m) {
+    ecosystem.step();
+    if (tallest() >= kRegenerationHeight_m) break;
+    // The light of the last step, through a crowd of 900 plants up to 4 m: the open sky's.
+    EXPECT_DOUBLE_EQ(ecosystem.lightAt(25.0, 25.0, 0.0), 1.0) << "year " << ecosystem.year();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.height_m[i] < kBreastHeight_m) continue;
+      ++polesSeen;
+      EXPECT_FLOAT_EQ(p.dbh_m[i], static_cast<float>(saplingDiameter(life, p.height_m[i])));
+    }
+  }
+  EXPECT_GT(polesSeen, 100);
+  ecosystem.step();  // the trees' first crowns
+  EXPECT_LT(ecosystem.lightAt(25.0, 25.0, 0.0), 0.9);
+}
+
 TEST(Ecosystem, NoPlantGrowsTallerThanItsSpeciesMaximum) {
   const Terrain terrain = flat(24, 10.0);
   const ConditionFields fields = test::uniformConditions(terrain);
@@ -290,9 +324,9 @@ TEST(Ecosystem, PineStarvesUnderBeechWhereBeechSurvives) {
   EXPECT_GT(youngOf(0), 3 * youngOf(1));
 }
 
-// Beech planted under a 30-year-old pine stand grows up through it and overtops it within
-// 120 years, while the pines, now among its crowns, decline (the shade-tolerant replacing
-// the pioneer, by mechanism; slowly, as it does in real stands).
+// Beech planted under a 30-year-old pine stand grows up through it and overtops it between
+// 80 and 120 years, while the pines, now among its crowns, decline (the shade-tolerant
+// replacing the pioneer, by mechanism; slowly, as it does in real stands).
 TEST(Ecosystem, BeechUnderPineOvertopsItAndPineDeclines) {
   const Terrain terrain = flat(20, 5.0);  // 100 m x 100 m
   const ConditionFields fields = test::uniformConditions(terrain);
@@ -306,13 +340,14 @@ TEST(Ecosystem, BeechUnderPineOvertopsItAndPineDeclines) {
     for (double east = 0.0; east < 97.0; east += 2.0) ecosystem.plantSapling(0, east, north, 0.3);
   auto measures = [&] { return measureStands(ecosystem.plants(), ecosystem.species(), 1.0); };
   const double pinesAtStart = measures()[1].stemsPerHa;
-  std::vector<StandMeasures> at100;
+  std::vector<StandMeasures> at80, at100;
   for (int year = 1; year <= 120; ++year) {
     ecosystem.step();
+    if (year == 80) at80 = measures();
     if (year == 100) at100 = measures();
   }
   const std::vector<StandMeasures> at120 = measures();
-  EXPECT_LT(at100[0].dominantHeight_m, at100[1].dominantHeight_m);  // still below at 100
+  EXPECT_LT(at80[0].dominantHeight_m, at80[1].dominantHeight_m);  // still below at 80
   EXPECT_GT(at120[0].dominantHeight_m, at120[1].dominantHeight_m);  // above at 120
   EXPECT_LT(at120[1].stemsPerHa, 0.3 * pinesAtStart);
   EXPECT_LT(at120[1].basalArea_m2PerHa, at100[1].basalArea_m2PerHa);  // pine past its peak

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <utility>
 
 #include <tbb/parallel_for.h>
@@ -35,8 +37,9 @@ Field terrainLightOf(const ConditionFields& fields) {
   return light;
 }
 
-// Work whose results are combined in plant order (the year's fruiting trees) is done side by side
-// in blocks of plants, each block's part in plant order, and the blocks' parts taken in order.
+// Work whose results are combined in plant order (the year's trees, its fruiting trees) is done
+// side by side in blocks of plants, each block's part in plant order, and the blocks' parts
+// taken in order.
 constexpr std::size_t kPlantBlock = 65536;
 
 std::size_t plantBlocks(std::size_t plants) {
@@ -271,28 +274,46 @@ bool Ecosystem::addSeedSource(const std::function<bool(glm::dvec2)>& covered, do
 }
 
 CrownColumns Ecosystem::crownsOf(const Plants& p) const {
-  return {p.east_m, p.north_m, p.crownRadius_m, p.height_m, leafArea_m2_};
+  return {p.east_m, p.north_m, p.crownRadius_m, p.height_m, trees_, leafArea_m2_};
+}
+
+void Ecosystem::findTrees() {
+  const Plants& p = state_.plants;
+  ECO_ASSERT(p.size() <= std::numeric_limits<std::uint32_t>::max(),
+             "more plants than 32-bit rows index");
+  // Block by block side by side: each block's count, then its rows in order.
+  std::vector<std::size_t> blockStart(plantBlocks(p.size()) + 1, 0);
+  forEachPlantBlock(p.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
+    blockStart[block + 1] = static_cast<std::size_t>(
+        std::count_if(p.height_m.begin() + static_cast<std::ptrdiff_t>(first),
+                      p.height_m.begin() + static_cast<std::ptrdiff_t>(end),
+                      [](float h) { return h >= kRegenerationHeight_m; }));
+  });
+  std::partial_sum(blockStart.begin(), blockStart.end(), blockStart.begin());
+  resizeForOverwrite(trees_, blockStart.back());
+  forEachPlantBlock(p.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
+    std::size_t k = blockStart[block];
+    for (std::size_t i = first; i < end; ++i)
+      if (p.height_m[i] >= kRegenerationHeight_m) trees_[k++] = static_cast<std::uint32_t>(i);
+  });
 }
 
 void Ecosystem::computeLight() {
   const Plants& p = state_.plants;
-  resizeForOverwrite(leafArea_m2_, p.size());
-  resizeForOverwrite(crownFoliage_kg_, p.size());
+  findTrees();
+  resizeForOverwrite(leafArea_m2_, trees_.size());
+  resizeForOverwrite(crownFoliage_kg_, trees_.size());
   // Each tree's crown spreads its foliage as last year's light at its top built the leaves.
-  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    if (p.height_m[i] < kRegenerationHeight_m) {  // the sapling layer: no crown in the light
-      leafArea_m2_[i] = 0.0f;
-      crownFoliage_kg_[i] = 0.0f;
-      return;
-    }
+  tbb::parallel_for(std::size_t{0}, trees_.size(), [&](std::size_t k) {
+    const std::size_t i = trees_[k];
     const LifeHistory& life = species_[p.species[i]].ecology.life;
     // The leaves spread over the crown as the light model draws it, so its leaf area index
     // there is the one they were spread to.
     const float radius = std::max(p.crownRadius_m[i], kMinCrownRadius_m);
     const CrownFoliage foliage =
         crownFoliage(life, foliageLimit_[p.species[i]], p.dbh_m[i], radius, p.light[i]);
-    leafArea_m2_[i] = static_cast<float>(foliage.leafArea_m2);
-    crownFoliage_kg_[i] = static_cast<float>(foliage.foliage_kg);
+    leafArea_m2_[k] = static_cast<float>(foliage.leafArea_m2);
+    crownFoliage_kg_[k] = static_cast<float>(foliage.foliage_kg);
   });
   light_.compute(crownsOf(p));
   lightComputed_ = true;
@@ -300,52 +321,55 @@ void Ecosystem::computeLight() {
 
 void Ecosystem::grow() {
   Plants& p = state_.plants;
-  const CrownColumns crowns = crownsOf(p);  // as the light grid drew them
-  resizeForOverwrite(carbonDeficit_, p.size());
-  std::fill(carbonDeficit_.begin(), carbonDeficit_.end(), 0.0f);
-  // The young first, then those of them grown out of the layer.
+  // The sapling layer, as iLand's: in height only, by the light the trees' crowns leave on
+  // the ground (the layer casts no shade), its diameter the sapling height/diameter ratio's
+  // from breast height on. The trees of this year's light are grown below.
   resizeForOverwrite(recruited_, p.size());
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    recruited_[i] = p.height_m[i] < kRegenerationHeight_m;
+    recruited_[i] = 0;
+    if (p.height_m[i] >= kRegenerationHeight_m) return;
     const EcosystemSpecies& s = species_[p.species[i]];
     const LifeHistory& life = s.ecology.life;
     const double suitability = s.suitability[cellOf(p, i)];
     p.age_years[i] += 1;
-    if (p.height_m[i] < kRegenerationHeight_m) {
-      // The sapling layer, as iLand's: in height only, by the light the trees' crowns leave
-      // on the ground (the layer casts no shade), its diameter the sapling height/diameter
-      // ratio's from breast height on.
-      const double light = light_.groundLightAt(p.east_m[i], p.north_m[i]);
-      const double response = std::clamp(s.ecology.lightResponse(light), 0.0, 1.0);
-      const SaplingYear year =
-          growSapling(life, p.height_m[i], {suitability, response, p.growthFactor[i]});
-      p.stressYears[i] = year.poor
-                             ? static_cast<std::uint16_t>(std::min(p.stressYears[i] + 1, 60000))
-                             : std::uint16_t{0};
-      p.height_m[i] = static_cast<float>(year.height_m);
-      if (year.height_m >= kBreastHeight_m) {
-        p.dbh_m[i] = static_cast<float>(saplingDiameter(life, year.height_m));
-        p.crownBase_m[i] = 0.0f;
-        p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
-      } else {
-        p.crownRadius_m[i] =
-            static_cast<float>(std::min(seedlingCrownLimit_m_[p.species[i]], 0.5 * p.height_m[i]));
-      }
-      p.vigor[i] = static_cast<float>(suitability * response);
-      p.light[i] = static_cast<float>(light);
-      return;
+    const double light = light_.groundLightAt(p.east_m[i], p.north_m[i]);
+    const double response = std::clamp(s.ecology.lightResponse(light), 0.0, 1.0);
+    const SaplingYear year =
+        growSapling(life, p.height_m[i], {suitability, response, p.growthFactor[i]});
+    p.stressYears[i] = year.poor ? static_cast<std::uint16_t>(std::min(p.stressYears[i] + 1, 60000))
+                                 : std::uint16_t{0};
+    p.height_m[i] = static_cast<float>(year.height_m);
+    if (year.height_m >= kBreastHeight_m) {
+      p.dbh_m[i] = static_cast<float>(saplingDiameter(life, year.height_m));
+      p.crownBase_m[i] = 0.0f;
+      p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
+    } else {
+      p.crownRadius_m[i] =
+          static_cast<float>(std::min(seedlingCrownLimit_m_[p.species[i]], 0.5 * p.height_m[i]));
     }
-    const CrownShape crown = crowns[i];  // read before this year's growth changes the row
-    const double absorbed = light_.absorbed(i);
+    p.vigor[i] = static_cast<float>(suitability * response);
+    p.light[i] = static_cast<float>(light);
+    recruited_[i] = p.height_m[i] >= kRegenerationHeight_m;  // next year's tree (findTrees)
+  });
+  const CrownColumns crowns = crownsOf(p);  // as the light grid drew them
+  resizeForOverwrite(carbonDeficit_, trees_.size());
+  tbb::parallel_for(std::size_t{0}, trees_.size(), [&](std::size_t k) {
+    const std::size_t i = trees_[k];
+    const EcosystemSpecies& s = species_[p.species[i]];
+    const LifeHistory& life = s.ecology.life;
+    const double suitability = s.suitability[cellOf(p, i)];
+    p.age_years[i] += 1;
+    const CrownShape crown = crowns[k];  // read before this year's growth changes the row
+    const double absorbed = light_.absorbed(k);
     const double open = LightGrid::absorbedInTheOpen(crown);
     const double relative = open > 0.0 ? std::min(1.0, absorbed / open) : 0.0;
     const double topLight = light_.lightAt(p.east_m[i], p.north_m[i], p.height_m[i] + 0.5);
     // Height growth answers the light the whole crown gets, relative to the open.
     const double response = std::clamp(s.ecology.lightResponse(relative), 0.0, 1.0);
-    const TreeYear year = growTree(life, p.dbh_m[i], p.height_m[i], crownFoliage_kg_[i], absorbed,
+    const TreeYear year = growTree(life, p.dbh_m[i], p.height_m[i], crownFoliage_kg_[k], absorbed,
                                    {suitability, response, p.growthFactor[i],
                                     agingFactor(life, p.height_m[i], p.age_years[i])});
-    carbonDeficit_[i] = static_cast<float>(year.carbonDeficit());
+    carbonDeficit_[k] = static_cast<float>(year.carbonDeficit());
     // The branches that this year's light beside the crown left below the compensation point
     // die.
     const double pruned = light_.heightWithSideLight(
@@ -358,9 +382,6 @@ void Ecosystem::grow() {
     p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, year.dbh_m, year.height_m));
     p.vigor[i] = static_cast<float>(relative * suitability);
     p.light[i] = static_cast<float>(topLight);
-  });
-  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    recruited_[i] = recruited_[i] && p.height_m[i] >= kRegenerationHeight_m;
   });
 }
 
@@ -414,21 +435,26 @@ void Ecosystem::applyMortality() {
   std::vector<double> intrinsic;
   for (const EcosystemSpecies& s : species_)
     intrinsic.push_back(intrinsicMortality(s.ecology.life));
-  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+  // Plant i dies by its own draw; a tree with this share of its upkeep unmade.
+  auto mayDie = [&](std::size_t i, double carbonDeficit) {
     const LifeHistory& life = species_[p.species[i]].ecology.life;
     Rng rng(streamKey(settings_.seed, state_.year, p.id[i], purpose("mortality")));
     double chance = 0.0;
     if (p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::PlantedRuledOut) ||
         p.age_years[i] >= life.maxAge_years)
       chance = 1.0;
-    else if (p.height_m[i] >= kRegenerationHeight_m) {
-      // treeMortality, with the intrinsic part computed once. A sapling that became a tree
-      // this year had no crown: its deficit is 0.
-      chance =
-          std::min(1.0, intrinsic[p.species[i]] + starvationMortality(life, carbonDeficit_[i]));
-    } else
+    else if (p.height_m[i] >= kRegenerationHeight_m)  // treeMortality, intrinsic part once
+      chance = std::min(1.0, intrinsic[p.species[i]] + starvationMortality(life, carbonDeficit));
+    else
       chance = p.stressYears[i] >= life.saplingStressYears ? 1.0 : intrinsic[p.species[i]];
     if (rng.uniform() < chance) p.alive[i] = 0;
+  };
+  // The trees of this year's light, by their carbon balance; then the rest: the sapling
+  // layer and the saplings that became trees this year, which had no crown (no deficit).
+  tbb::parallel_for(std::size_t{0}, trees_.size(),
+                    [&](std::size_t k) { mayDie(trees_[k], carbonDeficit_[k]); });
+  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+    if (p.height_m[i] < kRegenerationHeight_m || recruited_[i]) mayDie(i, 0.0);
   });
   clearCellsOfRecruits();
   for (std::size_t i = 0; i < p.size(); ++i)

@@ -137,9 +137,11 @@ class Ecosystem {
   void restore(EcosystemState state);
 
  private:
-  // The plants' crowns as the light grid reads them: their own columns and this year's leaf
-  // areas, one row a plant.
+  // The plants' crowns as the light grid reads them: their own columns, this year's trees'
+  // rows and leaf areas.
   CrownColumns crownsOf(const Plants& p) const;
+  // This year's trees: the rows of the plants of kRegenerationHeight_m and more.
+  void findTrees();
   void computeLight();
   void grow();
   void applyMortality();
@@ -181,10 +183,12 @@ class Ecosystem {
   int regenerationX_ = 0, regenerationY_ = 0;  // regeneration cells over the map
   EcosystemState state_;
   std::uint64_t settledBelowId_ = 0;  // the plants below this id are in order of place
-  // Per plant, this year's: its crown's leaf area (0 in the sapling layer: no crown) and the
-  // foliage it holds, and what its production left of its upkeep (carbonDeficit()).
-  Buffer<float> leafArea_m2_, crownFoliage_kg_;
-  std::vector<float> carbonDeficit_;
+  // This year's trees, the crowns of its light (findTrees), in plant order, and per tree: its
+  // crown's leaf area and the foliage it holds, and what its production left of its upkeep
+  // (carbonDeficit()). Per tree, not per plant: most of a young landscape's 100 million
+  // plants are saplings.
+  Buffer<std::uint32_t> trees_;
+  Buffer<float> leafArea_m2_, crownFoliage_kg_, carbonDeficit_;
   std::vector<std::uint8_t> recruited_;  // per plant: grew out of the sapling layer this year
   std::vector<int> born_, died_, plantedDied_;
   std::function<bool(glm::dvec2)> isOpen_;

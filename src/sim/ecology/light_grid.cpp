@@ -94,14 +94,16 @@ void LightGrid::footprint(const CrownShape& crown, std::vector<Footprint>& out) 
 
 void LightGrid::compute(const std::vector<CrownShape>& crowns) {
   std::vector<float> east, north, radius, top, leafArea;
+  std::vector<std::uint32_t> rows;
   for (const CrownShape& crown : crowns) {
+    rows.push_back(static_cast<std::uint32_t>(rows.size()));
     east.push_back(crown.east_m);
     north.push_back(crown.north_m);
     radius.push_back(crown.radius_m);
     top.push_back(crown.top_m);
     leafArea.push_back(crown.leafArea_m2);
   }
-  compute(CrownColumns{east, north, radius, top, leafArea});
+  compute(CrownColumns{east, north, radius, top, rows, leafArea});
 }
 
 void LightGrid::compute(const CrownColumns& crowns) {
@@ -143,7 +145,7 @@ void LightGrid::compute(const CrownColumns& crowns) {
     std::vector<std::size_t> next(columnStart_.begin(), columnStart_.end() - 1);
     for (std::size_t e = 0; e < entryCount; ++e) {
       Layer& layer = layers_[next[entries_[e].footprint.column]++];
-      layer.top_m = crowns.top_m[entryCrown_[e]];
+      layer.top_m = crowns.top_m[crowns.rows[entryCrown_[e]]];
       layer.entry = static_cast<std::uint32_t>(e);
     }
   }

@@ -40,16 +40,21 @@ struct CrownShape {
 // The light grid draws no crown narrower than this.
 inline constexpr float kMinCrownRadius_m = 0.05f;
 
-// A year's crowns as columns of equal length, one row a crown: the ecosystem's plants' own
-// columns, with their leaf areas (a plant of the sapling layer has none), so a landscape's
-// 80 million crowns are not copied into 20-byte records each year.
+// A year's crowns read from columns, not copied: the ecosystem's plants' own position,
+// radius and height columns (one row a plant), the rows of the plants that are crowns (its
+// trees, in order: the sapling layer below them casts no shade), and each crown's leaf area.
+// A landscape's 100 million plants are neither copied into crown records each year nor given
+// room as crowns when most of them are saplings.
 struct CrownColumns {
-  std::span<const float> east_m, north_m, radius_m, top_m, leafArea_m2;
-  std::size_t size() const { return east_m.size(); }
-  // Row i as a crown, at least kMinCrownRadius_m across.
-  CrownShape operator[](std::size_t i) const {
+  std::span<const float> east_m, north_m, radius_m, top_m;  // per row
+  std::span<const std::uint32_t> rows;                      // per crown: its row
+  std::span<const float> leafArea_m2;                       // per crown
+  std::size_t size() const { return rows.size(); }
+  // Crown k, at least kMinCrownRadius_m across.
+  CrownShape operator[](std::size_t k) const {
+    const std::size_t i = rows[k];
     return {east_m[i], north_m[i], std::max(radius_m[i], kMinCrownRadius_m), top_m[i],
-            leafArea_m2[i]};
+            leafArea_m2[k]};
   }
 };
 
@@ -64,7 +69,7 @@ class LightGrid {
   // The same of crowns as records (a few crowns: a scene, a test), copied into columns.
   void compute(const std::vector<CrownShape>& crowns);
 
-  // Light absorbed by crown (row) i of the last compute(), in m2 of open-sky light.
+  // Light absorbed by crown k of the last compute(), in m2 of open-sky light.
   // The sum of its entries' light, worked out when asked: each crown is asked once a year,
   // and an array of the sums took 8 bytes a plant.
   double absorbed(std::size_t crown) const;

@@ -235,8 +235,8 @@ TEST(Ecosystem, TheSaplingLayerCastsNoShadeAndTreesDo) {
   const ConditionFields fields = test::uniformConditions(terrain);
   TestEcology barren;  // no seeds within these years
   barren.maturityAge_years = 100;
-  Ecosystem ecosystem(terrain, fields,
-                      {test::inEcosystem(test::testSpecies("a", barren), fields)}, settings());
+  Ecosystem ecosystem(terrain, fields, {test::inEcosystem(test::testSpecies("a", barren), fields)},
+                      settings());
   const LifeHistory& life = ecosystem.species()[0].ecology.life;
   for (double north = 10.5; north < 40.0; north += 1.0)
     for (double east = 10.5; east < 40.0; east += 1.0) ecosystem.plantSapling(0, east, north, 0.3);
@@ -347,7 +347,7 @@ TEST(Ecosystem, BeechUnderPineOvertopsItAndPineDeclines) {
     if (year == 100) at100 = measures();
   }
   const std::vector<StandMeasures> at120 = measures();
-  EXPECT_LT(at80[0].dominantHeight_m, at80[1].dominantHeight_m);  // still below at 80
+  EXPECT_LT(at80[0].dominantHeight_m, at80[1].dominantHeight_m);    // still below at 80
   EXPECT_GT(at120[0].dominantHeight_m, at120[1].dominantHeight_m);  // above at 120
   EXPECT_LT(at120[1].stemsPerHa, 0.3 * pinesAtStart);
   EXPECT_LT(at120[1].basalArea_m2PerHa, at100[1].basalArea_m2PerHa);  // pine past its peak

@@ -195,11 +195,31 @@ TEST(LightGrid, CrownColumnsDrawNoCrownNarrowerThanTheLeast) {
   FiftyMetres m;
   const std::vector<float> east{20.0f, 40.0f}, north{20.0f, 40.0f}, radius{0.01f, 1.5f},
       top{5.0f, 8.0f}, leafArea{0.002f, 6.0f};
-  m.light.compute(CrownColumns{east, north, radius, top, leafArea});
+  const std::vector<std::uint32_t> rows{0, 1};
+  m.light.compute(CrownColumns{east, north, radius, top, rows, leafArea});
   EXPECT_DOUBLE_EQ(m.light.absorbed(0),
                    LightGrid::absorbedInTheOpen({20.0f, 20.0f, kMinCrownRadius_m, 5.0f, 0.002f}));
   EXPECT_DOUBLE_EQ(m.light.absorbed(1),
                    LightGrid::absorbedInTheOpen({40.0f, 40.0f, 1.5f, 8.0f, 6.0f}));
+}
+
+// The crowns are the rows listed, in their order, each with its own leaf area: a row not
+// listed (a sapling) takes no light and casts no shade, however tall.
+TEST(LightGrid, CrownColumnsAreTheListedRowsOnly) {
+  FiftyMetres m;
+  const std::vector<float> east{20.0f, 20.5f, 40.0f}, north{20.0f, 20.5f, 40.0f},
+      radius{1.5f, 2.0f, 1.5f}, top{8.0f, 30.0f, 6.0f}, leafArea{6.0f, 4.0f};
+  const std::vector<std::uint32_t> rows{0, 2};
+  m.light.compute(CrownColumns{east, north, radius, top, rows, leafArea});
+  EXPECT_DOUBLE_EQ(m.light.absorbed(0),
+                   LightGrid::absorbedInTheOpen({20.0f, 20.0f, 1.5f, 8.0f, 6.0f}));
+  EXPECT_DOUBLE_EQ(m.light.absorbed(1),
+                   LightGrid::absorbedInTheOpen({40.0f, 40.0f, 1.5f, 6.0f, 4.0f}));
+  EXPECT_DOUBLE_EQ(m.light.lightAt(20.0, 20.0, 10.0), 1.0);  // row 1's 30 m top shades nothing
+  EXPECT_LT(m.light.lightAt(20.0, 20.0, 0.0), 1.0);
+  // Crown 1 is row 2, 6 m tall (row 1's 30 m height is not its).
+  EXPECT_DOUBLE_EQ(m.light.lightAt(40.0, 40.0, 7.0), 1.0);
+  EXPECT_LT(m.light.lightAt(40.0, 40.0, 5.0), 1.0);
 }
 
 TEST(LightGrid, TheOrderOfTheCrownsAndTheThreadCountDoNotMatter) {

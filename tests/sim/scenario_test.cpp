@@ -191,9 +191,9 @@ species = "pine"
   EXPECT_DOUBLE_EQ(planting[1].spacing_m, 2.0);
   EXPECT_EQ(planting[1].where.line, 10);
   EXPECT_NE(std::string(errorOf("[terrain]\ncell_size_m = 5\n[terrain.generate]\nsize = "
-                                "9\n[[planting]]\nspecies = \"beech\"\nheight_m = 2\n")
+                                "9\n[[planting]]\nspecies = \"beech\"\nheight_m = 5\n")
                             .what())
-                .find("s.toml:7: planting[0].height_m: value 2 is outside [0.05, 1.29]"),
+                .find("s.toml:7: planting[0].height_m: value 5 is outside [0.05, 3.99]"),
             std::string::npos);
 }
 

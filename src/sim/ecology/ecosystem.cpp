@@ -240,8 +240,14 @@ void Ecosystem::plantSapling(int species, double east_m, double north_m, double 
   const std::size_t i = addPlant(species, east_m, north_m);
   const LifeHistory& life = species_[species].ecology.life;
   Plants& p = state_.plants;
-  p.height_m[i] = static_cast<float>(std::min(height_m, std::nextafter(kBreastHeight_m, 0.0)));
-  p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, 0.0, p.height_m[i]));
+  // A sapling of the layer (below 4 m), shaped as one grown to this height: from breast
+  // height on, its diameter is the sapling height/diameter ratio's.
+  // (The float below 4 m: the double below it rounds to 4 as a float.)
+  p.height_m[i] = std::min(static_cast<float>(height_m),
+                           std::nextafter(static_cast<float>(kRegenerationHeight_m), 0.0f));
+  if (p.height_m[i] >= kBreastHeight_m)
+    p.dbh_m[i] = static_cast<float>(saplingDiameter(life, p.height_m[i]));
+  p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
   p.age_years[i] = age_years;
   p.origin[i] = static_cast<std::uint8_t>(origin);
 }

@@ -89,8 +89,9 @@ class Ecosystem {
   // Adds a plant of `age` years grown alone at full light on a fully suitable site (sources
   // for tests, grown trees).
   void plant(int species, double east_m, double north_m, int age_years);
-  // Adds planted stock: a sapling of this height and age. Stock planted where a condition
-  // rules its species out and checked for survival (PlantedRuledOut) dies in its first year.
+  // Adds planted stock: a sapling of this height (below kRegenerationHeight_m) and age. Stock
+  // planted where a condition rules its species out and checked for survival
+  // (PlantedRuledOut) dies in its first year.
   void plantSapling(int species, double east_m, double north_m, double height_m, int age_years = 0,
                     PlantOrigin origin = PlantOrigin::Planted);
   // Removes the plants whose flag is set (thinning), keeping the others' order.

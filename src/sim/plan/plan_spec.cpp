@@ -130,7 +130,7 @@ Planting parsePlanting(TomlTable& table, const std::filesystem::path& folder) {
   }
   if (!p.rows.empty() && p.layout == PlantingLayout::Random)
     table.fail("rows", "a random layout has no rows: give species shares instead");
-  p.height_m = table.number("height_m", p.height_m, {0.05, 1.29});
+  p.height_m = table.number("height_m", p.height_m, {0.05, 3.99});  // the sapling layer
   p.stockAge_years = static_cast<int>(table.integer("age_years", p.stockAge_years, {0, 20}));
   p.survivalCheck = table.boolean("survival_check", p.survivalCheck);
   table.finish();

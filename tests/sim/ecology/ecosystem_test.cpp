@@ -259,6 +259,28 @@ TEST(Ecosystem, TheSaplingLayerCastsNoShadeAndTreesDo) {
   EXPECT_LT(ecosystem.lightAt(25.0, 25.0, 0.0), 0.9);
 }
 
+// Planted stock may be anything of the sapling layer, from a seedling to heavy nursery stock
+// of 3.5 m: below breast height it has no diameter, above it the sapling height/diameter
+// ratio's, and it grows as a sapling (no shade) until it passes 4 m.
+TEST(Ecosystem, PlantedStockIsASaplingOfItsHeight) {
+  const Terrain terrain = flat(12, 5.0);
+  const ConditionFields fields = test::uniformConditions(terrain);
+  Ecosystem ecosystem(terrain, fields, {test::inEcosystem(test::shippedSpecies("beech"), fields)},
+                      settings());
+  const LifeHistory& life = ecosystem.species()[0].ecology.life;
+  ecosystem.plantSapling(0, 20.0, 20.0, 0.5, 2);
+  ecosystem.plantSapling(0, 40.0, 40.0, 3.5, 8);
+  ecosystem.plantSapling(0, 30.0, 30.0, 9.0, 8);  // held below 4 m
+  const Plants& p = ecosystem.plants();
+  EXPECT_EQ(p.dbh_m[0], 0.0f);
+  EXPECT_FLOAT_EQ(p.dbh_m[1], static_cast<float>(saplingDiameter(life, 3.5)));
+  EXPECT_FLOAT_EQ(p.crownRadius_m[1], static_cast<float>(crownRadiusOf(life, p.dbh_m[1], 3.5)));
+  EXPECT_LT(p.height_m[2], kRegenerationHeight_m);
+  EXPECT_EQ(p.age_years[1], 8);
+  ecosystem.step();
+  EXPECT_DOUBLE_EQ(ecosystem.lightAt(40.0, 40.0, 0.0), 1.0);  // a sapling casts no shade
+}
+
 TEST(Ecosystem, NoPlantGrowsTallerThanItsSpeciesMaximum) {
   const Terrain terrain = flat(24, 10.0);
   const ConditionFields fields = test::uniformConditions(terrain);

@@ -108,6 +108,13 @@ TEST(PlanSpec, BadRulesNameTheirLineAndKey) {
   EXPECT_NE(errorOf("[[planting]]\nspecies = \"beech\"\nspacing_m = 0\n")
                 .find("plan.toml:3: planting[0].spacing_m: value 0 is outside [0.5, 1000]"),
             std::string::npos);
+  // Stock is a sapling of the layer below 4 m: heavy nursery stock of 3.99 m is, a 4 m tree
+  // is not.
+  EXPECT_EQ(planOf("[[planting]]\nspecies = \"beech\"\nheight_m = 3.99\n").planting[0].height_m,
+            3.99);
+  EXPECT_NE(errorOf("[[planting]]\nspecies = \"beech\"\nheight_m = 4\n")
+                .find("plan.toml:3: planting[0].height_m: value 4 is outside [0.05, 3.99]"),
+            std::string::npos);
   EXPECT_NE(errorOf("[[planting]]\nspecies = \"beech\"\npolygon = [[0, 0], [5, 5]]\n")
                 .find("plan.toml:3: planting[0].polygon: expected at least 3 points"),
             std::string::npos);

@@ -238,18 +238,28 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
 void Ecosystem::plantSapling(int species, double east_m, double north_m, double height_m,
                              int age_years, PlantOrigin origin) {
   const std::size_t i = addPlant(species, east_m, north_m);
-  const LifeHistory& life = species_[species].ecology.life;
   Plants& p = state_.plants;
-  // A sapling of the layer (below 4 m), shaped as one grown to this height: from breast
-  // height on, its diameter is the sapling height/diameter ratio's.
-  // (The float below 4 m: the double below it rounds to 4 as a float.)
-  p.height_m[i] = std::min(static_cast<float>(height_m),
-                           std::nextafter(static_cast<float>(kRegenerationHeight_m), 0.0f));
-  if (p.height_m[i] >= kBreastHeight_m)
-    p.dbh_m[i] = static_cast<float>(saplingDiameter(life, p.height_m[i]));
-  p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
+  // A sapling of the layer, below 4 m (the float below it: the double below 4 rounds to 4 as
+  // a float).
+  setSaplingHeight(i, std::min(static_cast<float>(height_m),
+                               std::nextafter(static_cast<float>(kRegenerationHeight_m), 0.0f)));
   p.age_years[i] = age_years;
   p.origin[i] = static_cast<std::uint8_t>(origin);
+}
+
+void Ecosystem::setSaplingHeight(std::size_t i, double height_m) {
+  Plants& p = state_.plants;
+  const LifeHistory& life = species_[p.species[i]].ecology.life;
+  p.height_m[i] = static_cast<float>(height_m);
+  if (height_m >= kBreastHeight_m) {
+    p.dbh_m[i] = static_cast<float>(saplingDiameter(life, height_m));
+    p.crownBase_m[i] = 0.0f;
+    p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
+  } else {
+    // crownRadiusOf's below breast height, without its exp and two logs.
+    p.crownRadius_m[i] =
+        static_cast<float>(std::min(seedlingCrownLimit_m_[p.species[i]], 0.5 * p.height_m[i]));
+  }
 }
 
 void Ecosystem::removePlants(const std::vector<std::uint8_t>& removed) {
@@ -344,15 +354,7 @@ void Ecosystem::grow() {
         growSapling(life, p.height_m[i], {suitability, response, p.growthFactor[i]});
     p.stressYears[i] = year.poor ? static_cast<std::uint16_t>(std::min(p.stressYears[i] + 1, 60000))
                                  : std::uint16_t{0};
-    p.height_m[i] = static_cast<float>(year.height_m);
-    if (year.height_m >= kBreastHeight_m) {
-      p.dbh_m[i] = static_cast<float>(saplingDiameter(life, year.height_m));
-      p.crownBase_m[i] = 0.0f;
-      p.crownRadius_m[i] = static_cast<float>(crownRadiusOf(life, p.dbh_m[i], p.height_m[i]));
-    } else {
-      p.crownRadius_m[i] =
-          static_cast<float>(std::min(seedlingCrownLimit_m_[p.species[i]], 0.5 * p.height_m[i]));
-    }
+    setSaplingHeight(i, year.height_m);
     p.vigor[i] = static_cast<float>(suitability * response);
     p.light[i] = static_cast<float>(light);
     recruited_[i] = p.height_m[i] >= kRegenerationHeight_m;  // next year's tree (findTrees)

@@ -159,6 +159,10 @@ class Ecosystem {
   // place"). The plants appended since the last call, established or planted, are moved
   // into that order.
   void settleNewcomers();
+  // Makes row i a sapling of this height (below kRegenerationHeight_m), shaped as the sapling
+  // layer shapes it: from breast height on, the diameter of the sapling height/diameter ratio
+  // and its crown; below it, no diameter.
+  void setSaplingHeight(std::size_t i, double height_m);
   // Appends a seedling of the species at a place; returns its row.
   std::size_t addPlant(int species, double east_m, double north_m);
   // Makes row i a seedling with this id (the rows of a year's seedlings are made side by

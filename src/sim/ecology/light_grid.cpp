@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -108,13 +109,20 @@ void LightGrid::compute(const std::vector<CrownShape>& crowns) {
 
 void LightGrid::compute(const CrownColumns& crowns) {
   const std::size_t n = crowns.size();
-  // Each crown's footprint, in crown order (CSR): count, then fill.
+  const std::size_t columns = topLight_.size();
+  // Each crown's footprint, in crown order (CSR), and each column's layers: count, then fill,
+  // crown by crown side by side. A column's count is added to atomically, and its layers are
+  // placed in whatever order the crowns come: the sort below orders them in full (by top,
+  // then entry), so the light is the same whatever the thread count.
   resizeForOverwrite(crownStart_, n + 1);
   crownStart_[0] = 0;
+  columnStart_.assign(columns + 1, 0);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    thread_local std::vector<Footprint> columns;
-    footprint(crowns[i], columns);
-    crownStart_[i + 1] = static_cast<std::uint32_t>(columns.size());
+    thread_local std::vector<Footprint> footprints;
+    footprint(crowns[i], footprints);
+    crownStart_[i + 1] = static_cast<std::uint32_t>(footprints.size());
+    for (const Footprint& f : footprints)
+      std::atomic_ref(columnStart_[f.column + 1]).fetch_add(1, std::memory_order_relaxed);
   });
   std::size_t entryCount = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -123,32 +131,26 @@ void LightGrid::compute(const CrownColumns& crowns) {
                "more crown footprint entries than 32 bits index");
     crownStart_[i + 1] = static_cast<std::uint32_t>(entryCount);
   }
+  for (std::size_t c = 0; c < columns; ++c) columnStart_[c + 1] += columnStart_[c];
   resizeForOverwrite(entries_, entryCount);
-  resizeForOverwrite(entryCrown_, entryCount);
+  resizeForOverwrite(layers_, entryCount);
+  std::vector<std::size_t> nextLayer(columnStart_.begin(), columnStart_.end() - 1);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    thread_local std::vector<Footprint> columns;
-    footprint(crowns[i], columns);
-    for (std::size_t k = 0; k < columns.size(); ++k)
-      entries_[crownStart_[i] + k].footprint = columns[k];
-    std::fill(entryCrown_.begin() + crownStart_[i], entryCrown_.begin() + crownStart_[i + 1],
-              static_cast<std::uint32_t>(i));
+    thread_local std::vector<Footprint> footprints;
+    footprint(crowns[i], footprints);
+    const float top = crowns.top_m[crowns.rows[i]];
+    for (std::size_t k = 0; k < footprints.size(); ++k) {
+      const std::uint32_t e = crownStart_[i] + static_cast<std::uint32_t>(k);
+      entries_[e].share = {static_cast<std::uint32_t>(i), footprints[k].weight};
+      Layer& layer = layers_[std::atomic_ref(nextLayer[footprints[k].column])
+                                 .fetch_add(1, std::memory_order_relaxed)];
+      layer.top_m = top;
+      layer.entry = e;
+    }
   });
 
   // Each column's layers, tallest crown first (ties: the earlier crown, whose entries come
   // first; a crown has one entry in a column).
-  const std::size_t columns = topLight_.size();
-  columnStart_.assign(columns + 1, 0);
-  for (const Entry& entry : entries_) ++columnStart_[entry.footprint.column + 1];
-  for (std::size_t c = 0; c < columns; ++c) columnStart_[c + 1] += columnStart_[c];
-  resizeForOverwrite(layers_, entryCount);
-  {
-    std::vector<std::size_t> next(columnStart_.begin(), columnStart_.end() - 1);
-    for (std::size_t e = 0; e < entryCount; ++e) {
-      Layer& layer = layers_[next[entries_[e].footprint.column]++];
-      layer.top_m = crowns.top_m[crowns.rows[entryCrown_[e]]];
-      layer.entry = static_cast<std::uint32_t>(e);
-    }
-  }
   tbb::parallel_for(std::size_t{0}, columns, [&](std::size_t c) {
     Layer* first = layers_.data() + columnStart_[c];
     Layer* last = layers_.data() + columnStart_[c + 1];
@@ -158,10 +160,10 @@ void LightGrid::compute(const CrownColumns& crowns) {
     double light = topLight_[c];
     for (Layer* layer = first; layer != last; ++layer) {
       Entry& entry = entries_[layer->entry];
-      const CrownShape crown = crowns[entryCrown_[layer->entry]];
-      const double area = std::min(kColumnArea_m2, crownArea(crown) * entry.footprint.weight);
+      const CrownShape crown = crowns[entry.share.crown];
+      const double area = std::min(kColumnArea_m2, crownArea(crown) * entry.share.weight);
       const double taken = area * light * absorbedShare(crown);
-      entry.taken = taken;  // the footprint is read for the last time above
+      entry.taken = taken;  // the share is read for the last time above
       light = std::max(0.0, light - taken / kColumnArea_m2);
       layer->lightBelow = static_cast<float>(light);  // the entry is read for the last time above
     }

@@ -117,12 +117,16 @@ class LightGrid {
     std::int32_t column;
     float weight;  // share of the crown's projection over the column
   };
-  // A crown's entry in a column: its footprint there until its column's pass has read it,
-  // then the light it takes there. The one overwrites the other, as no pass needs both: a
-  // landscape's year has some 80 million entries, and a separate array for the light took
-  // 8 bytes more each.
+  // A crown's entry in a column: the crown and its share of the crown's projection there
+  // until its column's pass has read them, then the light the crown takes there. The one
+  // overwrites the other, as no pass needs both: a landscape's year has some 80 million
+  // entries, and a separate array for the light took 8 bytes more each, one for the crown 4.
+  struct Share {
+    std::uint32_t crown;
+    float weight;
+  };
   union Entry {
-    Footprint footprint;
+    Share share;
     double taken;
   };
   // A crown's place in a column's light profile: its top, and the light it leaves below it.
@@ -152,10 +156,9 @@ class LightGrid {
   // hold gigabytes, which, allocated afresh each year, the kernel zeroed page by page and
   // the vectors zeroed again (docs/performance.md, "Working arrays kept from year to year").
   // Each is written before it is read. Per crown: where its entries start (32 bits: a landscape
-  // has tens of millions of crowns). Per entry, in crown order: the entry and its crown.
+  // has tens of millions of crowns). Per entry, in crown order: the entry.
   Buffer<std::uint32_t> crownStart_;
   Buffer<Entry> entries_;
-  Buffer<std::uint32_t> entryCrown_;
 };
 
 }  // namespace eco

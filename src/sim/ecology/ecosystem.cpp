@@ -28,6 +28,16 @@ constexpr double kMinCrownShare = 0.1;
 // it a planted stand of identical trees would never differentiate and never thin itself.
 constexpr double kGrowthFactorSpread = 0.15;
 
+using Age = decltype(Plants::age_years)::value_type;
+static_assert(kLongestLife_years <= std::numeric_limits<Age>::max());
+
+// An age given to a plant (a source's grown tree, planted stock) as the plants keep it.
+Age ageOf(int age_years) {
+  ECO_ASSERT(age_years >= 0 && age_years <= kLongestLife_years,
+             "a plant's age of " << age_years << " years");
+  return static_cast<Age>(age_years);
+}
+
 Field terrainLightOf(const ConditionFields& fields) {
   Field light(fields.sunniness.size());
   // Outside the landscape (no-data cells, whose conditions are NaN) the sky is open.
@@ -227,7 +237,7 @@ void Ecosystem::plant(int species, double east_m, double north_m, int age_years)
     dbh = grown.dbh_m;
     height = grown.height_m;
   }
-  p.age_years[i] = age_years;
+  p.age_years[i] = ageOf(age_years);
   p.height_m[i] = static_cast<float>(height);
   p.dbh_m[i] = static_cast<float>(dbh);
   p.crownBase_m[i] =
@@ -243,7 +253,7 @@ void Ecosystem::plantSapling(int species, double east_m, double north_m, double 
   // a float).
   setSaplingHeight(i, std::min(static_cast<float>(height_m),
                                std::nextafter(static_cast<float>(kRegenerationHeight_m), 0.0f)));
-  p.age_years[i] = age_years;
+  p.age_years[i] = ageOf(age_years);
   p.origin[i] = static_cast<std::uint8_t>(origin);
 }
 
@@ -352,8 +362,11 @@ void Ecosystem::grow() {
     const double response = std::clamp(s.ecology.lightResponse(light), 0.0, 1.0);
     const SaplingYear year =
         growSapling(life, p.height_m[i], {suitability, response, p.growthFactor[i]});
-    p.stressYears[i] = year.poor ? static_cast<std::uint16_t>(std::min(p.stressYears[i] + 1, 60000))
-                                 : std::uint16_t{0};
+    // Counted up to the most a species may give: no more is needed to tell.
+    p.stressYears[i] =
+        year.poor
+            ? static_cast<std::uint8_t>(std::min(p.stressYears[i] + 1, kMostSaplingStressYears))
+            : std::uint8_t{0};
     setSaplingHeight(i, year.height_m);
     p.vigor[i] = static_cast<float>(suitability * response);
     p.light[i] = static_cast<float>(light);

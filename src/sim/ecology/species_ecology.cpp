@@ -91,7 +91,7 @@ void parseReproduction(TomlTable& life, LifeHistory& h) {
 
 LifeHistory parseLife(TomlTable& life) {
   LifeHistory h;
-  h.maxAge_years = static_cast<int>(life.integer("max_age_years", {}, {1, 10000}));
+  h.maxAge_years = static_cast<int>(life.integer("max_age_years", {}, {1, kLongestLife_years}));
   h.height_m = heightCurve(life);
   h.formFactor = life.number("form_factor", {}, {0.1, 1.0});
   h.foliage = allometry(life, "foliage_biomass");
@@ -116,8 +116,8 @@ LifeHistory parseLife(TomlTable& life) {
   }
   h.intrinsicSurvival = life.number("intrinsic_survival", h.intrinsicSurvival, {1e-6, 1.0});
   h.stressMortality = life.number("stress_mortality", h.stressMortality, {0.0, 100.0});
-  h.saplingStressYears =
-      static_cast<int>(life.integer("sapling_stress_years", h.saplingStressYears, {1, 1000}));
+  h.saplingStressYears = static_cast<int>(
+      life.integer("sapling_stress_years", h.saplingStressYears, {1, kMostSaplingStressYears}));
   h.saplingStressThreshold =
       life.number("sapling_stress_threshold", h.saplingStressThreshold, {0.0, 1.0});
   parseReproduction(life, h);

@@ -78,6 +78,11 @@ struct Aging {
   double exponent = 2.0;
 };
 
+// The longest life and the most poor years in a row a species file may give: a plant keeps
+// its age in 16 bits and its poor years in 8 (plants.hpp; a landscape holds 100 million).
+inline constexpr int kLongestLife_years = 10000;
+inline constexpr int kMostSaplingStressYears = 255;
+
 struct LifeHistory {
   // Growth and form.
   int maxAge_years = 300;

@@ -22,13 +22,11 @@ namespace {
 constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
 // 2: block checksum; 3: growth factor, stand measures; 4: 32-bit variant seeds;
 // 5: plants' origin, the plan's stats; 6: no ground, cell and variant seed columns (derived)
-constexpr std::uint32_t kFormatVersion = 6;
+// 7: ages and vigor and light in 16 bits (Fixed16), poor years in 8
+constexpr std::uint32_t kFormatVersion = 7;
 
 bool finiteAtLeast(float value, float least) {
   return std::isfinite(value) && value >= least;
-}
-bool within(float value, float least, float most) {
-  return std::isfinite(value) && value >= least && value <= most;
 }
 
 // What is wrong with plant i, or nothing.
@@ -41,7 +39,7 @@ std::optional<std::string> plantFault(const Plants& p, std::size_t i, int year,
   if (!std::isfinite(p.east_m[i]) || !std::isfinite(p.north_m[i]) ||
       g.cellAt(p.east_m[i], p.north_m[i]) < 0)
     return fmt::format("position ({}, {}) m is not on the terrain", p.east_m[i], p.north_m[i]);
-  if (p.age_years[i] < 0 || p.age_years[i] > year)
+  if (p.age_years[i] > year)
     return fmt::format("age {} is not between 0 and the checkpoint's year {}", p.age_years[i],
                        year);
   if (!finiteAtLeast(p.height_m[i], 0.0f) || !finiteAtLeast(p.crownRadius_m[i], 0.0f) ||
@@ -50,11 +48,7 @@ std::optional<std::string> plantFault(const Plants& p, std::size_t i, int year,
         "height {} m, crown radius {} m, crown base {} m or dbh {} m is not a "
         "number of at least 0",
         p.height_m[i], p.crownRadius_m[i], p.crownBase_m[i], p.dbh_m[i]);
-  if (!within(p.vigor[i], 0.0f, 1.0f))
-    return fmt::format("vigor {} is not between 0 and 1", p.vigor[i]);
-  // Light is relative to the open sky on flat ground: a sunny slope gets more than 1.
-  if (!finiteAtLeast(p.light[i], 0.0f))
-    return fmt::format("light {} is not a number of at least 0", p.light[i]);
+  // Vigor (0..1) and light (0..4) are within their range whatever their bits (Fixed16).
   if (!(std::isfinite(p.growthFactor[i]) && p.growthFactor[i] > 0.0f))
     return fmt::format("growth factor {} is not a positive number", p.growthFactor[i]);
   if (p.alive[i] > 1) return fmt::format("alive flag {} is neither 0 nor 1", p.alive[i]);

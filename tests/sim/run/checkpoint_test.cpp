@@ -23,7 +23,7 @@ Checkpoint sample() {
   for (std::size_t i = 0; i < 3; ++i) {
     c.state.plants.id[i] = 5 + i;
     c.state.plants.height_m[i] = 1.5f * i;
-    c.state.plants.stressYears[i] = static_cast<std::uint16_t>(i);
+    c.state.plants.stressYears[i] = static_cast<std::uint8_t>(i);
   }
   c.state.plants.growthFactor = {1.0f, 0.9f, 0.7f};
   c.stats.push_back({.year = 17,
@@ -74,14 +74,14 @@ TEST(Checkpoint, AStateOfManyBlocksIsWrittenThroughWithItsChecksum) {
   for (std::size_t i = 0; i < n; ++i) {
     big.state.plants.id[i] = 1000 + i;
     big.state.plants.height_m[i] = 0.001f * static_cast<float>(i % 5000);
-    big.state.plants.age_years[i] = static_cast<std::int32_t>(i % 300);
+    big.state.plants.age_years[i] = static_cast<std::uint16_t>(i % 300);
   }
   const auto file = test::freshDirectory("checkpoint_big") / "checkpoint.bin";
   AtomicFile out(file);
   writeCheckpoint(out, big.scenarioHash, big.programVersion, big.state, big.stats);
   out.commit();
   const std::string bytes = test::readFile(file);
-  ASSERT_GT(bytes.size(), std::size_t{15} << 20);  // 53 bytes a plant: 15 blocks and a part
+  ASSERT_GT(bytes.size(), std::size_t{13} << 20);  // 46 bytes a plant: 13 blocks and a part
   // The stored checksum is that of the whole body, as if it had been made in memory.
   std::uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
@@ -121,7 +121,7 @@ Checkpoint fitting() {
   for (std::size_t i = 0; i < p.size(); ++i) {
     p.east_m[i] = 3.0f + 4.0f * i;
     p.north_m[i] = 5.0f;
-    p.age_years[i] = static_cast<std::int32_t>(i);
+    p.age_years[i] = static_cast<std::uint16_t>(i);
     p.vigor[i] = 0.5f;
     p.alive[i] = 1;
   }
@@ -156,9 +156,7 @@ TEST(Checkpoint, CraftedValuesAreRefused) {
             std::string::npos);
   EXPECT_NE(crafted([](Checkpoint& c) { c.state.year = 41; }).find("run's 40 years"),
             std::string::npos);
-  EXPECT_NE(crafted([](Checkpoint& c) {
-              c.state.plants.age_years[0] = 2147483647;
-            }).find("age 2147483647"),
+  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.age_years[0] = 65535; }).find("age 65535"),
             std::string::npos);
   EXPECT_NE(crafted([](Checkpoint& c) {
               c.state.plants.height_m[2] = std::nanf("");
@@ -179,8 +177,6 @@ TEST(Checkpoint, CraftedValuesAreRefused) {
   // The plants are in order of place: ids out of order are no fault.
   EXPECT_EQ(crafted([](Checkpoint& c) { std::swap(c.state.plants.id[0], c.state.plants.id[2]); }),
             "no error");
-  EXPECT_NE(crafted([](Checkpoint& c) { c.state.plants.vigor[0] = 2.0f; }).find("vigor 2"),
-            std::string::npos);
   EXPECT_NE(
       crafted([](Checkpoint& c) { c.state.plants.growthFactor[0] = 0.0f; }).find("growth factor 0"),
       std::string::npos);

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -17,33 +16,13 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
+#include "core/fixed16.hpp"
 
 namespace eco {
 
 // How a plant came: from a seed, or planted (sim/plan); planted stock on ground where a
 // condition rules its species out, with the planting's survival check, dies in its first year.
 enum class PlantOrigin : std::uint8_t { Seeded = 0, Planted = 1, PlantedRuledOut = 2 };
-
-// A number from 0 to kMost kept in 16 bits, rounded to the nearest of 65,536 steps (to
-// within 1/131,070 of kMost); a value beyond the range, or not a number, is kept as its
-// nearest end (not a number as 0). A plant's vigor and light need no finer steps than that,
-// and a landscape's 100 million plants keep 4 bytes each the less than in floats.
-template <int kMost>
-class Fixed16 {
- public:
-  Fixed16() = default;
-  Fixed16(double value)  // NOLINT(google-explicit-constructor): assigned like the float it was
-      : raw_(static_cast<std::uint16_t>(
-            std::lround((value > 0.0 ? std::min(value, double{kMost}) : 0.0) * kSteps))) {}
-  operator float() const {  // NOLINT(google-explicit-constructor)
-    return static_cast<float>(raw_ / kSteps);
-  }
-  friend bool operator==(Fixed16, Fixed16) = default;
-
- private:
-  static constexpr double kSteps = 65535.0 / kMost;
-  std::uint16_t raw_ = 0;
-};
 
 struct Plants {
   std::vector<std::uint64_t> id;      // unique in a run, in order of establishment
@@ -55,11 +34,15 @@ struct Plants {
   std::vector<std::uint16_t> age_years;  // up to kLongestLife_years (species_ecology.hpp)
   std::vector<float> height_m;
   std::vector<float> crownRadius_m;
-  std::vector<float> crownBase_m;         // height of the lowest living branches
-  std::vector<float> dbh_m;               // stem diameter at breast height, 0 below 1.3 m
-  std::vector<Fixed16<1>> vigor;          // 0..1, this year's
-  std::vector<Fixed16<4>> light;          // fraction of open-sky light at the crown top
-  std::vector<float> growthFactor;        // the individual's lasting growth rate, about 1
+  // Numbers that need no float's precision, in 16 bits (core/fixed16.hpp): a plant's
+  // lowest living branches, below its height (at most 150 m, species_ecology.hpp), in
+  // steps of 2.4 mm; this year's vigor, 0..1; the light at its crown top, as a fraction of
+  // open level ground's (a sunny slope gets more than 1); its lasting growth rate, 0.55..1.
+  std::vector<Fixed16<160>> crownBase_m;
+  std::vector<float> dbh_m;  // stem diameter at breast height, 0 below 1.3 m
+  std::vector<Fixed16<1>> vigor;
+  std::vector<Fixed16<4>> light;
+  std::vector<Fixed16<1>> growthFactor;
   std::vector<std::uint8_t> stressYears;  // a sapling's poor years in a row, up to 255
   std::vector<std::uint8_t> origin;       // PlantOrigin: seeded or planted
   std::vector<std::uint8_t> alive;

@@ -22,7 +22,7 @@ namespace {
 constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
 // 2: block checksum; 3: growth factor, stand measures; 4: 32-bit variant seeds;
 // 5: plants' origin, the plan's stats; 6: no ground, cell and variant seed columns (derived)
-// 7: ages and vigor and light in 16 bits (Fixed16), poor years in 8
+// 7: ages, crown base, vigor, light and growth factor in 16 bits (Fixed16), poor years in 8
 constexpr std::uint32_t kFormatVersion = 7;
 
 bool finiteAtLeast(float value, float least) {
@@ -43,14 +43,13 @@ std::optional<std::string> plantFault(const Plants& p, std::size_t i, int year,
     return fmt::format("age {} is not between 0 and the checkpoint's year {}", p.age_years[i],
                        year);
   if (!finiteAtLeast(p.height_m[i], 0.0f) || !finiteAtLeast(p.crownRadius_m[i], 0.0f) ||
-      !finiteAtLeast(p.crownBase_m[i], 0.0f) || !finiteAtLeast(p.dbh_m[i], 0.0f))
-    return fmt::format(
-        "height {} m, crown radius {} m, crown base {} m or dbh {} m is not a "
-        "number of at least 0",
-        p.height_m[i], p.crownRadius_m[i], p.crownBase_m[i], p.dbh_m[i]);
-  // Vigor (0..1) and light (0..4) are within their range whatever their bits (Fixed16).
-  if (!(std::isfinite(p.growthFactor[i]) && p.growthFactor[i] > 0.0f))
-    return fmt::format("growth factor {} is not a positive number", p.growthFactor[i]);
+      !finiteAtLeast(p.dbh_m[i], 0.0f))
+    return fmt::format("height {} m, crown radius {} m or dbh {} m is not a number of at least 0",
+                       p.height_m[i], p.crownRadius_m[i], p.dbh_m[i]);
+  // Crown base, vigor and light are within their range whatever their bits (Fixed16).
+  if (!(p.growthFactor[i] > 0.0f))
+    return fmt::format("growth factor {} is not a positive number",
+                       static_cast<float>(p.growthFactor[i]));
   if (p.alive[i] > 1) return fmt::format("alive flag {} is neither 0 nor 1", p.alive[i]);
   if (p.origin[i] > static_cast<std::uint8_t>(PlantOrigin::PlantedRuledOut))
     return fmt::format("origin {} is none of 0 (seeded), 1 (planted) and 2 (planted, ruled out)",

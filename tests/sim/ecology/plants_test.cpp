@@ -3,32 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 
 #include "core/random.hpp"
 
 namespace eco {
 namespace {
-
-TEST(Fixed16, KeepsItsRangeToHalfAStep) {
-  // The ends are kept exactly, and every value within half a step of 1/65,535 of the range.
-  EXPECT_EQ(static_cast<float>(Fixed16<1>(0.0)), 0.0f);
-  EXPECT_EQ(static_cast<float>(Fixed16<1>(1.0)), 1.0f);
-  EXPECT_EQ(static_cast<float>(Fixed16<4>(4.0)), 4.0f);
-  Rng rng(17);
-  for (int k = 0; k < 10000; ++k) {
-    const double v = rng.uniform();
-    EXPECT_NEAR(static_cast<float>(Fixed16<1>(v)), v, 0.5 / 65535 + 1e-7);
-    EXPECT_NEAR(static_cast<float>(Fixed16<4>(4.0 * v)), 4.0 * v, 2.0 / 65535 + 1e-6);
-  }
-  // Beyond the range its nearest end; not a number, 0.
-  EXPECT_EQ(static_cast<float>(Fixed16<1>(1.5)), 1.0f);
-  EXPECT_EQ(static_cast<float>(Fixed16<1>(-0.25)), 0.0f);
-  EXPECT_EQ(static_cast<float>(Fixed16<4>(std::nan(""))), 0.0f);
-  EXPECT_EQ(static_cast<float>(Fixed16<4>(1e30)), 4.0f);
-  EXPECT_EQ(sizeof(Fixed16<1>), 2u);
-}
 
 TEST(Plants, ResizeReachesEveryColumn) {
   Plants p;
@@ -83,7 +63,7 @@ TEST(Plants, RemoveDeadCompactsEveryColumnByTheSameFlags) {
   for (std::size_t i = 0; i < n; ++i) {
     p.id[i] = i;
     p.origin[i] = static_cast<std::uint8_t>(i % 3);
-    p.growthFactor[i] = static_cast<float>(i);
+    p.dbh_m[i] = static_cast<float>(i);
     p.alive[i] = (i * 7919) % 5 != 0 ? 1 : 0;
     if (p.alive[i]) kept.push_back(i);
   }
@@ -91,7 +71,7 @@ TEST(Plants, RemoveDeadCompactsEveryColumnByTheSameFlags) {
   ASSERT_EQ(p.id, kept);
   for (std::size_t k = 0; k < kept.size(); ++k) {
     EXPECT_EQ(p.origin[k], kept[k] % 3);
-    EXPECT_EQ(p.growthFactor[k], static_cast<float>(kept[k]));
+    EXPECT_EQ(p.dbh_m[k], static_cast<float>(kept[k]));
   }
 }
 
@@ -141,7 +121,7 @@ TEST(Plants, SettleTailAgreesWithAStableSortOfEveryRow) {
   for (std::size_t i = 0; i < keys.size(); ++i) {
     p.id[i] = i;
     p.east_m[i] = static_cast<float>(keys[i]);
-    p.growthFactor[i] = static_cast<float>(i);
+    p.dbh_m[i] = static_cast<float>(i);
   }
   // What a stable sort of every row by key gives: settled rows first on equal keys, since
   // they come first now.
@@ -153,7 +133,7 @@ TEST(Plants, SettleTailAgreesWithAStableSortOfEveryRow) {
   ASSERT_EQ(p.id, expected);
   for (std::size_t k = 0; k < p.size(); ++k) {
     EXPECT_EQ(p.east_m[k], static_cast<float>(keys[expected[k]]));
-    EXPECT_EQ(p.growthFactor[k], static_cast<float>(expected[k]));
+    EXPECT_EQ(p.dbh_m[k], static_cast<float>(expected[k]));
   }
 }
 

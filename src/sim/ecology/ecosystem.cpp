@@ -328,7 +328,7 @@ void Ecosystem::computeLight() {
   const Plants& p = state_.plants;
   findTrees();
   resizeForOverwrite(leafArea_m2_, trees_.size());
-  resizeForOverwrite(crownFoliage_kg_, trees_.size());
+  resizeForOverwrite(foliageThenDeficit_, trees_.size());
   // Each tree's crown spreads its foliage as last year's light at its top built the leaves.
   tbb::parallel_for(std::size_t{0}, trees_.size(), [&](std::size_t k) {
     const std::size_t i = trees_[k];
@@ -339,7 +339,7 @@ void Ecosystem::computeLight() {
     const CrownFoliage foliage =
         crownFoliage(life, foliageLimit_[p.species[i]], p.dbh_m[i], radius, p.light[i]);
     leafArea_m2_[k] = static_cast<float>(foliage.leafArea_m2);
-    crownFoliage_kg_[k] = static_cast<float>(foliage.foliage_kg);
+    foliageThenDeficit_[k] = static_cast<float>(foliage.foliage_kg);
   });
   light_.compute(crownsOf(p));
   lightComputed_ = true;
@@ -373,7 +373,6 @@ void Ecosystem::grow() {
     recruited_[i] = p.height_m[i] >= kRegenerationHeight_m;  // next year's tree (findTrees)
   });
   const CrownColumns crowns = crownsOf(p);  // as the light grid drew them
-  resizeForOverwrite(carbonDeficit_, trees_.size());
   tbb::parallel_for(std::size_t{0}, trees_.size(), [&](std::size_t k) {
     const std::size_t i = trees_[k];
     const EcosystemSpecies& s = species_[p.species[i]];
@@ -387,10 +386,11 @@ void Ecosystem::grow() {
     const double topLight = light_.lightAt(p.east_m[i], p.north_m[i], p.height_m[i] + 0.5);
     // Height growth answers the light the whole crown gets, relative to the open.
     const double response = std::clamp(s.ecology.lightResponse(relative), 0.0, 1.0);
-    const TreeYear year = growTree(life, p.dbh_m[i], p.height_m[i], crownFoliage_kg_[k], absorbed,
-                                   {suitability, response, p.growthFactor[i],
-                                    agingFactor(life, p.height_m[i], p.age_years[i])});
-    carbonDeficit_[k] = static_cast<float>(year.carbonDeficit());
+    const TreeYear year =
+        growTree(life, p.dbh_m[i], p.height_m[i], foliageThenDeficit_[k], absorbed,
+                 {suitability, response, p.growthFactor[i],
+                  agingFactor(life, p.height_m[i], p.age_years[i])});
+    foliageThenDeficit_[k] = static_cast<float>(year.carbonDeficit());  // the foliage read above
     // The branches that this year's light beside the crown left below the compensation point
     // die.
     const double pruned = light_.heightWithSideLight(
@@ -473,11 +473,12 @@ void Ecosystem::applyMortality() {
   // The trees of this year's light, by their carbon balance; then the rest: the sapling
   // layer and the saplings that became trees this year, which had no crown (no deficit).
   tbb::parallel_for(std::size_t{0}, trees_.size(),
-                    [&](std::size_t k) { mayDie(trees_[k], carbonDeficit_[k]); });
+                    [&](std::size_t k) { mayDie(trees_[k], foliageThenDeficit_[k]); });
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     if (p.height_m[i] < kRegenerationHeight_m || recruited_[i]) mayDie(i, 0.0);
   });
   clearCellsOfRecruits();
+  releaseTreeArrays();
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!p.alive[i]) {
       ++died_[p.species[i]];
@@ -485,6 +486,14 @@ void Ecosystem::applyMortality() {
         ++plantedDied_[p.species[i]];
     }
   p.removeDead();
+}
+
+void Ecosystem::releaseTreeArrays() {
+  light_.releaseAbsorbed();
+  Buffer<std::uint32_t>().swap(trees_);
+  Buffer<float>().swap(leafArea_m2_);
+  Buffer<float>().swap(foliageThenDeficit_);
+  Buffer<std::uint8_t>().swap(recruited_);
 }
 
 void Ecosystem::clearCellsOfRecruits() {

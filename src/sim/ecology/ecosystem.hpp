@@ -149,6 +149,10 @@ class Ecosystem {
   // The seeded young plants that share a regeneration cell with one that became a tree this
   // year die (marked, not yet removed).
   void clearCellsOfRecruits();
+  // Frees the year's arrays per tree and the light grid's crown entries once mortality has
+  // read them: establishment, where a landscape's memory peaks with a year's seedlings,
+  // does not need them (docs/performance.md, "The year's arrays while seedlings come").
+  void releaseTreeArrays();
   void produceSeeds();
   void establish();
   // The plants are kept in order of place: of their light column (5 m, rows from the south,
@@ -189,12 +193,13 @@ class Ecosystem {
   EcosystemState state_;
   std::uint64_t settledBelowId_ = 0;  // the plants below this id are in order of place
   // This year's trees, the crowns of its light (findTrees), in plant order, and per tree: its
-  // crown's leaf area and the foliage it holds, and what its production left of its upkeep
-  // (carbonDeficit()). Per tree, not per plant: most of a young landscape's 100 million
-  // plants are saplings.
+  // crown's leaf area, and the foliage it holds until it has grown, then what its production
+  // left of its upkeep (carbonDeficit()), for mortality: its growth reads the one for the
+  // last time where it writes the other. Per tree, not per plant: most of a young
+  // landscape's 100 million plants are saplings.
   Buffer<std::uint32_t> trees_;
-  Buffer<float> leafArea_m2_, crownFoliage_kg_, carbonDeficit_;
-  std::vector<std::uint8_t> recruited_;  // per plant: grew out of the sapling layer this year
+  Buffer<float> leafArea_m2_, foliageThenDeficit_;
+  Buffer<std::uint8_t> recruited_;  // per plant: grew out of the sapling layer this year
   std::vector<int> born_, died_, plantedDied_;
   std::function<bool(glm::dvec2)> isOpen_;
   std::vector<std::uint8_t> openCell_;  // per regeneration cell: its centre is kept open

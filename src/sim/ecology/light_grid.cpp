@@ -170,7 +170,14 @@ void LightGrid::compute(const CrownColumns& crowns) {
   });
 }
 
+void LightGrid::releaseAbsorbed() {
+  Buffer<std::uint32_t>().swap(crownStart_);
+  Buffer<Entry>().swap(entries_);
+}
+
 double LightGrid::absorbed(std::size_t crown) const {
+  ECO_ASSERT(crown + 1 < crownStart_.size(),
+             "crown " << crown << " of " << crownStart_.size() << " entries' starts (released?)");
   double sum = 0.0;
   for (std::size_t e = crownStart_[crown]; e < crownStart_[crown + 1]; ++e)
     sum += entries_[e].taken;

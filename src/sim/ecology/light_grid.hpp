@@ -69,7 +69,12 @@ class LightGrid {
   // The same of crowns as records (a few crowns: a scene, a test), copied into columns.
   void compute(const std::vector<CrownShape>& crowns);
 
-  // Light absorbed by crown k of the last compute(), in m2 of open-sky light.
+  // Frees what only absorbed() reads, the crowns' entries, until the next compute(); the
+  // light through the canopy is kept. A landscape's entries take half a gigabyte that the
+  // rest of its year, establishment at the peak of its memory, does not need.
+  void releaseAbsorbed();
+  // Light absorbed by crown k of the last compute(), in m2 of open-sky light (not after
+  // releaseAbsorbed()).
   // The sum of its entries' light, worked out when asked: each crown is asked once a year,
   // and an array of the sums took 8 bytes a plant.
   double absorbed(std::size_t crown) const;

@@ -1,5 +1,9 @@
 #include "core/memory.hpp"
 
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cstddef>
 #include <fstream>
 #include <sstream>
 
@@ -16,6 +20,15 @@ std::optional<std::uint64_t> availableMemoryBytes() {
     if (fields >> key >> kilobytes && key == "MemAvailable:") return kilobytes * 1024;
   }
   return std::nullopt;
+}
+
+void releasePages(void* from, void* to) {
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(from) + page - 1) / page * page;
+  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(to) / page * page;
+  if (end <= first || end - first < (std::uintptr_t{1} << 20)) return;
+  // Advice the kernel may not refuse for private memory; were it to, the pages stay.
+  madvise(reinterpret_cast<void*>(first), end - first, MADV_DONTNEED);
 }
 
 std::string formatBytes(std::uint64_t bytes) {

@@ -5,6 +5,8 @@
 
 #include <tbb/task_group.h>
 
+#include "core/memory.hpp"
+
 namespace eco {
 
 void Plants::removeDead() {
@@ -22,10 +24,12 @@ void Plants::removeDead() {
       for (std::size_t i = 0; i < column.size(); ++i)
         if (alive[i]) column[k++] = column[i];
       column.resize(kept);
+      releaseUnusedCapacity(column);
     });
   });
   columns.wait();
   alive.assign(kept, 1);
+  releaseUnusedCapacity(alive);
 }
 
 void Plants::mergeTail(std::size_t first, const std::vector<std::uint32_t>& tail,

@@ -232,6 +232,22 @@ TEST(Ecology, BadValuesAreReportedAtTheirLine) {
             std::string::npos);
 }
 
+TEST(Ecology, AgesAndPoorYearsAreRefusedBeyondWhatAPlantKeeps) {
+  // A plant keeps its age in 16 bits and its poor years in 8 (plants.hpp).
+  std::string old = kLife;
+  old.replace(old.find("max_age_years = 100"), 19, "max_age_years = 10001");
+  EXPECT_NE(errorOf(kHead + old).find("ecology.life.max_age_years: value 10001 is outside"),
+            std::string::npos);
+  old.replace(old.find("max_age_years = 10001"), 21, "max_age_years = 10000");
+  EXPECT_EQ(ecologyOf(kHead + old).life.maxAge_years, kLongestLife_years);
+  EXPECT_NE(errorOf(std::string(kHead) + kLife + "sapling_stress_years = 256\n")
+                .find("ecology.life.sapling_stress_years: value 256 is outside [1, 255]"),
+            std::string::npos);
+  EXPECT_EQ(ecologyOf(std::string(kHead) + kLife + "sapling_stress_years = 255\n")
+                .life.saplingStressYears,
+            kMostSaplingStressYears);
+}
+
 TEST(Ecology, ShippedSpeciesCarryTheirEllenbergValues) {
   auto shipped = [](const char* name) {
     return readEcology(std::filesystem::path(ECOFOREST_DATA_DIR) / "species" /

@@ -150,8 +150,8 @@ class Ecosystem {
   // year die (marked, not yet removed).
   void clearCellsOfRecruits();
   // Frees the year's arrays per tree and the light grid's crown entries once mortality has
-  // read them: establishment, where a landscape's memory peaks with a year's seedlings,
-  // does not need them (docs/performance.md, "The year's arrays while seedlings come").
+  // read them: establishment and settling, where the year's seedlings join the plants, do
+  // not need them (docs/performance.md, "the year's arrays while seedlings come").
   void releaseTreeArrays();
   void produceSeeds();
   void establish();

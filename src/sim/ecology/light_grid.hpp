@@ -71,7 +71,7 @@ class LightGrid {
 
   // Frees what only absorbed() reads, the crowns' entries, until the next compute(); the
   // light through the canopy is kept. A landscape's entries take half a gigabyte that the
-  // rest of its year, establishment at the peak of its memory, does not need.
+  // rest of its year, once its trees have grown, does not need.
   void releaseAbsorbed();
   // Light absorbed by crown k of the last compute(), in m2 of open-sky light (not after
   // releaseAbsorbed()).

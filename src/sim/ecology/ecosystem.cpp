@@ -501,8 +501,7 @@ void Ecosystem::clearCellsOfRecruits() {
   // The regeneration cells where a plant became a tree this year, as one flag a cell: a
   // lookup per young plant, where a sorted list of cells cost a binary search.
   if (std::find(recruited_.begin(), recruited_.end(), 1) == recruited_.end()) return;
-  std::vector<std::uint8_t>& cleared = clearedCells_;
-  cleared.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
+  std::vector<std::uint8_t> cleared(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
   for (std::size_t i = 0; i < p.size(); ++i)
     if (recruited_[i]) cleared[regenerationCellOf(p.east_m[i], p.north_m[i])] = 1;
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
@@ -516,8 +515,7 @@ void Ecosystem::clearCellsOfRecruits() {
 void Ecosystem::establish() {
   const Plants& p = state_.plants;
   const Grid& g = terrain_.grid;
-  std::vector<YoungPlants>& young = youngPlants_;
-  young.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, YoungPlants{});
+  std::vector<YoungPlants> young(static_cast<std::size_t>(regenerationX_) * regenerationY_);
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.height_m[i] >= kRegenerationHeight_m) continue;
     YoungPlants& cell = young[regenerationCellOf(p.east_m[i], p.north_m[i])];

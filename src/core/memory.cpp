@@ -6,20 +6,34 @@
 #include <cstddef>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "core/error.hpp"
 
 namespace eco {
 
-std::optional<std::uint64_t> availableMemoryBytes() {
-  std::ifstream meminfo("/proc/meminfo");
-  for (std::string line; std::getline(meminfo, line);) {
+namespace {
+
+// The value of `key` (as "MemAvailable:") in a /proc file of "key: value kB" lines, in bytes.
+std::optional<std::uint64_t> procBytes(const char* file, std::string_view key) {
+  std::ifstream lines(file);
+  for (std::string line; std::getline(lines, line);) {
     std::istringstream fields(line);
-    std::string key;
+    std::string name;
     std::uint64_t kilobytes = 0;
-    if (fields >> key >> kilobytes && key == "MemAvailable:") return kilobytes * 1024;
+    if (fields >> name >> kilobytes && name == key) return kilobytes * 1024;
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> availableMemoryBytes() {
+  return procBytes("/proc/meminfo", "MemAvailable:");
+}
+
+std::optional<std::uint64_t> residentMemoryBytes() {
+  return procBytes("/proc/self/status", "VmRSS:");
 }
 
 void releasePages(void* from, void* to) {

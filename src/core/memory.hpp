@@ -13,6 +13,8 @@ namespace eco {
 
 // MemAvailable of /proc/meminfo, in bytes; nothing where the system does not say.
 std::optional<std::uint64_t> availableMemoryBytes();
+// This process's resident memory (VmRSS of /proc/self/status), in bytes; likewise.
+std::optional<std::uint64_t> residentMemoryBytes();
 
 // EnvironmentError unless `bytes` fit in the available memory (or `ignore`): the message
 // names `what` needs it, both sizes, and `option` to go ahead anyway.

@@ -157,11 +157,11 @@ class LightGrid {
   // Per column: its crowns' layers, tallest first (CSR).
   std::vector<std::size_t> columnStart_;
   Buffer<Layer> layers_;
-  // compute()'s working arrays, kept from one year to the next: at a landscape's scale they
-  // hold gigabytes, which, allocated afresh each year, the kernel zeroed page by page and
-  // the vectors zeroed again (docs/performance.md, "Working arrays kept from year to year").
-  // Each is written before it is read. Per crown: where its entries start (32 bits: a landscape
-  // has tens of millions of crowns). Per entry, in crown order: the entry.
+  // compute()'s working arrays, kept from one call to the next unless releaseAbsorbed() freed
+  // them (the ecosystem does, each year once its trees have grown): allocated afresh, the
+  // vectors zeroed them again after the kernel (docs/performance.md, "Working arrays kept from
+  // year to year"). Each is written before it is read. Per crown: where its entries start (32
+  // bits: a landscape has tens of millions of crowns). Per entry, in crown order: the entry.
   Buffer<std::uint32_t> crownStart_;
   Buffer<Entry> entries_;
 };

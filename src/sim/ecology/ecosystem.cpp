@@ -479,11 +479,23 @@ void Ecosystem::applyMortality() {
   });
   clearCellsOfRecruits();
   releaseTreeArrays();
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (!p.alive[i]) {
-      ++died_[p.species[i]];
-      if (p.origin[i] != static_cast<std::uint8_t>(PlantOrigin::Seeded))
-        ++plantedDied_[p.species[i]];
+  // The dead counted block by block side by side (whole numbers: in any order the same).
+  const std::size_t species = species_.size();
+  std::vector<int> blockDied(plantBlocks(p.size()) * 2 * species, 0);
+  forEachPlantBlock(p.size(), [&](std::size_t block, std::size_t first, std::size_t end) {
+    int* died = blockDied.data() + block * 2 * species;
+    int* plantedDied = died + species;
+    for (std::size_t i = first; i < end; ++i)
+      if (!p.alive[i]) {
+        ++died[p.species[i]];
+        if (p.origin[i] != static_cast<std::uint8_t>(PlantOrigin::Seeded))
+          ++plantedDied[p.species[i]];
+      }
+  });
+  for (std::size_t block = 0; block < plantBlocks(p.size()); ++block)
+    for (std::size_t s = 0; s < species; ++s) {
+      died_[s] += blockDied[block * 2 * species + s];
+      plantedDied_[s] += blockDied[block * 2 * species + species + s];
     }
   p.removeDead();
 }

@@ -27,10 +27,12 @@ constexpr double kHalleyTolerance = 1e-4;
 // SILVA's crown diameter; fitted to trees of measurable diameter, so below 1 cm (and a
 // sapling's breast height) it is held at its value there.
 double silvaCrownDiameter(const LifeHistory& life, double dbh_m, double height_m) {
-  const double dbh_cm = std::max(1.0, 100.0 * dbh_m);
-  const double h = std::max(kBreastHeight_m, height_m);
+  const auto dbh_cm = static_cast<float>(std::max(1.0, 100.0 * dbh_m));
+  const auto h = static_cast<float>(std::max(kBreastHeight_m, height_m));
   const auto& a = life.crownDiameterSilva;
-  return std::exp(a[0] + a[1] * std::log(dbh_cm) + a[2] * h + a[3] * std::log(h / dbh_cm));
+  // In single precision (kGrowthPrecision): every tree, every year.
+  return std::exp(
+      static_cast<float>(a[0] + a[1] * std::log(dbh_cm) + a[2] * h + a[3] * std::log(h / dbh_cm)));
 }
 
 }  // namespace
@@ -87,7 +89,8 @@ CrownFoliage crownFoliage(const LifeHistory& life, const FoliageLimit& limit, do
   // of L leaves an error near 1e-12, far below a float's resolution.
   double lai = mass / sunMass;
   for (int i = 0; i < 50; ++i) {
-    const double absorbedShare = -std::expm1(-kLeafExtinction * lai);
+    // In single precision (kGrowthPrecision): every tree, every year.
+    const double absorbedShare = 1.0 - std::exp(static_cast<float>(-kLeafExtinction * lai));
     const double transmitted = 1.0 - absorbedShare;
     const double excess = massTo(lai, absorbedShare) - mass;
     const double slope = sunMass * leafMassShare(life, top * transmitted);
@@ -110,10 +113,13 @@ struct WoodyAt {
 
 WoodyAt woodyAt(const LifeHistory& life, double d_cm) {
   if (d_cm <= 0.0) return {};
-  const double lnD = std::log(d_cm);
-  const double stem = life.stem.a * std::exp(life.stem.b * lnD);
-  const double branches = life.branches.a * std::exp(life.branches.b * lnD);
-  const double roots = life.coarseRoots.a * std::exp(life.coarseRoots.b * lnD);
+  // The powers in single precision (kGrowthPrecision): Halley's steps need the sums and
+  // slopes to far less than their 1e-4 (each tree, each year, two or three times).
+  const float lnD = std::log(static_cast<float>(d_cm));
+  auto power = [lnD](const Allometry& a) { return a.a * std::exp(static_cast<float>(a.b) * lnD); };
+  const double stem = power(life.stem);
+  const double branches = power(life.branches);
+  const double roots = power(life.coarseRoots);
   auto curvature = [](double b, double term) { return b * (b - 1.0) * term; };
   return {stem + branches + roots,
           (life.stem.b * stem + life.branches.b * branches + life.coarseRoots.b * roots) / d_cm,
@@ -193,7 +199,8 @@ double agingFactor(const LifeHistory& life, double height_m, int age_years) {
   const double height = std::clamp(height_m / life.height_m.max(), 0.0, kBelowOne);
   const double age = std::clamp(static_cast<double>(age_years) / life.maxAge_years, 0.0, kBelowOne);
   const double x = 1.0 - 2.0 / (1.0 / (1.0 - height) + 1.0 / (1.0 - age));
-  return 1.0 / (1.0 + std::pow(x / life.aging.halfAt, life.aging.exponent));
+  return 1.0 / (1.0 + std::pow(static_cast<float>(x / life.aging.halfAt),
+                               static_cast<float>(life.aging.exponent)));
 }
 
 namespace {

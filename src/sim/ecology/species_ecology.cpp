@@ -160,15 +160,17 @@ Polyline& ToleranceCurves::of(Condition c) {
 }
 
 double Allometry::at(double dbh_cm) const {
-  return a * std::pow(dbh_cm, b);
+  // In single precision (kGrowthPrecision): every tree, every year.
+  return a * std::pow(static_cast<float>(dbh_cm), static_cast<float>(b));
 }
 
 GrowthCurve::GrowthCurve(double max, double rate_per_year, double shape)
     : max_(max),
       rate_(rate_per_year),
       shape_(shape),
-      inverseShape_(1.0 / shape),
-      yearDecay_(std::exp(-rate_per_year)) {}
+      inverseShape_(static_cast<float>(1.0 / shape)),
+      yearDecay_(static_cast<float>(std::exp(-rate_per_year))),
+      yearGain_(static_cast<float>(-std::expm1(-rate_per_year))) {}
 
 double GrowthCurve::at(double years) const {
   if (years <= 0.0) return 0.0;
@@ -177,8 +179,11 @@ double GrowthCurve::at(double years) const {
 
 double GrowthCurve::yearAfter(double value) const {
   if (value >= max_) return max_;
-  const double remaining = 1.0 - std::pow(std::max(value, 0.0) / max_, inverseShape_);
-  return max_ * std::pow(1.0 - remaining * yearDecay_, shape_);
+  // In single precision (kGrowthPrecision): every plant, every year. 1 - (1 - progress)
+  // decay as (1 - decay) + decay progress, which a young plant's small progress does not
+  // lose to cancellation.
+  const float progress = std::pow(static_cast<float>(std::max(value, 0.0) / max_), inverseShape_);
+  return max_ * std::pow(yearGain_ + yearDecay_ * progress, static_cast<float>(shape_));
 }
 
 double lightCompensation(int light) {

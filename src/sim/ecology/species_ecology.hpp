@@ -43,6 +43,12 @@ struct ToleranceCurves {
   Polyline& of(Condition c);
 };
 
+// The yearly step's powers, exponentials and logarithms (the height curve's year on, the
+// allometries, the crown's width and leaves, the aging) are worked out in single precision,
+// as the plants keep their numbers, at half the cost of double's: their results hold to this
+// share of their value.
+inline constexpr double kGrowthPrecision = 1e-6;
+
 // Chapman-Richards growth: value(t) = max (1 - exp(-rate t))^shape.
 class GrowthCurve {
  public:
@@ -58,7 +64,7 @@ class GrowthCurve {
 
  private:
   double max_, rate_, shape_;
-  double inverseShape_, yearDecay_;  // 1 / shape and exp(-rate), worked out once
+  float inverseShape_, yearDecay_, yearGain_;  // 1 / shape, exp(-rate), 1 - exp(-rate): once
 };
 
 enum class DispersalVector { Gravity, Animal, Wind };

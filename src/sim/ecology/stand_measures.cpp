@@ -22,6 +22,13 @@ void StandTally::add(double dbh_m, double height_m, double formFactor) {
   volume_m3 += formFactor * basalAreaOf(dbh_m) * height_m;
 }
 
+void StandTally::add(const StandTally& other) {
+  stems += other.stems;
+  basalArea_m2 += other.basalArea_m2;
+  diameterSquares_m2 += other.diameterSquares_m2;
+  volume_m3 += other.volume_m3;
+}
+
 StandMeasures StandTally::perHectare(double area_ha) const {
   StandMeasures m;
   if (area_ha <= 0.0 || stems <= 0.0) return m;
@@ -37,7 +44,7 @@ std::vector<StandMeasures> measureStands(const Plants& p,
                                          const std::vector<EcosystemSpecies>& species,
                                          double area_ha) {
   const std::size_t all = species.size();
-  std::vector<StandMeasures> measures(all + 1);
+  const std::size_t groups = all + 1;  // each species, and all of them last
   // The dominant height's trees are looked for only in the height classes that hold them:
   // a landscape's 100 million plants are mostly seedlings, and a list of every height cost
   // gigabytes a year.
@@ -46,43 +53,79 @@ std::vector<StandMeasures> measureStands(const Plants& p,
   auto classOf = [](float height_m) {
     return std::clamp(static_cast<int>(height_m / kHeightClass_m), 0, kHeightClasses - 1);
   };
-  // Each species, and all of them (the last group), tallied in one pass in plant order: a
-  // group's sums take its plants in the same order whatever the others.
-  std::vector<StandTally> tallies(all + 1);
-  std::vector<std::array<std::size_t, kHeightClasses>> perClass(all + 1);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const std::size_t s = p.species[i];
-    const int c = classOf(p.height_m[i]);
-    const double formFactor = species[s].ecology.life.formFactor;
-    for (const std::size_t group : {s, all}) {
-      ++perClass[group][c];
-      tallies[group].add(p.dbh_m[i], p.height_m[i], formFactor);
+  constexpr std::size_t kBlock = 65536;
+  const std::size_t blocks = (p.size() + kBlock - 1) / kBlock;
+  auto forEachBlock = [&](auto&& f) {
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+      f(b, b * kBlock, std::min(p.size(), (b + 1) * kBlock));
+    });
+  };
+  // Each block's sums per group, in plant order; then the blocks' in block order.
+  struct Part {
+    StandTally tally;
+    std::size_t plants = 0;
+    double heightSum_m = 0.0;
+    std::array<std::size_t, kHeightClasses> perClass{};
+  };
+  std::vector<std::vector<Part>> parts(blocks, std::vector<Part>(groups));
+  std::vector<double> formFactor;
+  for (const EcosystemSpecies& s : species) formFactor.push_back(s.ecology.life.formFactor);
+  forEachBlock([&](std::size_t b, std::size_t first, std::size_t end) {
+    for (std::size_t i = first; i < end; ++i) {
+      const std::size_t s = p.species[i];
+      const int c = classOf(p.height_m[i]);
+      for (const std::size_t group : {s, all}) {
+        Part& part = parts[b][group];
+        ++part.plants;
+        part.heightSum_m += p.height_m[i];
+        ++part.perClass[c];
+        part.tally.add(p.dbh_m[i], p.height_m[i], formFactor[s]);
+      }
     }
+  });
+  std::vector<StandMeasures> measures(groups);
+  std::vector<std::array<std::size_t, kHeightClasses>> perClass(groups);
+  for (std::size_t group = 0; group < groups; ++group) {
+    StandTally tally;
+    double heightSum_m = 0.0;
+    std::size_t plants = 0;
+    for (std::size_t b = 0; b < blocks; ++b) {
+      const Part& part = parts[b][group];
+      tally.add(part.tally);
+      heightSum_m += part.heightSum_m;
+      plants += part.plants;
+      for (int c = 0; c < kHeightClasses; ++c) perClass[group][c] += part.perClass[c];
+    }
+    measures[group] = tally.perHectare(area_ha);
+    measures[group].plants = plants;
+    measures[group].meanHeight_m = plants > 0 ? heightSum_m / static_cast<double>(plants) : 0.0;
   }
   // The 100 tallest per hectare (all of them on a smaller stand): the heights of each group's
-  // plants in the classes that hold them, gathered in one more pass.
-  std::vector<std::size_t> tallest(all + 1, 0);
-  std::vector<int> lowest(all + 1, kHeightClasses);
-  for (std::size_t group = 0; group <= all; ++group) {
-    measures[group] = tallies[group].perHectare(area_ha);
-    const std::size_t plants =
-        std::accumulate(perClass[group].begin(), perClass[group].end(), std::size_t{0});
-    tallest[group] =
-        std::min(plants, static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
+  // plants in the classes that hold them, gathered block by block in plant order.
+  std::vector<std::size_t> tallest(groups, 0);
+  std::vector<int> lowest(groups, kHeightClasses);
+  for (std::size_t group = 0; group < groups; ++group) {
+    tallest[group] = std::min(measures[group].plants,
+                              static_cast<std::size_t>(std::max(1.0, std::round(100.0 * area_ha))));
     if (tallest[group] == 0 || area_ha <= 0.0) continue;
     lowest[group] = kHeightClasses - 1;
     for (std::size_t above = perClass[group][lowest[group]]; above < tallest[group];)
       above += perClass[group][--lowest[group]];
   }
-  std::vector<std::vector<float>> heights(all + 1);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const int c = classOf(p.height_m[i]);
-    for (const std::size_t group : {static_cast<std::size_t>(p.species[i]), all})
-      if (c >= lowest[group]) heights[group].push_back(p.height_m[i]);
-  }
-  tbb::parallel_for(std::size_t{0}, all + 1, [&](std::size_t group) {
-    std::vector<float>& h = heights[group];
+  std::vector<std::vector<std::vector<float>>> blockHeights(
+      blocks, std::vector<std::vector<float>>(groups));
+  forEachBlock([&](std::size_t b, std::size_t first, std::size_t end) {
+    for (std::size_t i = first; i < end; ++i) {
+      const int c = classOf(p.height_m[i]);
+      for (const std::size_t group : {static_cast<std::size_t>(p.species[i]), all})
+        if (c >= lowest[group]) blockHeights[b][group].push_back(p.height_m[i]);
+    }
+  });
+  tbb::parallel_for(std::size_t{0}, groups, [&](std::size_t group) {
     if (lowest[group] == kHeightClasses) return;
+    std::vector<float> h;
+    for (std::size_t b = 0; b < blocks; ++b)
+      h.insert(h.end(), blockHeights[b][group].begin(), blockHeights[b][group].end());
     const std::size_t n = tallest[group];
     std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(n - 1), h.end(),
                      std::greater<>());

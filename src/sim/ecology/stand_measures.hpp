@@ -20,6 +20,8 @@ struct StandMeasures {
   double sdi = 0.0;                // Reineke: stems x (qmd / 25.4 cm)^1.605
   double volume_m3PerHa = 0.0;     // their stem volume, form factor x basal area x height
   double dominantHeight_m = 0.0;   // mean height of the 100 tallest trees per hectare
+  std::size_t plants = 0;          // every plant, seedlings too
+  double meanHeight_m = 0.0;       // of every plant
 };
 
 // The sums the measures are made of: each tree of at least the calipering limit adds its
@@ -27,6 +29,7 @@ struct StandMeasures {
 struct StandTally {
   double stems = 0.0, basalArea_m2 = 0.0, diameterSquares_m2 = 0.0, volume_m3 = 0.0;
   void add(double dbh_m, double height_m, double formFactor);  // thinner trees add nothing
+  void add(const StandTally& other);                           // another part of the stand
   // The measures on `area_ha` (all but the dominant height).
   StandMeasures perHectare(double area_ha) const;
 };
@@ -35,7 +38,8 @@ struct StandTally {
 double basalAreaOf(double dbh_m);
 
 // The measures on `area_ha` of each species' plants, in the species' order, and last of all
-// the plants together: one pass over the plants.
+// the plants together: one pass over the plants in blocks side by side, each block's sums
+// in plant order and the blocks' in order, so the figures do not depend on the thread count.
 std::vector<StandMeasures> measureStands(const Plants& plants,
                                          const std::vector<EcosystemSpecies>& species,
                                          double area_ha);

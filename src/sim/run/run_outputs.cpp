@@ -14,17 +14,21 @@
 namespace eco {
 namespace {
 
-// Calls f(cell) for every cell whose centre lies inside the crown of plant i.
+// Calls f(cell) for every cell whose centre lies inside the crown of plant i. Every plant,
+// every year, and most are seedlings whose crown holds no cell's centre: the columns are
+// looked at first, with the cells' widths' inverses, before any row.
 template <typename F>
 void forCellsUnderCrown(const Grid& g, const Plants& p, std::size_t i, F&& f) {
   const double r = p.crownRadius_m[i];
   const double east = p.east_m[i], north = p.north_m[i];
-  const int x0 = std::max(0, static_cast<int>(std::ceil((east - r) / g.dx_m)));
-  const int x1 = std::min(g.width - 1, static_cast<int>(std::floor((east + r) / g.dx_m)));
+  const double perDx = 1.0 / g.dx_m, perDy = 1.0 / g.dy_m;
+  const int x0 = std::max(0, static_cast<int>(std::ceil((east - r) * perDx)));
+  const int x1 = std::min(g.width - 1, static_cast<int>(std::floor((east + r) * perDx)));
+  if (x0 > x1) return;
   // Rows count from the north edge: north = (height - 1 - y) dy.
-  const int y0 = std::max(0, static_cast<int>(std::ceil((g.height - 1) - (north + r) / g.dy_m)));
+  const int y0 = std::max(0, static_cast<int>(std::ceil((g.height - 1) - (north + r) * perDy)));
   const int y1 =
-      std::min(g.height - 1, static_cast<int>(std::floor((g.height - 1) - (north - r) / g.dy_m)));
+      std::min(g.height - 1, static_cast<int>(std::floor((g.height - 1) - (north - r) * perDy)));
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
       const double de = g.eastOf(x) - east, dn = g.northOf(y) - north;
@@ -40,24 +44,16 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem, const PlanYear& pl
   const auto speciesCount = static_cast<int>(ecosystem.species().size());
   const double area_ha = g.area_m2() / 1e4;
   std::vector<StatsRow> rows(static_cast<std::size_t>(speciesCount) + 1);
-  std::vector<double> heightSum(rows.size(), 0.0);
   std::vector<std::vector<std::uint8_t>> covered(static_cast<std::size_t>(speciesCount));
   std::vector<StandMeasures> measures;
   double densest_m2PerHa = 0.0;
   for (std::vector<std::uint8_t>& cells : covered) cells.assign(g.cellCount(), 0);
-  // The counts and heights, the crowns, the forester's measures and the densest hectare are
-  // independent: they run side by side. The sums go in plant order, so the figures do not
-  // depend on the thread count; the crowns are stamped side by side (a cell that several
-  // crowns cover is set by each). Only the species' crowns are stamped: the stand covers
-  // the cells some species covers.
+  // The crowns, the forester's measures (with the counts and heights) and the densest
+  // hectare are independent: they run side by side. The sums do not depend on the thread
+  // count (measureStands, densestBlockBasalArea); the crowns are stamped side by side (a cell
+  // that several crowns cover is set by each). Only the species' crowns are stamped: the
+  // stand covers the cells some species covers.
   tbb::parallel_invoke(
-      [&] {
-        for (std::size_t i = 0; i < p.size(); ++i)
-          for (const std::size_t r : {static_cast<std::size_t>(p.species[i]), rows.size() - 1}) {
-            ++rows[r].alive;
-            heightSum[r] += p.height_m[i];
-          }
-      },
       [&] {
         tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
           std::vector<std::uint8_t>& cells = covered[p.species[i]];
@@ -91,8 +87,9 @@ std::vector<StatsRow> statsOfYear(const Ecosystem& ecosystem, const PlanYear& pl
         row.removed += plan.removed[s];
         row.removedVolume_m3PerHa += plan.removedVolume_m3[s] / area_ha;
       }
-    row.meanHeight_m = row.alive ? heightSum[r] / row.alive : 0.0;
     const StandMeasures& m = measures[r];
+    row.alive = static_cast<std::int64_t>(m.plants);
+    row.meanHeight_m = m.meanHeight_m;
     row.stemsPerHa = m.stemsPerHa;
     row.basalArea_m2PerHa = m.basalArea_m2PerHa;
     row.qmd_cm = m.qmd_cm;

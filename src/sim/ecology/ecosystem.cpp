@@ -47,23 +47,6 @@ Field terrainLightOf(const ConditionFields& fields) {
   return light;
 }
 
-// Work whose results are combined in plant order (the year's trees, its fruiting trees) is done
-// side by side in blocks of plants, each block's part in plant order, and the blocks' parts
-// taken in order.
-constexpr std::size_t kPlantBlock = 65536;
-
-std::size_t plantBlocks(std::size_t plants) {
-  return (plants + kPlantBlock - 1) / kPlantBlock;
-}
-
-// Calls f(block, first, end) for each block of `plants`, side by side.
-template <typename F>
-void forEachPlantBlock(std::size_t plants, F&& f) {
-  tbb::parallel_for(std::size_t{0}, plantBlocks(plants), [&](std::size_t block) {
-    f(block, block * kPlantBlock, std::min(plants, (block + 1) * kPlantBlock));
-  });
-}
-
 std::vector<const LifeHistory*> livesOf(const std::vector<EcosystemSpecies>& species) {
   std::vector<const LifeHistory*> lives;
   for (const EcosystemSpecies& s : species) lives.push_back(&s.ecology.life);

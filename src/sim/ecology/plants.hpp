@@ -93,6 +93,23 @@ struct Plants {
   }
 };
 
+// Work whose results are combined in plant order (the year's trees, its fruiting trees, the
+// stand's sums) is done side by side in blocks of plants, each block's part in plant order,
+// and the blocks' parts taken in order: the results do not depend on the thread count.
+inline constexpr std::size_t kPlantBlock = 65536;
+
+inline std::size_t plantBlocks(std::size_t plants) {
+  return (plants + kPlantBlock - 1) / kPlantBlock;
+}
+
+// Calls f(block, first, end) for each block of `plants`, side by side.
+template <typename F>
+void forEachPlantBlock(std::size_t plants, F&& f) {
+  tbb::parallel_for(std::size_t{0}, plantBlocks(plants), [&](std::size_t block) {
+    f(block, block * kPlantBlock, std::min(plants, (block + 1) * kPlantBlock));
+  });
+}
+
 template <typename Key>
 void Plants::settleTail(std::size_t first, Key&& key) {
   const std::size_t n = size();

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 
 #include <tbb/parallel_for.h>
 
@@ -53,13 +52,7 @@ std::vector<StandMeasures> measureStands(const Plants& p,
   auto classOf = [](float height_m) {
     return std::clamp(static_cast<int>(height_m / kHeightClass_m), 0, kHeightClasses - 1);
   };
-  constexpr std::size_t kBlock = 65536;
-  const std::size_t blocks = (p.size() + kBlock - 1) / kBlock;
-  auto forEachBlock = [&](auto&& f) {
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-      f(b, b * kBlock, std::min(p.size(), (b + 1) * kBlock));
-    });
-  };
+  const std::size_t blocks = plantBlocks(p.size());
   // Each block's sums per group, in plant order; then the blocks' in block order.
   struct Part {
     StandTally tally;
@@ -70,7 +63,7 @@ std::vector<StandMeasures> measureStands(const Plants& p,
   std::vector<std::vector<Part>> parts(blocks, std::vector<Part>(groups));
   std::vector<double> formFactor;
   for (const EcosystemSpecies& s : species) formFactor.push_back(s.ecology.life.formFactor);
-  forEachBlock([&](std::size_t b, std::size_t first, std::size_t end) {
+  forEachPlantBlock(p.size(), [&](std::size_t b, std::size_t first, std::size_t end) {
     for (std::size_t i = first; i < end; ++i) {
       const std::size_t s = p.species[i];
       const int c = classOf(p.height_m[i]);
@@ -114,7 +107,7 @@ std::vector<StandMeasures> measureStands(const Plants& p,
   }
   std::vector<std::vector<std::vector<float>>> blockHeights(
       blocks, std::vector<std::vector<float>>(groups));
-  forEachBlock([&](std::size_t b, std::size_t first, std::size_t end) {
+  forEachPlantBlock(p.size(), [&](std::size_t b, std::size_t first, std::size_t end) {
     for (std::size_t i = first; i < end; ++i) {
       const int c = classOf(p.height_m[i]);
       for (const std::size_t group : {static_cast<std::size_t>(p.species[i]), all})

@@ -50,6 +50,10 @@ TEST(StandMeasures, CountsWhatAForesterCalipers) {
   EXPECT_NEAR(measures[0].basalArea_m2PerHa + measures[1].basalArea_m2PerHa, all.basalArea_m2PerHa,
               1e-12);
   EXPECT_NEAR(measures[1].dominantHeight_m, 25.0, 1e-6);  // its only tree
+  // Every plant counts in the plants and their mean height, the thin one too.
+  EXPECT_EQ(all.plants, 4u);
+  EXPECT_NEAR(all.meanHeight_m, (30.0 + 32.0 + 25.0 + 6.0) / 4.0, 1e-6);
+  EXPECT_EQ(measures[0].plants, 3u);
 }
 
 TEST(StandMeasures, DominantHeightIsTheMeanOfTheHundredTallestPerHectare) {
@@ -60,24 +64,35 @@ TEST(StandMeasures, DominantHeightIsTheMeanOfTheHundredTallestPerHectare) {
   EXPECT_NEAR(measureStands(p, species, 1.0).back().dominantHeight_m, 34.5, 1e-9);
 }
 
-TEST(StandMeasures, DominantHeightAgreesWithASortOfEveryHeight) {
-  // The tallest are looked for in the top height classes only; whatever stand size puts the
-  // hundredth per hectare, a sort of every height gives the same mean.
-  const std::vector<EcosystemSpecies> species = {test::shippedSpecies("beech"),
-                                                 test::shippedSpecies("pine")};
+// Mostly seedlings, a canopy around 30 m with many in one height class, and a few giants
+// taller than the last class's lower edge; every third plant a pine. More plants than three
+// blocks (kPlantBlock), whose sums are combined in order.
+Plants mixedStand() {
   Plants p;
   Rng rng(7);
-  for (int i = 0; i < 5000; ++i) {
-    // Mostly seedlings, a canopy around 30 m with many in one class, and a few giants taller
-    // than the last class's lower edge.
+  for (std::size_t i = 0; i < 3 * kPlantBlock + 1234; ++i) {
     const double pick = rng.uniform();
     const double height = pick < 0.7    ? 0.1 + 1.2 * rng.uniform()
                           : pick < 0.8  ? 30.0 + 0.2 * rng.uniform()
                           : pick < 0.99 ? 1.3 + 40.0 * rng.uniform()
                                         : 120.0 + 30.0 * rng.uniform();
-    addTree(p, i % 3 == 0 ? 1 : 0, 0.0f, 0.0f, height >= 1.3 ? 0.2f : 0.0f,
-            static_cast<float>(height));
+    const float dbh = height >= 1.3 ? static_cast<float>(0.02 + 0.5 * rng.uniform()) : 0.0f;
+    addTree(p, i % 3 == 0 ? 1 : 0, 0.0f, 0.0f, dbh, static_cast<float>(height));
   }
+  return p;
+}
+
+const std::vector<EcosystemSpecies>& beechAndPine() {
+  static const std::vector<EcosystemSpecies> species = {test::shippedSpecies("beech"),
+                                                        test::shippedSpecies("pine")};
+  return species;
+}
+
+TEST(StandMeasures, DominantHeightAgreesWithASortOfEveryHeight) {
+  // The tallest are looked for in the top height classes only; whatever stand size puts the
+  // hundredth per hectare, a sort of every height gives the same mean.
+  const std::vector<EcosystemSpecies>& species = beechAndPine();
+  const Plants p = mixedStand();
   for (const double area_ha : {0.01, 0.5, 2.0, 7.3, 30.0, 60.0}) {
     const std::vector<StandMeasures> measures = measureStands(p, species, area_ha);
     for (std::size_t group = 0; group < measures.size(); ++group) {
@@ -93,6 +108,33 @@ TEST(StandMeasures, DominantHeightAgreesWithASortOfEveryHeight) {
           << area_ha << " ha, group " << group;
     }
   }
+}
+
+TEST(StandMeasures, TheBlocksSumsAreThoseOfOnePassInPlantOrder) {
+  const std::vector<EcosystemSpecies>& species = beechAndPine();
+  const Plants p = mixedStand();
+  const double area_ha = 12.0;
+  const std::vector<StandMeasures> measures = measureStands(p, species, area_ha);
+  for (std::size_t group = 0; group < measures.size(); ++group) {
+    StandTally tally;
+    std::size_t plants = 0;
+    double heights_m = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (group == species.size() || p.species[i] == group) {
+        tally.add(p.dbh_m[i], p.height_m[i], species[p.species[i]].ecology.life.formFactor);
+        ++plants;
+        heights_m += p.height_m[i];
+      }
+    const StandMeasures one = tally.perHectare(area_ha);
+    const StandMeasures& blocks = measures[group];
+    EXPECT_EQ(blocks.plants, plants) << group;
+    EXPECT_DOUBLE_EQ(blocks.stemsPerHa, one.stemsPerHa) << group;
+    EXPECT_NEAR(blocks.basalArea_m2PerHa, one.basalArea_m2PerHa, 1e-12 * one.basalArea_m2PerHa);
+    EXPECT_NEAR(blocks.qmd_cm, one.qmd_cm, 1e-12 * one.qmd_cm);
+    EXPECT_NEAR(blocks.volume_m3PerHa, one.volume_m3PerHa, 1e-12 * one.volume_m3PerHa);
+    EXPECT_NEAR(blocks.meanHeight_m, heights_m / static_cast<double>(plants), 1e-12 * 30.0);
+  }
+  EXPECT_EQ(measures[0].plants + measures[1].plants, p.size());
 }
 
 TEST(StandMeasures, TheDensestBlockIsFoundWhereverItLies) {

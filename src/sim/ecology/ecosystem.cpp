@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -334,6 +335,7 @@ void Ecosystem::grow() {
   // the ground (the layer casts no shade), its diameter the sapling height/diameter ratio's
   // from breast height on. The trees of this year's light are grown below.
   resizeForOverwrite(recruited_, p.size());
+  clearedCells_.assign(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
     recruited_[i] = 0;
     if (p.height_m[i] >= kRegenerationHeight_m) return;
@@ -354,6 +356,9 @@ void Ecosystem::grow() {
     p.vigor[i] = static_cast<float>(suitability * response);
     p.light[i] = static_cast<float>(light);
     recruited_[i] = p.height_m[i] >= kRegenerationHeight_m;  // next year's tree (findTrees)
+    if (recruited_[i])                                       // set by each of a cell's recruits
+      std::atomic_ref(clearedCells_[regenerationCellOf(p.east_m[i], p.north_m[i])])
+          .store(1, std::memory_order_relaxed);
   });
   const CrownColumns crowns = crownsOf(p);  // as the light grid drew them
   tbb::parallel_for(std::size_t{0}, trees_.size(), [&](std::size_t k) {
@@ -455,12 +460,20 @@ void Ecosystem::applyMortality() {
   };
   // The trees of this year's light, by their carbon balance; then the rest: the sapling
   // layer and the saplings that became trees this year, which had no crown (no deficit).
+  // The seeded young plants that share a regeneration cell with one that became a tree this
+  // year die (planted stock, which iLand plants as trees, stays), in the same pass.
   tbb::parallel_for(std::size_t{0}, trees_.size(),
                     [&](std::size_t k) { mayDie(trees_[k], foliageThenDeficit_[k]); });
+  const bool anyRecruits = std::find(recruited_.begin(), recruited_.end(), 1) != recruited_.end();
   tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    if (p.height_m[i] < kRegenerationHeight_m || recruited_[i]) mayDie(i, 0.0);
+    if (recruited_[i]) return mayDie(i, 0.0);
+    if (p.height_m[i] >= kRegenerationHeight_m) return;  // a tree of this year's light, above
+    if (anyRecruits && p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::Seeded) &&
+        clearedCells_[regenerationCellOf(p.east_m[i], p.north_m[i])])
+      p.alive[i] = 0;
+    else
+      mayDie(i, 0.0);
   });
-  clearCellsOfRecruits();
   releaseTreeArrays();
   // The dead counted block by block side by side (whole numbers: in any order the same).
   const std::size_t species = species_.size();
@@ -489,38 +502,30 @@ void Ecosystem::releaseTreeArrays() {
   Buffer<float>().swap(leafArea_m2_);
   Buffer<float>().swap(foliageThenDeficit_);
   Buffer<std::uint8_t>().swap(recruited_);
-}
-
-void Ecosystem::clearCellsOfRecruits() {
-  Plants& p = state_.plants;
-  // The regeneration cells where a plant became a tree this year, as one flag a cell: a
-  // lookup per young plant, where a sorted list of cells cost a binary search.
-  if (std::find(recruited_.begin(), recruited_.end(), 1) == recruited_.end()) return;
-  std::vector<std::uint8_t> cleared(static_cast<std::size_t>(regenerationX_) * regenerationY_, 0);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (recruited_[i]) cleared[regenerationCellOf(p.east_m[i], p.north_m[i])] = 1;
-  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
-    if (p.height_m[i] < kRegenerationHeight_m &&
-        p.origin[i] == static_cast<std::uint8_t>(PlantOrigin::Seeded) &&
-        cleared[regenerationCellOf(p.east_m[i], p.north_m[i])])
-      p.alive[i] = 0;
-  });
+  Buffer<std::uint8_t>().swap(clearedCells_);
 }
 
 void Ecosystem::establish() {
   const Plants& p = state_.plants;
   const Grid& g = terrain_.grid;
+  // The young plants are entered side by side: each claims a place in its cell atomically.
+  // Whichever claims which place, a cell holds the same species (it is read as a set:
+  // YoungPlants::holds), and one with more young plants than places is closed.
   std::vector<YoungPlants> young(static_cast<std::size_t>(regenerationX_) * regenerationY_);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.height_m[i] >= kRegenerationHeight_m) continue;
+  tbb::parallel_for(std::size_t{0}, p.size(), [&](std::size_t i) {
+    if (p.height_m[i] >= kRegenerationHeight_m) return;
     YoungPlants& cell = young[regenerationCellOf(p.east_m[i], p.north_m[i])];
-    if (p.height_m[i] >= kBreastHeight_m) cell.closed = true;
+    std::atomic_ref count(cell.count);
+    std::uint8_t place = count.load(std::memory_order_relaxed);
+    while (place < kYoungPlantsPerCell &&
+           !count.compare_exchange_weak(place, static_cast<std::uint8_t>(place + 1),
+                                        std::memory_order_relaxed)) {
+    }
+    if (place < kYoungPlantsPerCell) cell.species[place] = p.species[i];
     // Planted stock may stand closer than a cell: a full cell is closed however many it holds.
-    if (cell.count < kYoungPlantsPerCell)
-      cell.species[cell.count++] = p.species[i];
-    else
-      cell.closed = true;
-  }
+    if (p.height_m[i] >= kBreastHeight_m || place >= kYoungPlantsPerCell)
+      std::atomic_ref(cell.closed).store(true, std::memory_order_relaxed);
+  });
   const double cellArea = kRegenerationCell_m * kRegenerationCell_m;
   struct Newcomer {
     int species;

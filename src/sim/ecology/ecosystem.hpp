@@ -146,9 +146,6 @@ class Ecosystem {
   void computeLight();
   void grow();
   void applyMortality();
-  // The seeded young plants that share a regeneration cell with one that became a tree this
-  // year die (marked, not yet removed).
-  void clearCellsOfRecruits();
   // Frees the year's arrays per tree and the light grid's crown entries once mortality has
   // read them: establishment and settling, where the year's seedlings join the plants, do
   // not need them (docs/performance.md, "the year's arrays while seedlings come").
@@ -200,6 +197,9 @@ class Ecosystem {
   Buffer<std::uint32_t> trees_;
   Buffer<float> leafArea_m2_, foliageThenDeficit_;
   Buffer<std::uint8_t> recruited_;  // per plant: grew out of the sapling layer this year
+  // Per regeneration cell: one of its young plants grew out of the layer this year (a flag a
+  // cell: a lookup per young plant, where a list of the cells cost a search).
+  Buffer<std::uint8_t> clearedCells_;
   std::vector<int> born_, died_, plantedDied_;
   std::function<bool(glm::dvec2)> isOpen_;
   std::vector<std::uint8_t> openCell_;  // per regeneration cell: its centre is kept open

@@ -20,9 +20,14 @@ void Plants::removeDead() {
     // The flags are read by every other column's task: they are compacted last, below.
     if (static_cast<const void*>(&column) == static_cast<const void*>(&alive)) return;
     columns.run([this, &column, kept] {
+      // Without a branch: each row is written to the next place and kept there by its flag
+      // (a flag is 0 or 1). The dead come in runs a branch predictor cannot learn (a
+      // regeneration cell's seedlings, a stand's thinned trees).
       std::size_t k = 0;
-      for (std::size_t i = 0; i < column.size(); ++i)
-        if (alive[i]) column[k++] = column[i];
+      for (std::size_t i = 0; i < column.size(); ++i) {
+        column[k] = column[i];
+        k += alive[i];
+      }
       column.resize(kept);
       releaseUnusedCapacity(column);
     });

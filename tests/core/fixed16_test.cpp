@@ -28,5 +28,26 @@ TEST(Fixed16, KeepsItsRangeToHalfAStep) {
   EXPECT_EQ(sizeof(Fixed16<1>), 2u);
 }
 
+TEST(Fixed16, RoundsToTheNearestStepAsLroundDoes) {
+  // Its inline rounding against the C library's: halves away from zero, and a value just
+  // below a half (where adding 0.5 would round up) down.
+  auto viaLround = [](double value) {
+    return static_cast<float>(static_cast<double>(std::lround(value * Fixed16<1>::kStepsPerUnit)) /
+                              Fixed16<1>::kStepsPerUnit);
+  };
+  for (const double steps : {0.5, 1.5, 2.5, 65534.5, std::nextafter(0.5, 0.0),
+                             std::nextafter(1.5, 0.0), std::nextafter(0.5, 1.0)}) {
+    const double value = steps / Fixed16<1>::kStepsPerUnit;
+    EXPECT_EQ(static_cast<float>(Fixed16<1>(value)), viaLround(value)) << steps;
+  }
+  EXPECT_EQ(static_cast<float>(Fixed16<1>(0.5 / Fixed16<1>::kStepsPerUnit)),
+            static_cast<float>(Fixed16<1>::kStep));
+  Rng rng(29);
+  for (int k = 0; k < 100000; ++k) {
+    const double v = rng.uniform();
+    ASSERT_EQ(static_cast<float>(Fixed16<1>(v)), viaLround(v)) << v;
+  }
+}
+
 }  // namespace
 }  // namespace eco

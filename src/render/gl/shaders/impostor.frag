@@ -6,6 +6,7 @@ flat in vec3 vWeight;
 flat in vec3 vTint;
 flat in vec2 vKeep;
 flat in float vYaw;
+flat in vec2 vScale;
 flat in uint vCoverageSeed;
 
 layout(binding = 1) uniform sampler2D uAlbedoAtlas;
@@ -48,7 +49,13 @@ void main() {
   packedNormal /= albedo.a;
   // Not normalised: at the coarser mip levels the mean of many leaves' normals is shorter
   // than one, and shade() lights it as leaves facing many ways.
-  vec3 normal = rotateYaw(packedNormal.xyz * 2.0 - 1.0, vYaw);
+  vec3 normal = packedNormal.xyz * 2.0 - 1.0;
+  // The frame shows the tree at its type's proportions; a crown narrower or wider than its
+  // type's turns its leaves' normals as the mesh's do (tree.vert: the normal divided by the
+  // scale), toward the horizontal in a slender crown. The mean keeps its length.
+  float meanLength = length(normal);
+  if (meanLength > 1e-4) normal = normalize(normal / vScale.xyx) * meanLength;
+  normal = rotateYaw(normal, vYaw);
   // The pixel's own place in the crown, so that it takes its own shadow and fog: inner
   // and far-side leaves fall in the shadow of the tree and its neighbours as a mesh's do.
   depthAndSky /= albedo.a;

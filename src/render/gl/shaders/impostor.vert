@@ -20,6 +20,7 @@ flat out vec3 vWeight;
 flat out vec3 vTint;
 flat out vec2 vKeep;  // the dither thresholds this draw keeps: [lo, hi)
 flat out float vYaw;
+flat out vec2 vScale;  // the tree's horizontal and vertical scale of its type
 flat out uint vCoverageSeed;  // the tree's own alpha-test thresholds
 
 void main() {
@@ -75,6 +76,7 @@ void main() {
   vTint = iTint.rgb;
   vKeep = vec2(iScale.z, iTint.w);
   vYaw = yaw;
+  vScale = iScale.xy;
   vCoverageSeed = coverageSeed(iPositionYaw.xyz);
   float diameter = 2.0 * radius;
 #ifdef SHADOW_PASS

@@ -24,9 +24,14 @@
 // drawing them again (they take minutes; the qualities seconds), e.g. while tuning a level.
 // --antialias N|auto (anywhere): every picture, references included, with N samples a
 // pixel (render's --antialias), so both sides are measured without their aliasing.
+// --double-reference (anywhere): the row "LOD0 at 2x" as well, the reference drawn at twice
+// the size (LOD0 down to twice REFERENCE_MIN_PIXELS) and averaged back down: the floor of
+// any picture whose pixels show other leaves (doubleReference below). Saved as
+// *_reference_2x.png; it takes about as long again as the reference.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -105,22 +110,51 @@ eco::Image shiftedOnePixel(const eco::Image& image) {
   return moved;
 }
 
+// How the benchmark runs, from its command line.
+struct BenchSettings {
+  float referenceMinPixels = 8.0f;
+  std::filesystem::path out = "fidelity";
+  std::string only;  // some of low,ground,300m: those only; empty: all
+  bool reuseReferences = false;
+  // Twice the size of `target`, for the reference drawn finer (--double-reference); none.
+  const eco::RenderTarget* doubleTarget = nullptr;
+};
+
+// The reference drawn at twice the size and averaged back down, each pixel the mean of
+// 2 x 2: the same trees at LOD0 (down to the same height on the screen), a finer picture
+// than the reference, whose pixels show other leaves than the reference's pixel centres do.
+// How far it lies from the reference is how far any picture of the same trees lies that
+// does not sample the very same leaves: the floor for levels of detail, sharper than the one
+// pixel shift, which keeps three quarters of each 4 x 4 block's samples.
+eco::Image doubleReference(eco::SceneRenderer& renderer, const eco::Forest& forest,
+                           const eco::Camera& camera, const BenchSettings& settings,
+                           const std::string& stem) {
+  const std::string file = stem + "reference_2x.png";
+  if (settings.reuseReferences && std::filesystem::exists(file))
+    return eco::downsampled(eco::readColorImage(file), 2);
+  const eco::RenderOptions options = referenceOptions(2.0f * settings.referenceMinPixels);
+  renderer.render(&forest, camera, options, *settings.doubleTarget);
+  const eco::Image picture = eco::readPixels(*settings.doubleTarget);
+  eco::writeRgb8Image(file, picture);
+  return eco::downsampled(picture, 2);
+}
+
 void compareScene(const std::string& scene, const eco::Terrain& terrain, const eco::Forest& forest,
                   const eco::TreeLibrary& library, Renderers& renderers,
-                  const eco::RenderTarget& target, float referenceMinPixels,
-                  const std::filesystem::path& out, bool checkReference, const std::string& only,
-                  bool reuseReferences) {
+                  const eco::RenderTarget& target, const BenchSettings& settings,
+                  bool checkReference) {
+  const float referenceMinPixels = settings.referenceMinPixels;
   for (auto* r : {&renderers.lod0Baked, &renderers.lod1Baked}) r->setForestFloor(forest);
   eco::SceneRenderer& renderer = renderers.lod0Baked;  // the reference's
   for (const View& view : viewsOf(terrain, forest, library)) {
-    const std::string stem = (out / (scene + "_" + view.name + "_")).string();
+    const std::string stem = (settings.out / (scene + "_" + view.name + "_")).string();
     const glm::dvec3 at = eco::mapFromWorld(view.camera.position);
-    if (!only.empty() && only.find(view.name) == std::string::npos) continue;
+    if (!settings.only.empty() && settings.only.find(view.name) == std::string::npos) continue;
     // The camera as `ecoforest render --camera` takes it, to draw the same view.
     std::printf("%s, %s view: --camera %.9g,%.9g,%.9g,%.9g,%.9g\n", scene.c_str(),
                 view.name.c_str(), at.x, at.y, at.z, view.camera.yaw_deg, view.camera.pitch_deg);
     renderer.render(&forest, view.camera, eco::RenderOptions{}, target);  // warm-up
-    const bool reuse = reuseReferences && std::filesystem::exists(stem + "reference.png");
+    const bool reuse = settings.reuseReferences && std::filesystem::exists(stem + "reference.png");
     const Picture reference =
         reuse ? Picture{eco::readColorImage(stem + "reference.png"), {}}
               : draw(renderer, forest, view.camera, referenceOptions(referenceMinPixels), target);
@@ -139,6 +173,8 @@ void compareScene(const std::string& scene, const eco::Terrain& terrain, const e
     };
     row("reference", reference);
     row("1 px shift", {shiftedOnePixel(reference.image), {}});
+    if (settings.doubleTarget)
+      row("LOD0 at 2x", {doubleReference(renderer, forest, view.camera, settings, stem), {}});
     if (checkReference && referenceMinPixels > 0.0f && !reuse) {
       const Picture all = draw(renderer, forest, view.camera, referenceOptions(0.0f), target);
       eco::writeRgb8Image(stem + "all_lod0.png", all.image);
@@ -161,9 +197,16 @@ void compareScene(const std::string& scene, const eco::Terrain& terrain, const e
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv, argv + argc);
-  const auto reuseFlag = std::find(args.begin(), args.end(), "--reuse-references");
-  const bool reuseReferences = reuseFlag != args.end();
-  if (reuseReferences) args.erase(reuseFlag);
+  // A flag anywhere on the line: whether it was given, taken off the arguments.
+  auto takeFlag = [&args](const char* name) {
+    const auto flag = std::find(args.begin(), args.end(), name);
+    if (flag == args.end()) return false;
+    args.erase(flag);
+    return true;
+  };
+  BenchSettings settings;
+  settings.reuseReferences = takeFlag("--reuse-references");
+  const bool doubleReference = takeFlag("--double-reference");
   int samples = 1;
   if (const auto flag = std::find(args.begin(), args.end(), "--antialias");
       flag != args.end() && flag + 1 != args.end()) {
@@ -184,11 +227,11 @@ int main(int argc, char** argv) {
                : std::filesystem::path(ECOFOREST_DATA_DIR) / "valley.toml";
   const eco::FrameSize size =
       argc > 2 ? eco::parseFrameSize(args[2]).value_or(eco::FrameSize{}) : eco::FrameSize{};
-  const float referenceMinPixels = argc > 3 ? std::stof(args[3]) : 8.0f;
-  const std::filesystem::path out = argc > 4 ? args[4] : "fidelity";
+  if (argc > 3) settings.referenceMinPixels = std::stof(args[3]);
+  if (argc > 4) settings.out = args[4];
   const std::size_t planted = argc > 5 ? std::stoul(args[5]) : 10000;
-  const std::string only = argc > 6 ? args[6] : "";  // some of low,ground,300m: those only
-  std::filesystem::create_directories(out);
+  if (argc > 6) settings.only = args[6];
+  std::filesystem::create_directories(settings.out);
 
   std::optional<eco::RunFolder> run;
   if (source.extension() != ".toml") run = eco::openRunFolder(source);
@@ -201,19 +244,23 @@ int main(int argc, char** argv) {
                       {terrain, scenario.climate.latitude_deg, &library,
                        eco::impostorSettingsFor(eco::RenderQuality::Balanced)}};
   const eco::RenderTarget target = eco::RenderTarget::create(size.width, size.height, 0, samples);
+  std::optional<eco::RenderTarget> doubleTarget;
+  if (doubleReference) {
+    doubleTarget = eco::RenderTarget::create(2 * size.width, 2 * size.height, 0, samples);
+    settings.doubleTarget = &*doubleTarget;
+  }
   std::printf("%s, %dx%d, %d sample%s a pixel, reference: LOD0 down to %.0f px\n",
               eco::glDescription().c_str(), size.width, size.height, target.samples,
-              target.samples == 1 ? "" : "s", referenceMinPixels);
+              target.samples == 1 ? "" : "s", settings.referenceMinPixels);
 
   const eco::Forest plantedForest = eco::demoForest(terrain, library, planted, scenario.seed);
-  compareScene("planted", terrain, plantedForest, library, renderers, target, referenceMinPixels,
-               out, true, only, reuseReferences);
+  compareScene("planted", terrain, plantedForest, library, renderers, target, settings, true);
   if (run) {
     const int year = run->snapshotYears.back();
     const eco::Forest forest =
         eco::forestFromSnapshot(eco::readSnapshot(*run, year), library, source.string());
     compareScene("run_year" + std::to_string(year), terrain, forest, library, renderers, target,
-                 referenceMinPixels, out, false, only, reuseReferences);
+                 settings, false);
   }
   return 0;
 }

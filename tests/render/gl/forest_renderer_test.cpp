@@ -299,16 +299,20 @@ struct LoneMaple {
   }
 };
 
-// The trees' pixels: where the image differs from the empty scene; with their mean colour.
+// Whether the pixel at byte `p` shows a tree: where the image differs from the empty scene.
+bool isTreePixel(const Image& image, const Image& background, std::size_t p) {
+  for (int c = 0; c < 3; ++c)
+    if (std::abs(int(image.rgba[p + c]) - int(background.rgba[p + c])) > 8) return true;
+  return false;
+}
+
+// The trees' pixels, with their mean colour.
 std::size_t treePixels(const Image& image, const Image& background,
                        glm::dvec3* meanColor = nullptr) {
   std::size_t count = 0;
   glm::dvec3 sum(0.0);
   for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
-    bool differs = false;
-    for (int c = 0; c < 3; ++c)
-      differs = differs || std::abs(int(image.rgba[p + c]) - int(background.rgba[p + c])) > 8;
-    if (!differs) continue;
+    if (!isTreePixel(image, background, p)) continue;
     ++count;
     sum += glm::dvec3(image.rgba[p], image.rgba[p + 1], image.rgba[p + 2]);
   }
@@ -405,10 +409,7 @@ double linearLumaOfTrees(const Image& image, const Image& background) {
   double sum = 0.0;
   std::size_t count = 0;
   for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
-    bool differs = false;
-    for (int c = 0; c < 3; ++c)
-      differs = differs || std::abs(int(image.rgba[p + c]) - int(background.rgba[p + c])) > 8;
-    if (!differs) continue;
+    if (!isTreePixel(image, background, p)) continue;
     ++count;
     sum += 0.2126 * linear(image.rgba[p]) + 0.7152 * linear(image.rgba[p + 1]) +
            0.0722 * linear(image.rgba[p + 2]);

@@ -11,6 +11,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "core/stopwatch.hpp"
+#include "model/mesh/lod.hpp"
 #include "model/mesh/textures.hpp"
 
 namespace eco {
@@ -187,6 +188,11 @@ int ForestRenderer::impostorSource(int type) const {
   return library_.impostorSource(type);
 }
 
+int ForestRenderer::bakeLevel(int source) const {
+  const int species = library_.type(source).species;
+  return bearsNeedles(library_.species()[species]) ? 0 : impostorSettings_.bakeLod;
+}
+
 namespace {
 
 // One tile of a baked frames texture, rows top-down, transparent texels in the tile's mean
@@ -214,7 +220,7 @@ Image frameImageOf(const GlName& texture, glm::ivec2 frame, int tile) {
 std::vector<Image> ForestRenderer::bakeFrameImages(int type, std::span<const glm::ivec2> frames) {
   const int tile = impostorSettings_.tilePixels;
   const int source = impostorSource(type);
-  const std::array<std::pair<int, int>, 1> level{{{source, impostorSettings_.bakeLod}}};
+  const std::array<std::pair<int, int>, 1> level{{{source, bakeLevel(source)}}};
   uploadLevels(level);
   const RenderTarget target = beginBaking();
   drawImpostorFrames(source, frames, target);
@@ -266,7 +272,7 @@ void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> fr
     uniforms_.upload(u);
     // OpenGL's convention throughout: row 0 at the bottom of the atlas, up is +v.
     glViewport(frame.x * tile, frame.y * tile, tile, tile);
-    drawLevel(type, impostorSettings_.bakeLod, {0, 1}, bakeProgram_);
+    drawLevel(type, bakeLevel(type), {0, 1}, bakeProgram_);
   }
 }
 
@@ -430,7 +436,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     for (std::size_t t = 0; t < types; ++t)
       if (sprites[t] && !atlases_[t].albedo) {
         unbaked.push_back(static_cast<int>(t));
-        levels.emplace_back(static_cast<int>(t), impostorSettings_.bakeLod);
+        levels.emplace_back(static_cast<int>(t), bakeLevel(static_cast<int>(t)));
       }
     const auto uploadStart = std::chrono::steady_clock::now();
     if (uploadLevels(levels)) stats.meshUploadMs = millisecondsSince(uploadStart);

@@ -26,7 +26,8 @@ struct ImpostorSettings {
 
 // High quality bakes its frames from LOD0: far trees look like the full model (the 300 m
 // view's SSIM against LOD0 rises from 0.83 to 0.87) for about four times the baking time;
-// the others bake LOD1. Draft and balanced (view, where the camera moves and impostors stand
+// the others bake LOD1, but a species that bears needles LOD0 (ForestRenderer::bakeLevel).
+// Draft and balanced (view, where the camera moves and impostors stand
 // for trees up to 220-300 pixels tall) blend frames; high, whose impostors are under 60
 // pixels, shows the nearest: blending softened its LOD0 frames' fine branches and measured
 // further from the full model in still pictures (docs/rendering.md, "Impostors").

@@ -97,8 +97,9 @@ class ForestRenderer {
   // while each tree's own yaw already picks a different frame; sharing bakes a third.
   int impostorSource(int type) const;
   // The level an impostor source's frames show: the quality's bakeLod, but LOD0 for a
-  // species that bears needles, whose LOD1 gathers them into cluster cards that cover a far
-  // frame more than the needles do (docs/rendering.md, "Impostors").
+  // species that bears needles, whose LOD1 gathers them into cluster cards: baked from those,
+  // a far pine neither covers nor colours its pixels as its needles do (docs/rendering.md,
+  // "Impostors").
   int bakeLevel(int source) const;
   // Bakes these impostor frames of a type (its source's) as its atlas would hold them and
   // returns their albedo, sRGB with alpha, row 0 at the top (up in the frame's axes,

@@ -398,6 +398,17 @@ TEST(Impostor, KeepsItsTreesCrownWidth) {
   }
 }
 
+// A camera `distance` from `target` on its south side, `elevation_deg` above it, looking at
+// it.
+Camera seenFromTheSouth(glm::vec3 target, float distance, float elevation_deg) {
+  Camera camera;
+  const float elevation = glm::radians(elevation_deg);
+  camera.position =
+      target + distance * glm::vec3(0.0f, std::sin(elevation), std::cos(elevation));  // +z
+  camera.pitch_deg = -elevation_deg;
+  return camera;
+}
+
 // The mean luma of the trees' pixels (treePixels) in linear light, 0..255: a speckled mesh
 // and a smooth impostor that send as much light to the eye compare equal, where a mean of
 // the sRGB bytes would read the speckle darker.
@@ -438,13 +449,10 @@ TEST(Impostor, IsLitMoreAsItsMeshAtItsOwnProportions) {
     const float pixels = switchPixelsFor(RenderQuality::High)[2];
     const int size = LoneMaple::pictureSize(pixels);
     const RenderTarget target = RenderTarget::create(size, size);
-    // As far as seenAt(pixels) puts it, from 30 degrees above the south, looking at the
-    // crown's middle.
-    Camera camera = maple.seenAt(pixels);
+    // As far from the crown's middle as seenAt(pixels) puts it, 30 degrees above it.
     const glm::vec3 middle = worldFromMap(160, 160, 100 + 0.5 * maple.height_m);
-    camera.position = middle + glm::length(camera.position - middle) *
-                                   glm::vec3(0.0f, 0.5f, std::sqrt(0.75f));  // +z: south
-    camera.pitch_deg = -30.0f;
+    const Camera camera =
+        seenFromTheSouth(middle, glm::length(maple.seenAt(pixels).position - middle), 30.0f);
     RenderOptions options;
     options.shadows = false;
     Forest empty;
@@ -480,12 +488,9 @@ TEST(Impostor, OfAPineCoversWhatItsNeedlesCover) {
              1.0f, 1);
   const float pixels = 40.0f;
   const int size = 2 * static_cast<int>(pixels);
-  Camera camera;
-  const float distance = height * camera.pixelsPerRadian(size) / pixels;
-  const glm::vec3 middle = worldFromMap(160, 160, 100 + 0.5 * height);
-  camera.position = middle + distance * glm::vec3(0.0f, std::sin(glm::radians(25.0f)),
-                                                  std::cos(glm::radians(25.0f)));  // +z: south
-  camera.pitch_deg = -25.0f;
+  const float distance = height * Camera{}.pixelsPerRadian(size) / pixels;
+  const Camera camera =
+      seenFromTheSouth(worldFromMap(160, 160, 100 + 0.5 * height), distance, 25.0f);
   SceneRenderer renderer(terrain, 46.0, &library, impostorSettingsFor(RenderQuality::Balanced));
   const RenderTarget target = RenderTarget::create(size, size);
   RenderOptions options;

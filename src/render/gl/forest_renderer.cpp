@@ -11,7 +11,6 @@
 #include <glm/gtc/packing.hpp>
 
 #include "core/stopwatch.hpp"
-#include "model/mesh/lod.hpp"
 #include "model/mesh/textures.hpp"
 
 namespace eco {
@@ -190,7 +189,7 @@ int ForestRenderer::impostorSource(int type) const {
 
 int ForestRenderer::bakeLevel(int source) const {
   const int species = library_.type(source).species;
-  return bearsNeedles(library_.species()[species]) ? 0 : impostorSettings_.bakeLod;
+  return impostorBakeLevel(library_.species()[species], impostorSettings_.bakeLod);
 }
 
 namespace {

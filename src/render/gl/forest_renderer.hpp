@@ -96,10 +96,7 @@ class ForestRenderer {
   // the first one's. Below the impostor switch (100 px) the variants differ by a few pixels
   // while each tree's own yaw already picks a different frame; sharing bakes a third.
   int impostorSource(int type) const;
-  // The level an impostor source's frames show: the quality's bakeLod, but LOD0 for a
-  // species that bears needles, whose LOD1 gathers them into cluster cards: baked from those,
-  // a far pine neither covers nor colours its pixels as its needles do (docs/rendering.md,
-  // "Impostors").
+  // The level an impostor source's frames show (impostorBakeLevel of its species).
   int bakeLevel(int source) const;
   // Bakes these impostor frames of a type (its source's) as its atlas would hold them and
   // returns their albedo, sRGB with alpha, row 0 at the top (up in the frame's axes,

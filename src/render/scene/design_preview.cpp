@@ -30,15 +30,16 @@ struct BuiltTree {
   SkeletonMeasures measures;
 };
 
-// The mesh a level shows: an impostor is baked from a mesh level (impostor.hpp).
-int meshLevelOf(int level) {
-  return level == kLevelImpostor ? ImpostorSettings{}.bakeLod : level;
+// The mesh a level of a species shows: an impostor is baked from a mesh level
+// (impostor.hpp).
+int meshLevelOf(const Species& species, int level) {
+  return level == kLevelImpostor ? impostorBakeLevel(species, ImpostorSettings{}.bakeLod) : level;
 }
 
 // One tree of the preview; its hint sleeves too when a hint is asked for.
 BuiltTree buildTree(const Species& species, int speciesIndex, std::uint64_t seed, double age,
                     int level, const std::optional<HintInterval>& hint) {
-  const int meshLevel = meshLevelOf(level);
+  const int meshLevel = meshLevelOf(species, level);
   std::vector<SkeletonMesher> meshers{[&](const TreeSkeleton& skeleton, TreeMesh& mesh) {
     buildLodInto(skeleton, species, meshLevel, mesh);
   }};
@@ -99,7 +100,8 @@ PreviewScene buildPreview(const Species& edited, const PreviewSettings& settings
   scene.stats.leaves = main.leaves;
   scene.stats.height_m = main.measures.height_m;
   scene.stats.crownRadius_m = main.measures.crownRadius_m;
-  scene.stats.triangles = main.type.meshes.lods[meshLevelOf(settings.level)].triangleCount();
+  scene.stats.triangles =
+      main.type.meshes.lods[meshLevelOf(edited, settings.level)].triangleCount();
   scene.types.push_back(std::move(main.type));
   scene.types.push_back(std::move(main.hint));
   return scene;

@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "model/mesh/lod.hpp"
+
 namespace eco {
 
 glm::vec2 hemiOctEncode(glm::vec3 d) {
@@ -35,6 +37,10 @@ void frameAxes(glm::vec3 f, glm::vec3& right, glm::vec3& up) {
   const glm::vec3 reference = std::abs(f.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1);
   right = glm::normalize(glm::cross(reference, f));
   up = glm::cross(f, right);
+}
+
+int impostorBakeLevel(const Species& species, int bakeLod) {
+  return bearsNeedles(species) ? 0 : bakeLod;
 }
 
 ImpostorSettings impostorSettingsFor(RenderQuality quality) {

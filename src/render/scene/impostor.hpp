@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "model/species.hpp"
 #include "render/scene/culling.hpp"
 
 namespace eco {
@@ -26,12 +27,18 @@ struct ImpostorSettings {
 
 // High quality bakes its frames from LOD0: far trees look like the full model (the 300 m
 // view's SSIM against LOD0 rises from 0.83 to 0.87) for about four times the baking time;
-// the others bake LOD1, but a species that bears needles LOD0 (ForestRenderer::bakeLevel).
+// the others bake LOD1, but a species that bears needles LOD0 (impostorBakeLevel).
 // Draft and balanced (view, where the camera moves and impostors stand
 // for trees up to 220-300 pixels tall) blend frames; high, whose impostors are under 60
 // pixels, shows the nearest: blending softened its LOD0 frames' fine branches and measured
 // further from the full model in still pictures (docs/rendering.md, "Impostors").
 ImpostorSettings impostorSettingsFor(RenderQuality quality);
+
+// The mesh level a species' impostor frames show: the quality's `bakeLod`, but LOD0 for a
+// species that bears needles, whose LOD1 gathers them into cluster cards: baked from those,
+// a far pine neither covers nor colours its pixels as its needles do (docs/rendering.md,
+// "Impostors").
+int impostorBakeLevel(const Species& species, int bakeLod);
 
 // Unit direction with y >= 0 -> [0, 1]^2, and back.
 glm::vec2 hemiOctEncode(glm::vec3 direction);

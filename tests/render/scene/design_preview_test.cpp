@@ -1,10 +1,13 @@
 #include "render/scene/design_preview.hpp"
 
+#include <utility>
+
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
 #include "core/frames.hpp"
 #include "model/tree_generator.hpp"
+#include "render/scene/culling.hpp"
 #include "render_support.hpp"
 
 namespace eco {
@@ -39,6 +42,23 @@ TEST(DesignPreview, TheEditedTreeIsTheModelsTreeAtTheLevelAskedFor) {
   EXPECT_TRUE(edited.meshes.lods[0].parts.empty());  // only the level shown is built
   EXPECT_TRUE(scene.types[kPreviewHint].meshes.lods[1].parts.empty());  // no hint asked for
   EXPECT_GT(scene.stats.buildMs, 0.0);
+}
+
+// Shown as an impostor, a tree builds the level its frames are baked from: LOD1 for a
+// broadleaf, LOD0 for a species that bears needles (impostorBakeLevel), as the renderer
+// bakes them.
+TEST(DesignPreview, AnImpostorBuildsTheLevelItsFramesAreBakedFrom) {
+  PreviewSettings settings;
+  settings.level = kLevelImpostor;
+  settings.age = 0.4;
+  for (const auto& [name, level] : {std::pair{"beech", 1}, std::pair{"pine", 0}}) {
+    SCOPED_TRACE(name);
+    const PreviewScene scene = buildPreview(test::loadNamedSpecies(name), settings);
+    const TreeType& edited = scene.types[kPreviewEdited];
+    EXPECT_GT(edited.meshes.lods[level].triangleCount(), 0u);
+    EXPECT_TRUE(edited.meshes.lods[1 - level].parts.empty());
+    EXPECT_EQ(scene.stats.triangles, edited.meshes.lods[level].triangleCount());
+  }
 }
 
 TEST(DesignPreview, TheHintSleevesTheSegmentsOfTheEditedOrders) {

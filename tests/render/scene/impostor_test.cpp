@@ -37,5 +37,20 @@ TEST(Impostor, EachFrameIsChosenFromItsOwnDirectionAndItsAxesAreOrthonormal) {
   EXPECT_EQ(impostorFrame({1, -0.5f, 0}, frames), impostorFrame({1, 0, 0}, frames));
 }
 
+// Frames show the quality's level, but a species that bears needles shows LOD0 at every
+// quality: its LOD1 gathers the needles into cluster cards (render/gl's
+// Impostor.OfAPineCoversWhatItsNeedlesCover measures why).
+TEST(Impostor, ASpeciesThatBearsNeedlesBakesItsFramesFromLod0) {
+  const Species pine = test::namedLibrarySpecies("pine").model;
+  const Species beech = test::namedLibrarySpecies("beech").model;
+  for (RenderQuality quality :
+       {RenderQuality::Draft, RenderQuality::Balanced, RenderQuality::High}) {
+    const int bakeLod = impostorSettingsFor(quality).bakeLod;
+    EXPECT_EQ(impostorBakeLevel(pine, bakeLod), 0);
+    EXPECT_EQ(impostorBakeLevel(beech, bakeLod), bakeLod);
+  }
+  EXPECT_EQ(impostorSettingsFor(RenderQuality::Balanced).bakeLod, 1);
+}
+
 }  // namespace
 }  // namespace eco

@@ -471,7 +471,7 @@ TEST(Impostor, IsLitMoreAsItsMeshAtItsOwnProportions) {
 }
 
 // A far pine's impostor covers about what its needles cover: a species that bears needles
-// bakes its frames from LOD0 at every quality (ForestRenderer::bakeLevel), where LOD1
+// bakes its frames from LOD0 at every quality (impostorBakeLevel), where LOD1
 // gathers the needles into cluster cards. A mature pine seen 40 pixels tall from 25 degrees
 // above, drawn with balanced's impostor and as LOD0: the two cover the same number of
 // pixels to within a fifth. Measured: 35 and 35 (at 80 px 160 against 191); with the frames

@@ -320,6 +320,40 @@ std::size_t treePixels(const Image& image, const Image& background,
   return count;
 }
 
+// A forest drawn from one camera into a square picture without shadows, each time at a
+// level forced on every tree, beside the empty scene drawn first: the background that tells
+// a tree's pixels (treePixels).
+class PicturesAtLevels {
+ public:
+  PicturesAtLevels(SceneRenderer& renderer, const Forest& forest, const Camera& camera, int size)
+      : renderer_(renderer),
+        forest_(forest),
+        camera_(camera),
+        size_(size),
+        target_(RenderTarget::create(size, size)) {
+    options_.shadows = false;
+    Forest empty;
+    renderer_.render(&empty, camera_, options_, target_);
+    background_ = readPixels(size_, size_);
+  }
+  Image at(int level) {
+    options_.lod.forcedLevel = level;
+    renderer_.render(&forest_, camera_, options_, target_);
+    return readPixels(size_, size_);
+  }
+  double treePixelsAt(int level) { return static_cast<double>(treePixels(at(level), background_)); }
+  const Image& background() const { return background_; }
+
+ private:
+  SceneRenderer& renderer_;
+  const Forest& forest_;
+  Camera camera_;
+  int size_;
+  RenderTarget target_;
+  RenderOptions options_;
+  Image background_;
+};
+
 // At its switching size the impostor stands in for the meshes: the mature maple rendered at
 // that size as LOD0 and as its impostor, compared as a whole, since single leaves fall
 // on different pixels. Tolerances: the two cover the same number of pixels to within 20 %
@@ -339,24 +373,13 @@ TEST(Impostor, MatchesTheMeshAtEachQualitysSwitchingSize) {
     SCOPED_TRACE(std::string(toString(quality)));
     SceneRenderer renderer(maple.terrain, 46.0, &maple.library, impostorSettingsFor(quality));
     const float switchPixels = switchPixelsFor(quality)[2];
-    const int size = LoneMaple::pictureSize(switchPixels);
-    const Camera camera = maple.seenAt(switchPixels);
-    RenderOptions options;
-    options.shadows = false;
-    const RenderTarget target = RenderTarget::create(size, size);
-    Forest empty;
-    renderer.render(&empty, camera, options, target);
-    const Image background = readPixels(size, size);
-    options.lod.forcedLevel = 0;
-    renderer.render(&forest, camera, options, target);
-    const Image mesh = readPixels(size, size);
-    options.lod.forcedLevel = kLevelImpostor;
-    renderer.render(&forest, camera, options, target);
-    const Image impostor = readPixels(size, size);
+    PicturesAtLevels pictures(renderer, forest, maple.seenAt(switchPixels),
+                              LoneMaple::pictureSize(switchPixels));
+    const Image mesh = pictures.at(0), impostor = pictures.at(kLevelImpostor);
 
     glm::dvec3 meshColor, impostorColor;
-    const std::size_t meshPixels = treePixels(mesh, background, &meshColor);
-    const std::size_t impostorPixels = treePixels(impostor, background, &impostorColor);
+    const std::size_t meshPixels = treePixels(mesh, pictures.background(), &meshColor);
+    const std::size_t impostorPixels = treePixels(impostor, pictures.background(), &impostorColor);
     ASSERT_GT(meshPixels, static_cast<std::size_t>(0.05 * switchPixels * switchPixels));
     const double coverageDifference =
         std::abs(double(meshPixels) - double(impostorPixels)) / double(meshPixels);
@@ -381,19 +404,10 @@ TEST(Impostor, KeepsItsTreesCrownWidth) {
     SceneRenderer renderer(maple.terrain, 46.0, &maple.library,
                            impostorSettingsFor(RenderQuality::High));
     const float switchPixels = switchPixelsFor(RenderQuality::High)[2];
-    const int size = LoneMaple::pictureSize(switchPixels);
-    const RenderTarget target = RenderTarget::create(size, size);
-    RenderOptions options;
-    options.shadows = false;
-    Forest empty;
-    renderer.render(&empty, maple.seenAt(switchPixels), options, target);
-    const Image background = readPixels(size, size);
-    auto pixelsAtLevel = [&](int level) {
-      options.lod.forcedLevel = level;
-      renderer.render(&maple.forest, maple.seenAt(switchPixels), options, target);
-      return static_cast<double>(treePixels(readPixels(size, size), background));
-    };
-    const double mesh = pixelsAtLevel(0), impostor = pixelsAtLevel(kLevelImpostor);
+    PicturesAtLevels pictures(renderer, maple.forest, maple.seenAt(switchPixels),
+                              LoneMaple::pictureSize(switchPixels));
+    const double mesh = pictures.treePixelsAt(0);
+    const double impostor = pictures.treePixelsAt(kLevelImpostor);
     EXPECT_NEAR(impostor / mesh, 1.0, 0.2) << mesh << " vs " << impostor;
   }
 }
@@ -447,24 +461,14 @@ TEST(Impostor, IsLitMoreAsItsMeshAtItsOwnProportions) {
     SceneRenderer renderer(maple.terrain, 46.0, &maple.library,
                            impostorSettingsFor(RenderQuality::High));
     const float pixels = switchPixelsFor(RenderQuality::High)[2];
-    const int size = LoneMaple::pictureSize(pixels);
-    const RenderTarget target = RenderTarget::create(size, size);
     // As far from the crown's middle as seenAt(pixels) puts it, 30 degrees above it.
     const glm::vec3 middle = worldFromMap(160, 160, 100 + 0.5 * maple.height_m);
     const Camera camera =
         seenFromTheSouth(middle, glm::length(maple.seenAt(pixels).position - middle), 30.0f);
-    RenderOptions options;
-    options.shadows = false;
-    Forest empty;
-    renderer.render(&empty, camera, options, target);
-    const Image background = readPixels(size, size);
-    auto lumaAtLevel = [&](int level) {
-      options.lod.forcedLevel = level;
-      renderer.render(&maple.forest, camera, options, target);
-      return linearLumaOfTrees(readPixels(size, size), background);
-    };
-    const double mesh = lumaAtLevel(0);
-    impostorLuma[widthRatio] = lumaAtLevel(kLevelImpostor);
+    PicturesAtLevels pictures(renderer, maple.forest, camera, LoneMaple::pictureSize(pixels));
+    const double mesh = linearLumaOfTrees(pictures.at(0), pictures.background());
+    impostorLuma[widthRatio] =
+        linearLumaOfTrees(pictures.at(kLevelImpostor), pictures.background());
     EXPECT_NEAR(impostorLuma[widthRatio], mesh, 9.0);
   }
   EXPECT_GT(impostorLuma[1.4f], impostorLuma[0.7f]);
@@ -492,18 +496,9 @@ TEST(Impostor, OfAPineCoversWhatItsNeedlesCover) {
   const Camera camera =
       seenFromTheSouth(worldFromMap(160, 160, 100 + 0.5 * height), distance, 25.0f);
   SceneRenderer renderer(terrain, 46.0, &library, impostorSettingsFor(RenderQuality::Balanced));
-  const RenderTarget target = RenderTarget::create(size, size);
-  RenderOptions options;
-  options.shadows = false;
-  Forest empty;
-  renderer.render(&empty, camera, options, target);
-  const Image background = readPixels(size, size);
-  auto pixelsAtLevel = [&](int level) {
-    options.lod.forcedLevel = level;
-    renderer.render(&forest, camera, options, target);
-    return static_cast<double>(treePixels(readPixels(size, size), background));
-  };
-  const double mesh = pixelsAtLevel(0), impostor = pixelsAtLevel(kLevelImpostor);
+  PicturesAtLevels pictures(renderer, forest, camera, size);
+  const double mesh = pictures.treePixelsAt(0);
+  const double impostor = pictures.treePixelsAt(kLevelImpostor);
   EXPECT_NEAR(impostor / mesh, 1.0, 0.2) << mesh << " vs " << impostor;
 }
 
@@ -519,24 +514,16 @@ TEST(Impostor, CrownsOneBehindTheOtherLetLightThroughIndependently) {
   SceneRenderer renderer(maple.terrain, 46.0, &maple.library,
                          impostorSettingsFor(RenderQuality::High));
   const float pixels = 0.5f * switchPixelsFor(RenderQuality::High)[2];
-  const int size = LoneMaple::pictureSize(pixels);
-  const RenderTarget target = RenderTarget::create(size, size);
-  RenderOptions options;
-  options.shadows = false;
-  options.lod.forcedLevel = kLevelImpostor;
-  Forest empty;
-  renderer.render(&empty, maple.seenAt(pixels), options, target);
-  const Image background = readPixels(size, size);
-  renderer.render(&maple.forest, maple.seenAt(pixels), options, target);
-  const double one = static_cast<double>(treePixels(readPixels(size, size), background));
+  PicturesAtLevels pictures(renderer, maple.forest, maple.seenAt(pixels),
+                            LoneMaple::pictureSize(pixels));
+  const double one = pictures.treePixelsAt(kLevelImpostor);
   for (int i = 1; i < 4; ++i) {
     maple.forest.add(maple.library, maple.forest.type[0],
                      maple.forest.position[0] + glm::vec3(0.0f, 0.0f, 0.01f * i), maple.height_m,
                      0.0f, 1.0f, 1);
     maple.forest.yaw.back() = maple.forest.yaw[0];
   }
-  renderer.render(&maple.forest, maple.seenAt(pixels), options, target);
-  const double four = static_cast<double>(treePixels(readPixels(size, size), background));
+  const double four = pictures.treePixelsAt(kLevelImpostor);
   EXPECT_GT(four, 1.1 * one) << one << " vs " << four;
 }
 

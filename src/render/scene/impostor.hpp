@@ -10,10 +10,11 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "model/species.hpp"
 #include "render/scene/culling.hpp"
 
 namespace eco {
+
+struct Species;
 
 struct ImpostorSettings {
   int frames = 8;       // per side of the atlas: frames^2 directions

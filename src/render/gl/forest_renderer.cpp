@@ -490,14 +490,16 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   return stats;
 }
 
-void ForestRenderer::draw() const {
+void ForestRenderer::drawMeshes() const {
   glBindVertexArray(meshArray_.id());
   glVertexArrayVertexBuffer(meshArray_.id(), 1, instances_.id(), 0, sizeof(Instance));
   meshProgram_.use();
   for (int t = 0; t < library_.typeCount(); ++t)
     for (int level = 0; level < kLevelImpostor; ++level)
       drawLevel(t, level, buckets_[t * kLevelCount + level], meshProgram_);
+}
 
+void ForestRenderer::drawSprites() const {
   drawImpostors(impostorProgram_, pixelsPerUnit_,
                 [&](std::size_t t) { return buckets_[t * kLevelCount + kLevelImpostor]; });
 }

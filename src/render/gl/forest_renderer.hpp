@@ -88,7 +88,9 @@ class ForestRenderer {
                       const LodSettings& lod, std::span<const ShadowBox> shadows);
   const TreeLibrary& library() const { return library_; }
   const ForestGpuMemory& gpuMemory() const { return gpuMemory_; }
-  void draw() const;  // the colour pass of what prepare() chose
+  // The colour pass of what prepare() chose: the meshes (LOD0-2), then the impostors.
+  void drawMeshes() const;
+  void drawSprites() const;
   // One cascade's shadow casters into the bound depth target.
   void drawShadows(std::size_t cascade) const;
 

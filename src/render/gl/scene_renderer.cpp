@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -38,7 +39,8 @@ void SceneRenderer::reloadTrees(bool rebakeImpostors) {
 }
 
 void SceneRenderer::renderShadowMaps(const RenderOptions& options, FrameUniforms u,
-                                     const ShadowCascades& cascades, bool forestCasts) {
+                                     const ShadowCascades& cascades, bool forestCasts,
+                                     const std::function<void(RenderPass)>& endPass) {
   if (shadowSize_ != options.shadowMapSize) {
     shadowSize_ = options.shadowMapSize;
     GLuint texture = 0;
@@ -69,6 +71,7 @@ void SceneRenderer::renderShadowMaps(const RenderOptions& options, FrameUniforms
     uniforms_.upload(u);
     terrain_.draw(Frustum::fromMatrix(u.lightViewProj), true);
     if (forestCasts) forest_->drawShadows(static_cast<std::size_t>(c));
+    endPass(static_cast<RenderPass>(static_cast<int>(RenderPass::ShadowNear) + c));
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
@@ -109,13 +112,42 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
         shadows ? std::span<const ShadowBox>(cascades) : std::span<const ShadowBox>());
   stats.prepareMs = millisecondsSince(start) - stats.forest.setupMs();
 
+  // Where passes are timed, each is also counted in fragments shaded, where the GL counts
+  // them (ARB_pipeline_statistics_query).
+  const bool countFragments =
+      options.timePasses && epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query");
+  GlName fragmentQuery;
+  if (countFragments) {
+    GLuint query = 0;
+    glGenQueries(1, &query);  // Mesa 22.3 refuses this target in glCreateQueries
+    fragmentQuery = GlName(GlKind::Query, query);
+  }
+  if (options.timePasses) glFinish();  // the instances' upload is prepare's
+  if (countFragments) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, fragmentQuery.id());
+  auto passStart = std::chrono::steady_clock::now();
+  const auto endPass = [&](RenderPass pass) {
+    if (!options.timePasses) return;
+    glFinish();
+    const int p = static_cast<int>(pass);
+    stats.passMs[p] = millisecondsSince(passStart);
+    if (countFragments) {
+      glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+      GLuint64 fragments = 0;
+      glGetQueryObjectui64v(fragmentQuery.id(), GL_QUERY_RESULT, &fragments);
+      stats.passFragments[p] = fragments;
+      if (pass != RenderPass::Impostors)
+        glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, fragmentQuery.id());
+    }
+    passStart = std::chrono::steady_clock::now();
+  };
+
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glEnable(GL_CULL_FACE);
   if (shadows)
     renderShadowMaps(options, u, cascades,
-                     forest_ && forest && stats.forest.shadowCasterCount() > 0);
+                     forest_ && forest && stats.forest.shadowCasterCount() > 0, endPass);
   glBindTextureUnit(4, shadowDepth_.id());
 
   target.bind();
@@ -131,8 +163,13 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   glEnable(GL_DEPTH_TEST);
   const Frustum frustum = Frustum::fromMatrix(viewProj);
   stats.terrainTriangles = terrain_.draw(frustum, false);
+  endPass(RenderPass::SkyAndTerrain);
   stats.groundTufts = groundCover_.draw(camera.position, frustum, options.groundCover);
-  if (forest_ && forest) forest_->draw();
+  endPass(RenderPass::GroundCover);
+  if (forest_ && forest) forest_->drawMeshes();
+  endPass(RenderPass::TreeMeshes);
+  if (forest_ && forest) forest_->drawSprites();
+  endPass(RenderPass::Impostors);
   glFinish();
   checkGl("SceneRenderer::render");
   stats.frameMs = millisecondsSince(start) - stats.forest.setupMs();

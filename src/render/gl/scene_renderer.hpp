@@ -3,6 +3,7 @@
 // `view`, the tests and the benchmark all draw through this.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -50,7 +51,8 @@ class SceneRenderer {
  private:
   // Each cascade's depth map, a layer of shadowDepth_ (u: the frame's uniforms).
   void renderShadowMaps(const RenderOptions& options, FrameUniforms u,
-                        const ShadowCascades& cascades, bool forestCasts);
+                        const ShadowCascades& cascades, bool forestCasts,
+                        const std::function<void(RenderPass)>& endPass);
 
   const Terrain& terrainData_;  // the caller's, as for the library
   double latitude_deg_;

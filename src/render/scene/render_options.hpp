@@ -34,7 +34,29 @@ struct RenderOptions {
   int shadowMapSize = 2048;
   std::optional<float> fogDensity;  // per metre; default clear air (100 km visibility)
   GroundCoverSettings groundCover;  // default none; the command line's by quality
+  // Waits for the GPU at each pass's end and times it (FrameStats::passMs): which pass
+  // costs what, for a benchmark. The wait splits the work the GPU would overlap, and a
+  // tiled renderer such as llvmpipe draws each pass as its own scene, so the frame as a
+  // whole runs a little slower.
+  bool timePasses = false;
 };
+
+// The passes of a frame, in the order they are drawn.
+enum class RenderPass : int {
+  ShadowNear,    // the nearest cascade's depth: terrain and trees
+  ShadowMiddle,  // the middle cascade's
+  ShadowFar,     // the farthest cascade's
+  SkyAndTerrain,
+  GroundCover,
+  TreeMeshes,  // LOD0, LOD1 and LOD2
+  Impostors,
+};
+inline constexpr int kRenderPassCount = 7;
+static_assert(kShadowCascades == 3, "a shadow pass for each cascade");
+// Their names in `render --stats` and the benchmarks.
+inline constexpr std::array<const char*, kRenderPassCount> kRenderPassNames{
+    "shadow_near", "shadow_middle", "shadow_far", "sky_and_terrain",
+    "ground_cover", "tree_meshes", "impostors"};
 
 struct ForestStats {
   std::array<std::size_t, kLevelCount> instances{};  // per level, cross-fades counted twice
@@ -60,6 +82,10 @@ struct FrameStats {
   std::size_t groundTufts = 0;  // grass and herb tufts drawn
   double prepareMs = 0.0;       // culling, LOD choice, instance upload (CPU)
   double frameMs = 0.0;         // the whole frame until the GPU finished
+  // Each pass's time, where RenderOptions::timePasses asked for it (else zeros).
+  std::array<double, kRenderPassCount> passMs{};
+  // And the fragments each shaded, where the GL counts them (else zeros).
+  std::array<std::size_t, kRenderPassCount> passFragments{};
   std::size_t triangles() const { return forest.triangles + terrainTriangles; }
 };
 

@@ -216,6 +216,28 @@ Image frameImageOf(const GlName& texture, glm::ivec2 frame, int tile) {
 
 }  // namespace
 
+GlName ForestRenderer::frameExtentsTexture(const GlName& albedo, int levels) const {
+  const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  GlName texture(GlKind::Texture, id);
+  glTextureStorage3D(id, 1, GL_R32F, frames, frames, levels);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  for (int level = 0; level < levels; ++level) {
+    // The coverage of the mip level as the sprites read it (8 bits, after filtering).
+    const int size = frames * (tile >> level);
+    std::vector<std::uint8_t> rgba(std::size_t{4} * size * size);
+    glGetTextureImage(albedo.id(), level, GL_RGBA, GL_UNSIGNED_BYTE,
+                      static_cast<GLsizei>(rgba.size()), rgba.data());
+    std::vector<std::uint8_t> alpha(rgba.size() / 4);
+    for (std::size_t i = 0; i < alpha.size(); ++i) alpha[i] = rgba[4 * i + 3];
+    const std::vector<float> extents = frameExtents(alpha, frames, tile >> level);
+    glTextureSubImage3D(id, 0, 0, 0, level, frames, frames, 1, GL_RED, GL_FLOAT, extents.data());
+  }
+  return texture;
+}
+
 std::vector<Image> ForestRenderer::bakeFrameImages(int type, std::span<const glm::ivec2> frames) {
   const int tile = impostorSettings_.tilePixels;
   const int source = impostorSource(type);
@@ -299,6 +321,7 @@ void ForestRenderer::bakeAtlases(const std::vector<int>& sources) {
     atlas.albedo = copy(target.color, GL_SRGB8_ALPHA8);
     atlas.normal = copy(target.extraColors[0], GL_RGBA8);
     atlas.depth = copy(target.extraColors[1], GL_RGBA8);
+    atlas.extents = frameExtentsTexture(atlas.albedo, levels);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -513,6 +536,8 @@ void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
   program.set("uFrames", impostorSettings_.frames);
   program.set("uBlendFrames", impostorSettings_.blendFrames ? 1 : 0);
   program.set("uPixelsPerUnit", pixelsPerUnit);
+  program.set("uTilePixels", impostorSettings_.tilePixels);
+  program.set("uCropSprites", impostorSettings_.cropSprites ? 1 : 0);
   for (int t = 0; t < library_.typeCount(); ++t) {
     const Bucket bucket = bucketOf(t);
     if (bucket.count == 0) continue;
@@ -521,6 +546,7 @@ void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
     glBindTextureUnit(1, atlases_[source].albedo.id());
     glBindTextureUnit(2, atlases_[source].normal.id());
     glBindTextureUnit(5, atlases_[source].depth.id());
+    glBindTextureUnit(9, atlases_[source].extents.id());
     glDrawArraysInstancedBaseInstance(GL_POINTS, 0, 1, bucket.count, bucket.first);
   }
 }

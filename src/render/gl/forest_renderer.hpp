@@ -124,7 +124,12 @@ class ForestRenderer {
     // a texel lies toward the frame's camera from the plane through the centre, in
     // [-radius, radius] stored as [0, 1], so that an impostor's pixels know where they are.
     GlName albedo, normal, depth;
+    GlName extents;  // frameExtentsTexture()
   };
+  // Each frame's reach from its centre (frameExtents) at each of the albedo atlas's
+  // `levels` mip levels: an R32F array texture, a texel per frame, a layer per mip level.
+  // A sprite covers what the mip levels it reads reach, no more.
+  GlName frameExtentsTexture(const GlName& albedo, int levels) const;
   struct Bucket {  // instances of one type at one level, contiguous in the instance buffer
     GLuint first = 0;
     GLsizei count = 0;

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "core/error.hpp"
 #include "model/mesh/lod.hpp"
 
 namespace eco {
@@ -37,6 +38,26 @@ void frameAxes(glm::vec3 f, glm::vec3& right, glm::vec3& up) {
   const glm::vec3 reference = std::abs(f.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1);
   right = glm::normalize(glm::cross(reference, f));
   up = glm::cross(f, right);
+}
+
+std::vector<float> frameExtents(std::span<const std::uint8_t> alpha, int frames, int tile) {
+  const auto side = static_cast<std::size_t>(frames) * tile;
+  ECO_ASSERT(alpha.size() == side * side, "alpha=" << alpha.size() << " side=" << side);
+  std::vector<float> extents(static_cast<std::size_t>(frames) * frames, 0.0f);
+  const float half = 0.5f * static_cast<float>(tile);
+  for (std::size_t y = 0; y < side; ++y)
+    for (std::size_t x = 0; x < side; ++x) {
+      if (alpha[y * side + x] == 0) continue;
+      const int column = static_cast<int>(x) / tile, row = static_cast<int>(y) / tile;
+      // The texel's corner farthest from the frame's centre, in texels.
+      const float tx = static_cast<float>(static_cast<int>(x) % tile);
+      const float ty = static_cast<float>(static_cast<int>(y) % tile);
+      const float reach = std::max(std::max(std::abs(tx - half), std::abs(tx + 1.0f - half)),
+                                   std::max(std::abs(ty - half), std::abs(ty + 1.0f - half)));
+      float& extent = extents[static_cast<std::size_t>(row) * frames + column];
+      extent = std::max(extent, reach / half);
+    }
+  return extents;
 }
 
 int impostorBakeLevel(const Species& species, int bakeLod) {

@@ -7,6 +7,10 @@
 // shaders/common.glsl too.
 #pragma once
 
+#include <cstdint>
+#include <span>
+#include <vector>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -24,6 +28,9 @@ struct ImpostorSettings {
   // the picture turns smoothly with the view instead of jumping from frame to frame; false:
   // the nearest frame alone.
   bool blendFrames = true;
+  // Draw each sprite only as large as its frames' content reaches (frameExtents) instead of
+  // the bounding sphere's square: the same picture from fewer fragments. False: the square.
+  bool cropSprites = true;
 };
 
 // High quality bakes its frames from LOD0: far trees look like the full model (the 300 m
@@ -50,5 +57,14 @@ glm::ivec2 impostorFrame(glm::vec3 direction, int frames);
 glm::vec3 frameDirection(glm::ivec2 frame, int frames);
 // The right and up axes of the orthographic camera that bakes the frame of direction f.
 void frameAxes(glm::vec3 f, glm::vec3& right, glm::vec3& up);
+
+// How far each frame's tree reaches from the frame's centre: the largest of |x| and |y|
+// over its covered texels (alpha above 0, each texel's far corner), in units of the
+// frame's half side (0..1), frames in rows (column + row * frames). `alpha` is the atlas's
+// coverage, frames x tile texels a side, rows as OpenGL reads them. A sprite need cover
+// no more than this square: the bounding sphere's square it was drawn as holds mostly
+// empty texels, which cost a fragment each (seen from a high sun, a crown's disc fills a
+// tenth of it).
+std::vector<float> frameExtents(std::span<const std::uint8_t> alpha, int frames, int tile);
 
 }  // namespace eco

@@ -55,8 +55,8 @@ inline constexpr int kRenderPassCount = 7;
 static_assert(kShadowCascades == 3, "a shadow pass for each cascade");
 // Their names in `render --stats` and the benchmarks.
 inline constexpr std::array<const char*, kRenderPassCount> kRenderPassNames{
-    "shadow_near", "shadow_middle", "shadow_far", "sky_and_terrain",
-    "ground_cover", "tree_meshes", "impostors"};
+    "shadow_near",  "shadow_middle", "shadow_far", "sky_and_terrain",
+    "ground_cover", "tree_meshes",   "impostors"};
 
 struct ForestStats {
   std::array<std::size_t, kLevelCount> instances{};  // per level, cross-fades counted twice

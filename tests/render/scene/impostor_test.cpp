@@ -52,5 +52,26 @@ TEST(Impostor, ASpeciesThatBearsNeedlesBakesItsFramesFromLod0) {
   EXPECT_EQ(impostorSettingsFor(RenderQuality::Balanced).bakeLod, 1);
 }
 
+// Two by two frames of 8 texels (rows as OpenGL reads them, bottom up): each frame's reach
+// is the farthest corner of its covered texels from its centre, in half sides.
+TEST(Impostor, EachFramesExtentIsTheFarthestCornerOfItsCoveredTexels) {
+  const int frames = 2, tile = 8, side = frames * tile;
+  std::vector<std::uint8_t> alpha(side * side, 0);
+  auto cover = [&](int column, int row, int x, int y, std::uint8_t a) {
+    alpha[(row * tile + y) * side + column * tile + x] = a;
+  };
+  cover(0, 0, 4, 4, 255);  // the texel just past the centre: its far corner 1 texel out
+  cover(0, 0, 3, 3, 1);    // the one just before it, as faintly covered as can be
+  cover(1, 0, 0, 5, 40);   // the frame's left edge
+  cover(1, 1, 6, 1, 255);  // 3 texels below the centre at its far corner, 3 right of it
+  // frame (0, 1) stays empty
+  const std::vector<float> extents = frameExtents(alpha, frames, tile);
+  ASSERT_EQ(extents.size(), 4u);
+  EXPECT_FLOAT_EQ(extents[0], 0.25f);  // (column 0, row 0)
+  EXPECT_FLOAT_EQ(extents[1], 1.0f);   // (1, 0)
+  EXPECT_FLOAT_EQ(extents[2], 0.0f);   // (0, 1)
+  EXPECT_FLOAT_EQ(extents[3], 0.75f);  // (1, 1)
+}
+
 }  // namespace
 }  // namespace eco

@@ -8,6 +8,7 @@ flat in vec2 vKeep;
 flat in float vYaw;
 flat in vec2 vScale;
 flat in uint vCoverageSeed;
+flat in float vSpriteShare;
 
 layout(binding = 1) uniform sampler2D uAlbedoAtlas;
 layout(binding = 2) uniform sampler2D uNormalAtlas;
@@ -18,8 +19,10 @@ out vec4 outColor;
 
 void main() {
   if (!ditherKeeps(vKeep)) discard;
-  // gl_PointCoord runs downward; the atlas (OpenGL's convention) upward.
-  vec2 onSprite = vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y) * 2.0 - 1.0;
+  // gl_PointCoord runs downward; the atlas (OpenGL's convention) upward. The sprite covers
+  // vSpriteShare of the bounding sphere's square (impostor.vert), in whose units the rest
+  // is reckoned.
+  vec2 onSprite = vSpriteShare * (vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y) * 2.0 - 1.0);
   vec2 inFrame = onSprite * vFrameScale * 0.5 + 0.5;
   if (any(lessThan(inFrame, vec2(0.0))) || any(greaterThan(inFrame, vec2(1.0)))) discard;
   // The atlases hold values times coverage (alpha), filtered and mipmapped as such: a

@@ -9,6 +9,11 @@ uniform vec4 uBounds;  // xyz centre of the baked bounding sphere (tree frame), 
 uniform int uFrames;   // frames per side of the atlas
 uniform int uBlendFrames;      // 1: the three frames around the seen direction; 0: the nearest
 uniform float uPixelsPerUnit;  // viewport height / 2 times projection[1][1]
+uniform int uTilePixels;       // a frame's side in the atlas, in texels
+uniform int uCropSprites;      // 1: sprites as large as their frames' content; 0: the sphere's
+// Each frame's reach from its centre in units of its half side, at each mip level of the
+// albedo atlas: [column, row, level] (ForestRenderer::frameExtentsTexture).
+layout(binding = 9) uniform sampler2DArray uFrameExtents;
 
 flat out vec3 vCentre;
 // The sprite's world axes (right and up on the screen, toward the camera), each as long as
@@ -22,6 +27,7 @@ flat out vec2 vKeep;  // the dither thresholds this draw keeps: [lo, hi)
 flat out float vYaw;
 flat out vec2 vScale;  // the tree's horizontal and vertical scale of its type
 flat out uint vCoverageSeed;  // the tree's own alpha-test thresholds
+flat out float vSpriteShare;  // the sprite's side as a share of the bounding sphere's
 
 void main() {
   float yaw = iPositionYaw.w;
@@ -81,11 +87,31 @@ void main() {
   float diameter = 2.0 * radius;
 #ifdef SHADOW_PASS
   gl_Position = uLightViewProj * vec4(centreWorld, 1.0);
-  gl_PointSize = diameter * uPixelsPerUnit;  // orthographic
+  float diameterPixels = diameter * uPixelsPerUnit;  // orthographic
 #else
   gl_Position = uViewProj * vec4(centreWorld, 1.0);
   // The sphere's diameter on screen; the sprite is a screen-aligned square, which for a tree
   // this small differs from the frame's own plane by less than a pixel.
-  gl_PointSize = diameter * uPixelsPerUnit / max(gl_Position.w, 1e-3);
+  float diameterPixels = diameter * uPixelsPerUnit / max(gl_Position.w, 1e-3);
 #endif
+  // The sprite covers no more than the frames' content reaches at the mip levels its pixels
+  // read (trilinear filtering's two around the texels a pixel spans), plus the half texel
+  // of the coarser that bilinear filtering reads beyond it and a pixel to spare: its other
+  // pixels are transparent and would only cost fragments.
+  diameterPixels = max(diameterPixels, 1.0);
+  float texelsPerPixel =
+      float(uTilePixels) * max(vFrameScale.x, vFrameScale.y) / diameterPixels;
+  int levels = textureSize(uFrameExtents, 0).z;
+  int coarser = clamp(int(floor(log2(max(texelsPerPixel, 1.0)))) + 1, 0, levels - 1);
+  float extent = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    if (vWeight[i] <= 0.0) continue;
+    for (int level = max(coarser - 1, 0); level <= coarser; ++level)
+      extent = max(extent, texelFetch(uFrameExtents, ivec3(vCell[i], level), 0).r);
+  }
+  extent += exp2(float(coarser + 1)) / float(uTilePixels);
+  vSpriteShare = uCropSprites == 0
+                     ? 1.0
+                     : min(1.0, extent / min(vFrameScale.x, vFrameScale.y) + 2.0 / diameterPixels);
+  gl_PointSize = vSpriteShare * diameterPixels;
 }

@@ -374,6 +374,8 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
         shadowInView =
             frustum.intersectsSphere(centre - toSun * (0.5f * length), radius + 0.5f * length);
       }
+      // A tree whose shadow a finer map holds whole casts into no coarser one: every point
+      // under it reads that finer map (a third of the farthest map's sprites in a valley).
       for (std::size_t k = 0; shadowInView && k < cascades; ++k) {
         const ShadowBox& box = shadows[k];
         const glm::vec3 d = glm::abs(centre - box.centre);
@@ -382,7 +384,9 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
                            std::max(d.x, d.z) < box.halfSize_m + radius;
         if (!casts) continue;
         const int level = k == 0 && inView ? choices_[i].level : kLevelImpostor;
-        if (level >= 0) casts_[i * cascades + k] = static_cast<std::uint8_t>(1 + level);
+        if (level < 0) continue;
+        casts_[i * cascades + k] = static_cast<std::uint8_t>(1 + level);
+        if (holdsShadowsOf(box, centre, radius)) break;
       }
     }
   });

@@ -54,4 +54,13 @@ ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach
   return cascades;
 }
 
+bool holdsShadowsOf(const ShadowBox& box, glm::vec3 centre, float radius) {
+  const glm::vec4 p = box.lightViewProj * glm::vec4(centre, 1.0f);  // orthographic: w = 1
+  const glm::mat4& m = box.lightViewProj;
+  const float perMetre = glm::length(glm::vec3(m[0][0], m[1][0], m[2][0]));  // map units
+  const float texel = perMetre / box.mapPixelsPerMetre;
+  const float reach = radius * perMetre;
+  return std::abs(p.x) + reach <= 1.0f - texel && std::abs(p.y) + reach <= 1.0f - texel;
+}
+
 }  // namespace eco

@@ -38,4 +38,10 @@ struct ShadowReach {
 ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach reach,
                               int mapSize);
 
+// Whether every point a caster (a sphere) can shadow looks its shadow up in this map: the
+// caster's disc seen from the sun lies a texel inside the map's edge, where shadowAt() in
+// shaders/common.glsl takes the finest map holding the point. A coarser map then need not
+// hold the caster.
+bool holdsShadowsOf(const ShadowBox& box, glm::vec3 centre, float radius);
+
 }  // namespace eco

@@ -127,6 +127,37 @@ TEST_F(ShadowCasting, TreesSmallerThanACascadesTexelCastNothingThere) {
   EXPECT_EQ(renderer.prepare(forest, camera, 640, 360, {}, {&coarse, 1}).shadowCasterCount(), 0u);
 }
 
+// A tree whose shadow a finer map holds whole casts into no coarser map: every point it can
+// shadow reads the finer one. The row's cascades from its camera, 30 m to 600 m squares:
+// the trees in the nearest map cast once, the rest into each map that reaches them.
+TEST_F(ShadowCasting, ATreeWhoseShadowAFinerMapHoldsCastsIntoNoCoarserOne) {
+  LodSettings impostors;
+  impostors.forcedLevel = kLevelImpostor;
+  const ShadowCascades cascades =
+      shadowCascades(camera, kLowSouthernSun, {30.0f, 600.0f}, 2048);
+  const ForestStats stats = renderer.prepare(forest, camera, 640, 360, impostors, cascades);
+  std::size_t expected = 0;
+  for (std::size_t i = 0; i < forest.size(); ++i) {
+    const TreeType& type = library.type(forest.type[i]);
+    const glm::vec3 centre = forest.position[i] + glm::vec3(type.bounds);  // yaw 0, scale 1
+    for (const ShadowBox& box : cascades) {
+      const glm::vec3 d = glm::abs(centre - box.centre);
+      if (std::max(d.x, d.z) >= box.halfSize_m + type.bounds.w) continue;  // outside the square
+      ++expected;
+      if (holdsShadowsOf(box, centre, type.bounds.w)) break;
+    }
+  }
+  EXPECT_EQ(stats.shadowCasterCount(), expected);
+  // Some trees are held by a finer map, so fewer cast than the squares around them.
+  std::size_t inSquares = 0;
+  for (std::size_t i = 0; i < forest.size(); ++i)
+    for (const ShadowBox& box : cascades) {
+      const glm::vec3 d = glm::abs(forest.position[i] - box.centre);
+      inSquares += std::max(d.x, d.z) < box.halfSize_m;
+    }
+  EXPECT_LT(stats.shadowCasterCount(), inSquares);
+}
+
 TEST(ForestRenderer, BlendingTreesDrawBothTypesAndAbsentTreesNothing) {
   test::useHeadlessGl();
   const TreeLibrary& library = test::smallLibrary();

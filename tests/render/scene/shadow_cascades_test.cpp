@@ -79,5 +79,40 @@ TEST(ShadowCascades, KeepTheirTexelGridFixedInTheWorldAsTheCameraMoves) {
   }
 }
 
+// A map holds a caster's shadows where every point of the caster's disc seen from the sun
+// falls a texel inside its edge, as shadowAt() (shaders/common.glsl) asks of the points it
+// looks up there: then no coarser map need hold the caster.
+TEST(ShadowCascades, AMapHoldsTheShadowsOfACasterWhoseDiscLiesInside) {
+  const Camera camera = cameraLookingNorth();
+  const ShadowCascades c = shadowCascades(camera, kMorningSun, {50.0f, 1200.0f}, kMapSize);
+  const float texel = 1.0f / float(kMapSize);
+  EXPECT_TRUE(holdsShadowsOf(c[0], c[0].centre, 10.0f));
+  EXPECT_FALSE(holdsShadowsOf(c[0], c[0].centre, 80.0f));  // wider than the map
+  EXPECT_FALSE(holdsShadowsOf(c[0], c[1].centre + glm::vec3(0, 0, -200), 5.0f));
+  EXPECT_TRUE(holdsShadowsOf(c[2], c[1].centre + glm::vec3(0, 0, -200), 5.0f));
+  // Crowns of 8 m on a grid over the nearest map and around it: where the map holds one,
+  // the points around it, out to its radius across the sun's view, fall a texel inside.
+  glm::vec3 right = glm::normalize(glm::cross(-kMorningSun, glm::vec3(0, 1, 0)));
+  glm::vec3 up = glm::cross(right, -kMorningSun);
+  int held = 0, notHeld = 0;
+  for (float x = -120.0f; x <= 120.0f; x += 3.0f)
+    for (float z = -120.0f; z <= 120.0f; z += 3.0f) {
+      const glm::vec3 centre = c[0].centre + glm::vec3(x, 0.0f, z);
+      if (!holdsShadowsOf(c[0], centre, 8.0f)) {
+        ++notHeld;
+        continue;
+      }
+      ++held;
+      for (float a = 0.0f; a < 6.2832f; a += 0.5f) {
+        const glm::vec3 q =
+            mapCoordinates(c[0], centre + 8.0f * (std::cos(a) * right + std::sin(a) * up));
+        EXPECT_TRUE(q.x >= texel && q.x <= 1.0f - texel && q.y >= texel && q.y <= 1.0f - texel)
+            << x << "," << z;
+      }
+    }
+  EXPECT_GT(held, 100);
+  EXPECT_GT(notHeld, 100);
+}
+
 }  // namespace
 }  // namespace eco

@@ -36,8 +36,10 @@ void main() {
   for (int i = 0; i < 3; ++i) {
     if (vWeight[i] <= 0.0) continue;  // the same for the whole sprite
     vec2 uv = (vCell[i] + inFrame) / float(uFrames);
+#ifdef SHADOW_PASS
+    albedo.a += vWeight[i] * texture(uDepthAtlas, uv).a;
+#else
     albedo += vWeight[i] * texture(uAlbedoAtlas, uv);
-#ifndef SHADOW_PASS
     packedNormal += vWeight[i] * texture(uNormalAtlas, uv);
     depthAndSky += vWeight[i] * texture(uDepthAtlas, uv);
 #endif

@@ -95,7 +95,10 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
       const auto kind = static_cast<MaterialKind>(k);
       const eco::Material& source = sources[s * kMaterialKinds + k];
       Material& m = kinds[k];
-      if (source.texture) m.texture = makeTexture(*source.texture, source.repeat);
+      if (source.texture) {
+        m.texture = makeTexture(*source.texture, source.repeat);
+        m.coverage = makeLinearView(m.texture);
+      }
       m.baseColor = glm::vec4(linearFromSrgb(glm::vec3(source.baseColor)), source.baseColor.a);
       m.alphaMask = source.alphaMask;
       m.doubleSided = source.doubleSided;
@@ -112,7 +115,8 @@ void ForestRenderer::bindMaterial(const Program& program, int species, MaterialK
   program.set("uAlphaMask", m.alphaMask ? 1 : 0);
   program.set("uTranslucency", m.translucency);
   program.set("uLeafyNoise", kind == MaterialKind::Crown ? 1 : 0);
-  if (m.texture) glBindTextureUnit(0, m.texture.id());
+  const bool coverageOnly = &program == &meshShadowProgram_;
+  if (m.texture) glBindTextureUnit(0, coverageOnly ? m.coverage.id() : m.texture.id());
   if (m.doubleSided)
     glDisable(GL_CULL_FACE);
   else

@@ -114,6 +114,7 @@ class ForestRenderer {
   };
   struct Material {
     GlName texture;
+    GlName coverage;            // the texture's linear view: the shadow pass reads its alpha alone
     glm::vec4 baseColor{1.0f};  // linear
     bool alphaMask = false;
     bool doubleSided = false;

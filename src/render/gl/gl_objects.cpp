@@ -89,6 +89,23 @@ GlName makeTexture(const Image& image, bool repeat) {
   return texture;
 }
 
+GlName makeLinearView(const GlName& srgbTexture) {
+  GLint levels = 0;
+  glGetTextureParameteriv(srgbTexture.id(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+  GLuint id = 0;
+  glGenTextures(1, &id);  // a view takes a name never bound, so not glCreateTextures
+  glTextureView(id, GL_TEXTURE_2D, srgbTexture.id(), GL_RGBA8, 0, static_cast<GLuint>(levels), 0,
+                1);
+  // A view has sampling parameters of its own: the texture's.
+  for (GLenum parameter :
+       {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) {
+    GLint value = 0;
+    glGetTextureParameteriv(srgbTexture.id(), parameter, &value);
+    glTextureParameteri(id, parameter, value);
+  }
+  return {GlKind::Texture, id};
+}
+
 namespace {
 
 GlName makeFramebuffer() {

@@ -73,6 +73,10 @@ GlName makeTextureStorage(GLenum format, int width, int height, int levels = 1,
                           bool repeat = false);
 // An RGBA8 texture with mipmaps from an image (row 0 at the top, as glTF's uv expects).
 GlName makeTexture(const Image& image, bool repeat);
+// A view of an sRGB texture's storage (every mip level) as linear RGBA8: its alpha, texel
+// for texel, read without the decoding of its colour that an sRGB read costs each time on
+// a software renderer. No memory of its own.
+GlName makeLinearView(const GlName& srgbTexture);
 
 // sRGB colour plus depth. The shaders write linear colour, which OpenGL encodes as sRGB
 // (GL_FRAMEBUFFER_SRGB), so every target holds what a PNG or a screen expects.

@@ -133,8 +133,7 @@ TEST_F(ShadowCasting, TreesSmallerThanACascadesTexelCastNothingThere) {
 TEST_F(ShadowCasting, ATreeWhoseShadowAFinerMapHoldsCastsIntoNoCoarserOne) {
   LodSettings impostors;
   impostors.forcedLevel = kLevelImpostor;
-  const ShadowCascades cascades =
-      shadowCascades(camera, kLowSouthernSun, {30.0f, 600.0f}, 2048);
+  const ShadowCascades cascades = shadowCascades(camera, kLowSouthernSun, {30.0f, 600.0f}, 2048);
   const ForestStats stats = renderer.prepare(forest, camera, 640, 360, impostors, cascades);
   std::size_t expected = 0;
   for (std::size_t i = 0; i < forest.size(); ++i) {

@@ -21,6 +21,37 @@ TEST(GlObjects, WritePixelsIsTheInverseOfReadPixels) {
   EXPECT_EQ(readPixels(target).rgba, image.rgba);
 }
 
+// The linear view of an sRGB texture holds its alpha at every mip level, byte for byte, and
+// samples as the texture does (the same filters and wrapping); its colour is the texture's
+// bytes undecoded.
+TEST(GlObjects, ALinearViewOfAnSrgbTextureHoldsItsAlphaAtEveryLevel) {
+  test::useHeadlessGl();
+  Image image(16, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x)
+      image.set(x, y, {0.2f, x / 16.0f, 0.7f, ((x * 7 + y * 3) % 11) / 10.0f});
+  const GlName texture = makeTexture(image, true);
+  const GlName view = makeLinearView(texture);
+  GLint format = 0;
+  glGetTextureLevelParameteriv(view.id(), 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  EXPECT_EQ(format, GL_RGBA8);
+  for (int level = 0; level < 5; ++level) {
+    const int w = 16 >> level, h = std::max(8 >> level, 1);
+    std::vector<std::uint8_t> a(std::size_t{4} * w * h), b(a.size());
+    glGetTextureImage(texture.id(), level, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(a.size()), a.data());
+    glGetTextureImage(view.id(), level, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(b.size()), b.data());
+    EXPECT_EQ(a, b) << "level " << level;  // the stored bytes: alpha, and colour undecoded
+  }
+  for (GLenum parameter :
+       {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) {
+    GLint ofTexture = 0, ofView = 0;
+    glGetTextureParameteriv(texture.id(), parameter, &ofTexture);
+    glGetTextureParameteriv(view.id(), parameter, &ofView);
+    EXPECT_EQ(ofView, ofTexture) << parameter;
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 namespace {
 
 GLuint compile(GLenum type, const char* source) {

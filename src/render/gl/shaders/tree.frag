@@ -35,12 +35,16 @@ void main() {
 #ifndef BAKE
   if (!ditherKeeps(vKeep)) discard;
 #endif
+#ifdef SHADOW_PASS
+  // Only the coverage, where the material is masked: the texture bound is its linear view
+  // (ForestRenderer::Material::coverage), whose alpha is the same.
+  if (uAlphaMask != 0 &&
+      uBaseColor.a * (uHasTexture != 0 ? texture(uTexture, vUv).a : 1.0) < 0.5)
+    discard;
+#else
   vec4 albedo = uBaseColor;
   if (uHasTexture != 0) albedo *= texture(uTexture, vUv);
   if (uAlphaMask != 0 && albedo.a < 0.5) discard;
-#ifdef SHADOW_PASS
-  return;
-#else
   vec3 normal = normalize(vNormal);
   if (!gl_FrontFacing) normal = -normal;  // double-sided cards light from the side seen
   if (uLeafyNoise != 0) {

@@ -95,9 +95,9 @@ void main() {
   float diameterPixels = diameter * uPixelsPerUnit / max(gl_Position.w, 1e-3);
 #endif
   // The sprite covers no more than the frames' content reaches at the mip levels its pixels
-  // read (trilinear filtering's two around the texels a pixel spans), plus the half texel
-  // of the coarser that bilinear filtering reads beyond it and a pixel to spare: its other
-  // pixels are transparent and would only cost fragments.
+  // read (trilinear filtering's two around the texels a pixel spans), plus a texel of the
+  // coarser (bilinear filtering reads half of one beyond the last covered) and a pixel to
+  // spare: its other pixels are transparent and would only cost fragments.
   diameterPixels = max(diameterPixels, 1.0);
   float texelsPerPixel =
       float(uTilePixels) * max(vFrameScale.x, vFrameScale.y) / diameterPixels;

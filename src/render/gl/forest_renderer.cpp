@@ -363,7 +363,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       const bool inView = frustum.intersectsSphere(centre, radius);
       if (inView) choices_[i] = chooseLevel(pixels, lod);
       outside[i] = !inView;
-      // A tree casts into each cascade whose square its crown reaches (also from outside
+      // A tree casts into each cascade whose map its crown reaches (castsInto; also from outside
       // the view: its shadow may fall into it) and whose texels it covers. In the nearest it
       // casts with the level it is drawn at (the finer of a cross-fade), so its shadow has
       // the gaps and the density of the crown the viewer sees; elsewhere as a sprite.
@@ -383,10 +383,9 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       // coarser maps' fragments).
       for (std::size_t k = 0; shadowInView && k < cascades; ++k) {
         const ShadowBox& box = shadows[k];
-        const glm::vec3 d = glm::abs(centre - box.centre);
         const bool casts = box.halfSize_m > 0.0f && pixels >= lod.minPixels &&
                            height_m * box.mapPixelsPerMetre >= 1.0f &&
-                           std::max(d.x, d.z) < box.halfSize_m + radius;
+                           castsInto(box, centre, radius);
         if (!casts) continue;
         const int level = k == 0 && inView ? choices_[i].level : kLevelImpostor;
         if (level < 0) continue;

@@ -35,32 +35,59 @@ ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach
 
   ShadowCascades cascades;
   for (int c = 0; c < kShadowCascades; ++c) {
-    ShadowBox& box = cascades[c];
-    box.halfSize_m = nearest * std::pow(ratio, static_cast<float>(c) / (kShadowCascades - 1));
-    const float r = box.halfSize_m * kMapMargin;
-    const float texel = 2.0f * r / static_cast<float>(mapSize);
-    glm::vec3 centre = camera.position + ahead * (kAhead * box.halfSize_m);
+    const float halfSize = nearest * std::pow(ratio, static_cast<float>(c) / (kShadowCascades - 1));
+    const float texel = 2.0f * halfSize * kMapMargin / static_cast<float>(mapSize);
+    glm::vec3 centre = camera.position + ahead * (kAhead * halfSize);
     // Whole texels across the sun's view: the map's grid stays put in the world.
     const float x = glm::dot(centre, right), y = glm::dot(centre, up);
     centre +=
         right * (std::round(x / texel) * texel - x) + up * (std::round(y / texel) * texel - y);
-    box.centre = centre;
-    box.toSun = toSun;
-    box.mapPixelsPerMetre = static_cast<float>(mapSize) / (2.0f * r);
-    const glm::mat4 lightView =
-        glm::lookAt(centre + toSun * (0.5f * kLightDepth_m), centre, upHint);
-    box.lightViewProj = glm::ortho(-r, r, -r, r, 0.0f, kLightDepth_m) * lightView;
+    cascades[c] = shadowBox(centre, halfSize, toSun, mapSize);
   }
   return cascades;
 }
 
-bool holdsShadowsOf(const ShadowBox& box, glm::vec3 centre, float radius) {
+ShadowBox shadowBox(glm::vec3 centre, float halfSize_m, glm::vec3 toSun, int mapSize) {
+  const glm::vec3 upHint =
+      std::abs(toSun.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, -1.0f);
+  const float r = halfSize_m * kMapMargin;
+  ShadowBox box;
+  box.centre = centre;
+  box.halfSize_m = halfSize_m;
+  box.toSun = toSun;
+  box.mapPixelsPerMetre = static_cast<float>(mapSize) / (2.0f * r);
+  const glm::mat4 lightView = glm::lookAt(centre + toSun * (0.5f * kLightDepth_m), centre, upHint);
+  box.lightViewProj = glm::ortho(-r, r, -r, r, 0.0f, kLightDepth_m) * lightView;
+  return box;
+}
+
+namespace {
+
+// Where a caster's centre falls in the map's view (-1..1 across the map) and how far its
+// disc reaches there, and a texel, in the same units.
+struct InMap {
+  glm::vec2 centre;
+  float reach, texel;
+};
+InMap inMap(const ShadowBox& box, glm::vec3 centre, float radius) {
   const glm::vec4 p = box.lightViewProj * glm::vec4(centre, 1.0f);  // orthographic: w = 1
   const glm::mat4& m = box.lightViewProj;
   const float perMetre = glm::length(glm::vec3(m[0][0], m[1][0], m[2][0]));  // map units
-  const float texel = perMetre / box.mapPixelsPerMetre;
-  const float reach = radius * perMetre;
-  return std::abs(p.x) + reach <= 1.0f - texel && std::abs(p.y) + reach <= 1.0f - texel;
+  return {glm::vec2(p), radius * perMetre, perMetre / box.mapPixelsPerMetre};
+}
+
+}  // namespace
+
+bool holdsShadowsOf(const ShadowBox& box, glm::vec3 centre, float radius) {
+  const InMap q = inMap(box, centre, radius);
+  return std::abs(q.centre.x) + q.reach <= 1.0f - q.texel &&
+         std::abs(q.centre.y) + q.reach <= 1.0f - q.texel;
+}
+
+bool castsInto(const ShadowBox& box, glm::vec3 centre, float radius) {
+  const InMap q = inMap(box, centre, radius);
+  return std::abs(q.centre.x) - q.reach < 1.0f - q.texel &&
+         std::abs(q.centre.y) - q.reach < 1.0f - q.texel;
 }
 
 }  // namespace eco

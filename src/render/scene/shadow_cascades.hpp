@@ -38,6 +38,16 @@ struct ShadowReach {
 ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach reach,
                               int mapSize);
 
+// The square of half side `halfSize_m` around `centre` seen from the sun (unit, toward it),
+// with a map of `mapSize` texels a side (shadowCascades' boxes, and tests').
+ShadowBox shadowBox(glm::vec3 centre, float halfSize_m, glm::vec3 toSun, int mapSize);
+
+// Whether a caster (a sphere) may shadow a point that looks its shadow up in this map: its
+// disc seen from the sun reaches a texel inside the map's edge (shaders/common.glsl,
+// shadowAt). Casters are chosen by the map as the points are, so none of the map's points
+// lacks the shadow of a tree over it.
+bool castsInto(const ShadowBox& box, glm::vec3 centre, float radius);
+
 // Whether every point a caster (a sphere) can shadow looks its shadow up in this map: the
 // caster's disc seen from the sun lies a texel inside the map's edge, where shadowAt() in
 // shaders/common.glsl takes the finest map holding the point. A coarser map then need not

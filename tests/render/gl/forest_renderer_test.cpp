@@ -66,9 +66,11 @@ struct HeadlessGl {
 class ShadowCasting : public ::testing::Test, HeadlessGl {
  protected:
   ShadowCasting() { camera.position = worldFromMap(160, 20, 105); }
-  // A square over the whole row, of this many map texels per metre, lit from `toSun`.
+  // A square over the whole row, lit from `toSun`, whose map has this many texels a metre.
   static ShadowBox coveringTheRow(float mapPixelsPerMetre, glm::vec3 toSun) {
-    return {worldFromMap(160, 300, 100), 1000.0f, mapPixelsPerMetre, glm::mat4(1.0f), toSun};
+    ShadowBox box = shadowBox(worldFromMap(160, 300, 100), 1000.0f, toSun, 2048);
+    box.mapPixelsPerMetre = mapPixelsPerMetre;
+    return box;
   }
 
   const TreeLibrary& library = test::smallLibrary();
@@ -78,11 +80,30 @@ class ShadowCasting : public ::testing::Test, HeadlessGl {
   Camera camera;
 };
 
+// The trees cast into a map whose points their shadows may fall on: under a sun overhead,
+// those within the map's 75 m (1.5 times the square's half side, plus the crown) of north
+// 60, one every 20 m from north 26 up to 126; the one behind the camera shades no point in
+// view.
 TEST_F(ShadowCasting, OnlyTreesInTheShadowBoxCastShadows) {
-  const ShadowBox box{worldFromMap(160, 60, 100), 50.0f, 4.0f};
+  const ShadowBox box = shadowBox(worldFromMap(160, 60, 100), 50.0f, {0.0f, 1.0f, 0.0f}, 600);
   const ForestStats stats = renderer.prepare(forest, camera, 640, 360, {}, {&box, 1});
-  EXPECT_GT(stats.shadowCasterCount(), 0u);
-  EXPECT_LE(stats.shadowCasterCount(), 6u);  // trees within 50 m (plus crown) of north 60
+  EXPECT_EQ(stats.shadowCasterCount(), 6u);
+}
+
+// Every tree standing over a map's points casts into it, out to the map's edge beyond the
+// square (until this stop, trees were chosen by the square, and the points between the
+// square and the map's edge lost their trees' shadows). A tree 70 m from the square's
+// centre, under a sun overhead, casts into the map of a 50 m square; one 85 m away does not.
+TEST_F(ShadowCasting, TreesCastIntoTheMapOutToItsEdgeBeyondTheSquare) {
+  const ShadowBox box = shadowBox(worldFromMap(160, 60, 100), 50.0f, {0.0f, 1.0f, 0.0f}, 600);
+  const TreeType& type = library.type(forest.type[0]);
+  auto casts = [&](float north) {
+    Forest one;
+    one.add(library, forest.type[0], worldFromMap(160, north, 100), type.height_m, 0.0f, 1.0f, 1);
+    return renderer.prepare(one, camera, 640, 360, {}, {&box, 1}).shadowCasterCount();
+  };
+  EXPECT_EQ(casts(60.0f + 70.0f), 1u);
+  EXPECT_EQ(casts(60.0f + 75.0f + type.bounds.w + 1.0f), 0u);
 }
 
 // A tree's shadow has the gaps of the crown the viewer sees: in the nearest cascade it casts
@@ -91,16 +112,31 @@ TEST_F(ShadowCasting, OnlyTreesInTheShadowBoxCastShadows) {
 TEST_F(ShadowCasting, TreesCastWithTheLevelTheyAreDrawnAtInTheNearestCascade) {
   // A low sun in the south: the tree behind the camera throws its shadow into the view.
   const ShadowBox everything = coveringTheRow(1.0f, kLowSouthernSun);
-  const std::array<ShadowBox, 2> cascades{everything, everything};
+  const ShadowBox near = shadowBox(worldFromMap(160, 60, 100), 50.0f, kLowSouthernSun, 2048);
+  const std::array<ShadowBox, 2> cascades{near, everything};
   for (int level = 0; level < kLevelCount; ++level) {
     LodSettings lod;
     lod.forcedLevel = level;
     const ForestStats stats = renderer.prepare(forest, camera, 640, 360, lod, cascades);
-    for (int caster = 0; caster < kLevelCount; ++caster) {
-      // the 30 trees in view in the nearest; the one behind there, and all 31 in the other
-      const std::size_t expected = (caster == level ? 30u : 0u) + 32u * (caster == kLevelImpostor);
-      EXPECT_EQ(stats.shadowCasters[caster], expected) << "drawn at " << level;
+    // In the nearest, the trees in view that reach its map at their level, the one behind
+    // as a sprite; every tree whose shadow the nearest does not hold in the other, as a
+    // sprite.
+    std::array<std::size_t, kLevelCount> expected{};
+    std::size_t inNearest = 0;
+    for (std::size_t i = 0; i < forest.size(); ++i) {
+      const TreeType& type = library.type(forest.type[i]);
+      const glm::vec3 centre = forest.position[i] + glm::vec3(type.bounds);  // yaw 0, scale 1
+      const bool inView = i + 1 < forest.size();  // the last is behind the camera
+      if (castsInto(near, centre, type.bounds.w)) {
+        ++expected[inView ? level : kLevelImpostor];
+        ++inNearest;
+        if (holdsShadowsOf(near, centre, type.bounds.w)) continue;
+      }
+      ++expected[kLevelImpostor];
     }
+    ASSERT_GT(inNearest, 2u);
+    for (int caster = 0; caster < kLevelCount; ++caster)
+      EXPECT_EQ(stats.shadowCasters[caster], expected[caster]) << "drawn at " << level;
   }
   // Chosen by size: each level's casters are the trees drawn at it.
   const ForestStats bySize = renderer.prepare(forest, camera, 640, 360, {}, {&everything, 1});
@@ -140,21 +176,19 @@ TEST_F(ShadowCasting, ATreeWhoseShadowAFinerMapHoldsCastsIntoNoCoarserOne) {
     const TreeType& type = library.type(forest.type[i]);
     const glm::vec3 centre = forest.position[i] + glm::vec3(type.bounds);  // yaw 0, scale 1
     for (const ShadowBox& box : cascades) {
-      const glm::vec3 d = glm::abs(centre - box.centre);
-      if (std::max(d.x, d.z) >= box.halfSize_m + type.bounds.w) continue;  // outside the square
+      if (!castsInto(box, centre, type.bounds.w)) continue;
       ++expected;
       if (holdsShadowsOf(box, centre, type.bounds.w)) break;
     }
   }
   EXPECT_EQ(stats.shadowCasterCount(), expected);
-  // Some trees are held by a finer map, so fewer cast than the squares around them.
-  std::size_t inSquares = 0;
+  // Some trees are held by a finer map, so fewer cast than the maps they reach.
+  std::size_t inMaps = 0;
   for (std::size_t i = 0; i < forest.size(); ++i)
-    for (const ShadowBox& box : cascades) {
-      const glm::vec3 d = glm::abs(forest.position[i] - box.centre);
-      inSquares += std::max(d.x, d.z) < box.halfSize_m;
-    }
-  EXPECT_LT(stats.shadowCasterCount(), inSquares);
+    for (const ShadowBox& box : cascades)
+      inMaps += castsInto(box, forest.position[i] + glm::vec3(library.type(forest.type[i]).bounds),
+                          library.type(forest.type[i]).bounds.w);
+  EXPECT_LT(stats.shadowCasterCount(), inMaps);
 }
 
 TEST(ForestRenderer, BlendingTreesDrawBothTypesAndAbsentTreesNothing) {

@@ -19,6 +19,11 @@ constexpr float kMapMargin = 1.5f;
 // behind the camera (tall trees there shade the near ground) and mostly ahead.
 constexpr float kAhead = 0.7f;
 
+// The up of the sun's view: the vertical, unless the sun stands (nearly) overhead.
+glm::vec3 lightUpHint(glm::vec3 toSun) {
+  return std::abs(toSun.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, -1.0f);
+}
+
 }  // namespace
 
 ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach reach,
@@ -26,8 +31,7 @@ ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach
   glm::vec3 ahead = camera.forward();
   ahead.y = 0.0f;
   ahead = glm::length(ahead) > 1e-4f ? glm::normalize(ahead) : glm::vec3(0.0f, 0.0f, -1.0f);
-  const glm::vec3 upHint =
-      std::abs(toSun.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, -1.0f);
+  const glm::vec3 upHint = lightUpHint(toSun);
   const glm::vec3 right = glm::normalize(glm::cross(-toSun, upHint));
   const glm::vec3 up = glm::cross(right, -toSun);
   const float nearest = std::min(reach.near_m, reach.range_m);
@@ -48,8 +52,7 @@ ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach
 }
 
 ShadowBox shadowBox(glm::vec3 centre, float halfSize_m, glm::vec3 toSun, int mapSize) {
-  const glm::vec3 upHint =
-      std::abs(toSun.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, -1.0f);
+  const glm::vec3 upHint = lightUpHint(toSun);
   const float r = halfSize_m * kMapMargin;
   ShadowBox box;
   box.centre = centre;

@@ -363,13 +363,13 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       const bool inView = frustum.intersectsSphere(centre, radius);
       if (inView) choices_[i] = chooseLevel(pixels, lod);
       outside[i] = !inView;
-      // A tree casts into each cascade whose map its crown reaches (castsInto; also from outside
-      // the view: its shadow may fall into it) and whose texels it covers. In the nearest it
-      // casts with the level it is drawn at (the finer of a cross-fade), so its shadow has
-      // the gaps and the density of the crown the viewer sees; elsewhere as a sprite.
-      // Only a tree whose shadow can reach the view casts: the sphere around the crown's
-      // shadow on level ground below the stem base (swept from the crown along the sun by
-      // its height over the sun's elevation) must meet the frustum.
+      // A tree casts into each cascade whose map its crown reaches (shadowHeldBy; also from
+      // outside the view: its shadow may fall into it) and whose texels it covers. In the nearest
+      // it casts with the level it is drawn at (the finer of a cross-fade), so its shadow has the
+      // gaps and the density of the crown the viewer sees; elsewhere as a sprite. Only a tree whose
+      // shadow can reach the view casts: the sphere around the crown's shadow on level ground below
+      // the stem base (swept from the crown along the sun by its height over the sun's elevation)
+      // must meet the frustum.
       bool shadowInView = false;
       if (cascades > 0) {
         const glm::vec3 toSun = shadows[0].toSun;
@@ -383,14 +383,15 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       // coarser maps' fragments).
       for (std::size_t k = 0; shadowInView && k < cascades; ++k) {
         const ShadowBox& box = shadows[k];
-        const bool casts = box.halfSize_m > 0.0f && pixels >= lod.minPixels &&
-                           height_m * box.mapPixelsPerMetre >= 1.0f &&
-                           castsInto(box, centre, radius);
-        if (!casts) continue;
+        if (box.halfSize_m <= 0.0f || pixels < lod.minPixels ||
+            height_m * box.mapPixelsPerMetre < 1.0f)
+          continue;
+        const MapHolds held = shadowHeldBy(box, centre, radius);
+        if (held == MapHolds::none) continue;
         const int level = k == 0 && inView ? choices_[i].level : kLevelImpostor;
         if (level < 0) continue;
         casts_[i * cascades + k] = static_cast<std::uint8_t>(1 + level);
-        if (holdsShadowsOf(box, centre, radius)) break;
+        if (held == MapHolds::all) break;
       }
     }
   });

@@ -64,33 +64,16 @@ ShadowBox shadowBox(glm::vec3 centre, float halfSize_m, glm::vec3 toSun, int map
   return box;
 }
 
-namespace {
-
-// Where a caster's centre falls in the map's view (-1..1 across the map) and how far its
-// disc reaches there, and a texel, in the same units.
-struct InMap {
-  glm::vec2 centre;
-  float reach, texel;
-};
-InMap inMap(const ShadowBox& box, glm::vec3 centre, float radius) {
+MapHolds shadowHeldBy(const ShadowBox& box, glm::vec3 centre, float radius) {
   const glm::vec4 p = box.lightViewProj * glm::vec4(centre, 1.0f);  // orthographic: w = 1
   const glm::mat4& m = box.lightViewProj;
-  const float perMetre = glm::length(glm::vec3(m[0][0], m[1][0], m[2][0]));  // map units
-  return {glm::vec2(p), radius * perMetre, perMetre / box.mapPixelsPerMetre};
-}
-
-}  // namespace
-
-bool holdsShadowsOf(const ShadowBox& box, glm::vec3 centre, float radius) {
-  const InMap q = inMap(box, centre, radius);
-  return std::abs(q.centre.x) + q.reach <= 1.0f - q.texel &&
-         std::abs(q.centre.y) + q.reach <= 1.0f - q.texel;
-}
-
-bool castsInto(const ShadowBox& box, glm::vec3 centre, float radius) {
-  const InMap q = inMap(box, centre, radius);
-  return std::abs(q.centre.x) - q.reach < 1.0f - q.texel &&
-         std::abs(q.centre.y) - q.reach < 1.0f - q.texel;
+  // Across the map -1..1: the centre's farther coordinate, the disc's reach and the edge.
+  const float perMetre = glm::length(glm::vec3(m[0][0], m[1][0], m[2][0]));
+  const float offset = std::max(std::abs(p.x), std::abs(p.y));
+  const float reach = radius * perMetre;
+  const float edge = 1.0f - perMetre / box.mapPixelsPerMetre;  // a texel inside
+  if (offset - reach >= edge) return MapHolds::none;
+  return offset + reach <= edge ? MapHolds::all : MapHolds::some;
 }
 
 }  // namespace eco

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -42,16 +43,15 @@ ShadowCascades shadowCascades(const Camera& camera, glm::vec3 toSun, ShadowReach
 // with a map of `mapSize` texels a side (shadowCascades' boxes, and tests').
 ShadowBox shadowBox(glm::vec3 centre, float halfSize_m, glm::vec3 toSun, int mapSize);
 
-// Whether a caster (a sphere) may shadow a point that looks its shadow up in this map: its
-// disc seen from the sun reaches a texel inside the map's edge (shaders/common.glsl,
-// shadowAt). Casters are chosen by the map as the points are, so none of the map's points
-// lacks the shadow of a tree over it.
-bool castsInto(const ShadowBox& box, glm::vec3 centre, float radius);
-
-// Whether every point a caster (a sphere) can shadow looks its shadow up in this map: the
-// caster's disc seen from the sun lies a texel inside the map's edge, where shadowAt() in
-// shaders/common.glsl takes the finest map holding the point. A coarser map then need not
-// hold the caster.
-bool holdsShadowsOf(const ShadowBox& box, glm::vec3 centre, float radius);
+// How much of a caster's (a sphere's) shadow a map holds, judged by its disc seen from the
+// sun against the map's edge less a texel, the test shadowAt() in shaders/common.glsl
+// applies to the points it looks up there (it takes the finest map holding a point):
+//   none  the disc lies outside: no point that reads this map lies under the caster;
+//   some  the disc reaches inside: cast into this map, so none of its points lacks the shadow
+//         of a tree over it (casters are chosen as the points are);
+//   all   the disc lies inside: every point the caster can shadow reads this map, so no
+//         coarser map need hold it.
+enum class MapHolds : std::uint8_t { none, some, all };
+MapHolds shadowHeldBy(const ShadowBox& box, glm::vec3 centre, float radius);
 
 }  // namespace eco

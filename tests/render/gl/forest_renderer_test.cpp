@@ -127,10 +127,11 @@ TEST_F(ShadowCasting, TreesCastWithTheLevelTheyAreDrawnAtInTheNearestCascade) {
       const TreeType& type = library.type(forest.type[i]);
       const glm::vec3 centre = forest.position[i] + glm::vec3(type.bounds);  // yaw 0, scale 1
       const bool inView = i + 1 < forest.size();  // the last is behind the camera
-      if (castsInto(near, centre, type.bounds.w)) {
+      const MapHolds held = shadowHeldBy(near, centre, type.bounds.w);
+      if (held != MapHolds::none) {
         ++expected[inView ? level : kLevelImpostor];
         ++inNearest;
-        if (holdsShadowsOf(near, centre, type.bounds.w)) continue;
+        if (held == MapHolds::all) continue;
       }
       ++expected[kLevelImpostor];
     }
@@ -176,9 +177,10 @@ TEST_F(ShadowCasting, ATreeWhoseShadowAFinerMapHoldsCastsIntoNoCoarserOne) {
     const TreeType& type = library.type(forest.type[i]);
     const glm::vec3 centre = forest.position[i] + glm::vec3(type.bounds);  // yaw 0, scale 1
     for (const ShadowBox& box : cascades) {
-      if (!castsInto(box, centre, type.bounds.w)) continue;
+      const MapHolds held = shadowHeldBy(box, centre, type.bounds.w);
+      if (held == MapHolds::none) continue;
       ++expected;
-      if (holdsShadowsOf(box, centre, type.bounds.w)) break;
+      if (held == MapHolds::all) break;
     }
   }
   EXPECT_EQ(stats.shadowCasterCount(), expected);
@@ -186,8 +188,9 @@ TEST_F(ShadowCasting, ATreeWhoseShadowAFinerMapHoldsCastsIntoNoCoarserOne) {
   std::size_t inMaps = 0;
   for (std::size_t i = 0; i < forest.size(); ++i)
     for (const ShadowBox& box : cascades)
-      inMaps += castsInto(box, forest.position[i] + glm::vec3(library.type(forest.type[i]).bounds),
-                          library.type(forest.type[i]).bounds.w);
+      inMaps +=
+          shadowHeldBy(box, forest.position[i] + glm::vec3(library.type(forest.type[i]).bounds),
+                       library.type(forest.type[i]).bounds.w) != MapHolds::none;
   EXPECT_LT(stats.shadowCasterCount(), inMaps);
 }
 

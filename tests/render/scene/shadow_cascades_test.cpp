@@ -86,10 +86,10 @@ TEST(ShadowCascades, AMapHoldsTheShadowsOfACasterWhoseDiscLiesInside) {
   const Camera camera = cameraLookingNorth();
   const ShadowCascades c = shadowCascades(camera, kMorningSun, {50.0f, 1200.0f}, kMapSize);
   const float texel = 1.0f / float(kMapSize);
-  EXPECT_TRUE(holdsShadowsOf(c[0], c[0].centre, 10.0f));
-  EXPECT_FALSE(holdsShadowsOf(c[0], c[0].centre, 80.0f));  // wider than the map
-  EXPECT_FALSE(holdsShadowsOf(c[0], c[1].centre + glm::vec3(0, 0, -200), 5.0f));
-  EXPECT_TRUE(holdsShadowsOf(c[2], c[1].centre + glm::vec3(0, 0, -200), 5.0f));
+  EXPECT_EQ(shadowHeldBy(c[0], c[0].centre, 10.0f), MapHolds::all);
+  EXPECT_EQ(shadowHeldBy(c[0], c[0].centre, 80.0f), MapHolds::some);  // wider than the map
+  EXPECT_EQ(shadowHeldBy(c[0], c[1].centre + glm::vec3(0, 0, -200), 5.0f), MapHolds::none);
+  EXPECT_EQ(shadowHeldBy(c[2], c[1].centre + glm::vec3(0, 0, -200), 5.0f), MapHolds::all);
   // Crowns of 8 m on a grid over the nearest map and around it: where the map holds one,
   // the points around it, out to its radius across the sun's view, fall a texel inside.
   glm::vec3 right = glm::normalize(glm::cross(-kMorningSun, glm::vec3(0, 1, 0)));
@@ -98,7 +98,7 @@ TEST(ShadowCascades, AMapHoldsTheShadowsOfACasterWhoseDiscLiesInside) {
   for (float x = -120.0f; x <= 120.0f; x += 3.0f)
     for (float z = -120.0f; z <= 120.0f; z += 3.0f) {
       const glm::vec3 centre = c[0].centre + glm::vec3(x, 0.0f, z);
-      if (!holdsShadowsOf(c[0], centre, 8.0f)) {
+      if (shadowHeldBy(c[0], centre, 8.0f) != MapHolds::all) {
         ++notHeld;
         continue;
       }

@@ -1,9 +1,12 @@
 #include "app/view_command.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <memory>
+
+#include <fmt/format.h>
 
 #include "app/scene_source.hpp"
 #include "app/view_options.hpp"
@@ -41,6 +44,19 @@ void saveScreenshot(const RenderTarget& target, const std::string& file) {
   if (target.width == 0) return;  // nothing drawn yet
   writeRgb8Image(file, readPixels(target));
   std::cerr << "ecoforest view: saved " << file << "\n";
+}
+
+// The frame's size at a share of the window's width and height, at least a pixel.
+FrameSize atResolution(FrameSize window, double resolution) {
+  return {std::max(1, static_cast<int>(std::lround(window.width * resolution))),
+          std::max(1, static_cast<int>(std::lround(window.height * resolution)))};
+}
+
+// The shadow maps' side at that share: their texels keep their size on the screen. In
+// steps of 128 texels, so that small moves of the resolution do not reallocate them.
+int shadowMapSizeAt(double resolution) {
+  const double full = RenderOptions{}.shadowMapSize;
+  return std::max(128, static_cast<int>(std::lround(full * resolution / 128.0)) * 128);
 }
 
 // The snapshots of a run, each read once when first shown.
@@ -105,16 +121,37 @@ void runView(const ViewArgs& args) {
                               args.view.view == "ground");
   RenderTarget target;
   FrameStats stats;
-  double lastTime = window.seconds();
+  bool tookScreenshot = false;
+  // A screenshot is the frame at the window's full resolution, drawn anew where the view
+  // draws fewer pixels to hold its target.
+  const auto saveFullScreenshot = [&](FrameSize size) {
+    if (target.width == size.width && target.height == size.height) {
+      saveScreenshot(target, args.screenshot);
+    } else if (size.width > 0 && size.height > 0) {
+      const RenderTarget full =
+          RenderTarget::create(size.width, size.height, 0, args.view.antialias);
+      RenderOptions fullOptions = options;
+      fullOptions.shadowMapSize = RenderOptions{}.shadowMapSize;
+      renderer->render(&forest, controller.camera(), fullOptions, full);
+      saveScreenshot(full, args.screenshot);
+    }
+    tookScreenshot = true;
+  };
+  double lastTime = window.seconds(), lastFrame_ms = 0.0;
+  int shown = 0;
   for (int frame = 1; !window.shouldClose(); ++frame) {
     const ViewInput& input = window.beginFrame();
     const double now = window.seconds();
+    lastFrame_ms = 1000.0 * (now - lastTime);
     // The first frames build the renderer's caches, and a frame that uploaded levels or baked
-    // impostor atlases (types it was the first to draw so) measured setup, not drawing.
-    if (budget && frame > 2 && stats.forest.setupMs() == 0.0) {
-      budget->update(1000.0 * (now - lastTime));
+    // impostor atlases (types it was the first to draw so) measured setup, not drawing; one
+    // that took a screenshot drew two frames.
+    if (budget && frame > 2 && stats.forest.setupMs() == 0.0 && !tookScreenshot) {
+      budget->update(lastFrame_ms);
       options.lod.switchPixels = budget->switchPixels();
+      options.shadowMapSize = shadowMapSizeAt(budget->resolution());
     }
+    tookScreenshot = false;
     // Capped so that a stall (a snapshot loading) does not fling the camera, but above the
     // frame time of llvmpipe at a few frames per second.
     const float dt = static_cast<float>(std::min(now - lastTime, 0.5));
@@ -142,17 +179,26 @@ void runView(const ViewArgs& args) {
 
     const FrameSize size = window.framebufferSize();
     if (size.width > 0 && size.height > 0) {
-      if (target.width != size.width || target.height != size.height)
-        target = RenderTarget::create(size.width, size.height, 0, args.view.antialias);
+      const FrameSize drawn = atResolution(size, budget ? budget->resolution() : 1.0);
+      if (target.width != drawn.width || target.height != drawn.height)
+        target = RenderTarget::create(drawn.width, drawn.height, 0, args.view.antialias);
       stats = renderer->render(&forest, controller.camera(), options, target);
     }
-    if (screenshot) saveScreenshot(target, args.screenshot);
+    if (screenshot) saveFullScreenshot(size);
     window.present(target);
+    ++shown;
     if (args.frames > 0 && frame >= args.frames) {
-      saveScreenshot(target, args.screenshot);
+      if (!screenshot) saveFullScreenshot(size);
       break;
     }
   }
+  // Where the frame rate ended up, for scripts that drive the view (--frames) and measure it.
+  std::cerr << fmt::format("ecoforest view: {} frames, the last {:.0f} ms", shown, lastFrame_ms);
+  if (budget)
+    std::cerr << fmt::format(" (target {:.0f} ms{}): LOD sizes x{:.2f}, resolution {:.0f} %",
+                             budget->target_ms(), budget->cannotReach() ? ", not reachable" : "",
+                             budget->scale(), 100.0 * budget->resolution());
+  std::cerr << "\n";
 }
 
 }  // namespace

@@ -53,8 +53,11 @@ PanelChanges drawViewPanel(ViewState& state, const std::vector<std::string>& spe
   ImGui::Text("frame %.1f ms, prepare %.1f ms", stats.frameMs, stats.prepareMs);
   if (budget) {
     ImGui::Text("target %.0f fps: LOD sizes x%.2f", 1000.0 / budget->target_ms(), budget->scale());
+    if (budget->resolution() < 1.0)
+      ImGui::Text("resolution %.0f %% of the window", 100.0 * budget->resolution());
     if (budget->cannotReach())
-      ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "not reachable: coarsest levels");
+      ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f),
+                         "not reachable: coarsest levels, lowest resolution");
   }
   changed.screenshot = ImGui::Button("screenshot (P)");
   ImGui::End();

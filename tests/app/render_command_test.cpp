@@ -145,6 +145,24 @@ TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
   EXPECT_EQ(pngSize(shot), std::make_pair(400, 300));
 }
 
+// A frame-time target no frame can reach: the view coarsens the levels, then draws fewer
+// pixels down to a quarter of the window's width and height, says so, and its screenshot is
+// still the window's full size.
+TEST(ViewCommand, AnUnreachableTargetLowersTheResolutionButNotTheScreenshots) {
+  if (eco::test::runCommand("command -v xvfb-run").exitCode != 0)
+    GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb); the view window is not tested";
+  const auto shot = eco::test::freshDirectory("app_view_budget") / "view.png";
+  CommandResult r = eco::test::runCommand(
+      std::string(ECOFOREST_X_WINDOW_ENV) + "xvfb-run -a -s '-screen 0 800x600x24' " +
+      std::string(ECOFOREST_EXE) + " view " + shortDefaultRun().string() +
+      " --size 400x300 --frames 14 --target-fps 1000 --view low --screenshot " + shot.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("14 frames"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("not reachable): LOD sizes x64.00, resolution 25 %"), std::string::npos)
+      << r.output;
+  EXPECT_EQ(pngSize(shot), std::make_pair(400, 300));
+}
+
 // A missing display is the machine's, not the input's: exit code 3 (README, "Exit codes").
 TEST(ViewCommand, WithoutADisplayItSaysSoAndExitsThree) {
   CommandResult r = eco::test::runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " +

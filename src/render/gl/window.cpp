@@ -116,10 +116,17 @@ FrameSize Window::framebufferSize() const {
 
 void Window::present(const RenderTarget& target) {
   if (target.width > 0) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer.id());
+    // A target smaller than the window (view's dynamic resolution) is magnified, filtered;
+    // a multisampled one is resolved first, since one blit cannot do both.
+    const FrameSize window = framebufferSize();
+    const bool magnified = window.width != target.width || window.height != target.height;
+    if (magnified) target.resolve();
+    const GLuint source =
+        magnified && target.samples > 1 ? target.resolved.id() : target.framebuffer.id();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, target.width, target.height, 0, 0, target.width, target.height,
-                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, target.width, target.height, 0, 0, window.width, window.height,
+                      GL_COLOR_BUFFER_BIT, magnified ? GL_LINEAR : GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDisable(GL_FRAMEBUFFER_SRGB);  // ImGui's colours are already sRGB
   }

@@ -29,7 +29,8 @@ class Window {
   const ViewInput& beginFrame();
   double seconds() const;  // since the window opened
   FrameSize framebufferSize() const;
-  // Copies the target onto the window, draws the ImGui frame over it and shows the result.
+  // Copies the target onto the window (magnified where it is smaller), draws the ImGui frame
+  // over it and shows the result.
   void present(const RenderTarget& target);
 
  private:

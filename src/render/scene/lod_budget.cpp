@@ -15,14 +15,29 @@ LodBudget::LodBudget(std::array<float, 3> baseSwitchPixels, double targetFrame_m
 void LodBudget::update(double frame_ms) {
   if (!(frame_ms > 0.0)) return;  // no measurement (the first frame, a minimised window)
   const double ratio = frame_ms / target_ms_;
-  cannotReach_ = scale_ >= kMaxScale && ratio > 1.0 + kTolerance;
-  if (std::abs(ratio - 1.0) <= kTolerance) return;
+  const bool coarsest = scale_ >= kMaxScale;
+  cannotReach_ = coarsest && resolution_ <= kMinResolution && ratio > 1.0 + kTolerance;
+  if (std::abs(ratio - 1.0) <= kTolerance) {
+    streak_ = 0;
+    return;
+  }
   // A frame's cost falls roughly with the square of the switching distances' inverse (the
-  // trees at a level fill an area), so the square root of the ratio moves the sizes about
-  // to the target in one step; the step is capped so that one slow frame (a snapshot
-  // loading) does not throw the detail away.
-  const double step = std::clamp(std::sqrt(ratio), 1.0 / 1.5, 1.5);
-  scale_ = std::clamp(scale_ * step, kMinScale, kMaxScale);
+  // trees at a level fill an area), and with the square of the resolution (the pixels), so
+  // the square root of the ratio moves either about to the target in one step. The step is
+  // capped so that one slow frame (a snapshot loading) does not throw the detail away, and
+  // the cap widens with each frame in a row on the same side of the target, so that a scene
+  // that stays slow (seconds a frame on llvmpipe) is followed in a few frames, not dozens.
+  const int side = ratio > 1.0 ? 1 : -1;
+  streak_ = streak_ * side > 0 ? streak_ + side : side;
+  const double cap = std::min(std::pow(kFirstStep, std::abs(streak_)), kLargestStep);
+  const double step = std::clamp(std::sqrt(ratio), 1.0 / cap, cap);
+  // Over the target: coarser levels first, then fewer pixels. Under it: the pixels back
+  // first (a magnified picture blurs every tree), then finer levels.
+  const bool resolutionMoves = ratio > 1.0 ? coarsest : resolution_ < 1.0;
+  if (resolutionMoves)
+    resolution_ = std::clamp(resolution_ / step, kMinResolution, 1.0);
+  else
+    scale_ = std::clamp(scale_ * step, kMinScale, kMaxScale);
 }
 
 std::array<float, 3> LodBudget::switchPixels() const {

@@ -1,8 +1,11 @@
 // The level-of-detail distances `ecoforest view` chooses each frame to hold a frame-time
 // target: one factor scales every switching size of the quality it starts from. Above the
 // target it grows (coarser levels nearer), below it shrinks (finer levels farther out), so
-// a GPU shows LOD0 far out and llvmpipe stays interactive. Apart from any window or OpenGL,
-// so that it can be tested with a model of a frame's cost.
+// a GPU shows LOD0 far out and llvmpipe stays interactive. Where even the coarsest levels
+// are over the target, the frame is drawn at a lower resolution and magnified (dynamic
+// resolution, as game engines hold their frame rate), its shadow maps with it; below the
+// target the resolution comes back first, before the detail. Apart from any window or
+// OpenGL, so that it can be tested with a model of a frame's cost.
 #pragma once
 
 #include <array>
@@ -19,22 +22,33 @@ class LodBudget {
 
   std::array<float, 3> switchPixels() const;
   double scale() const { return scale_; }
+  // The share of the window's width and height the frame is drawn at, kMinResolution..1.
+  double resolution() const { return resolution_; }
   double target_ms() const { return target_ms_; }
-  // The sizes are as coarse as they go and the last frame was still over the target by
-  // more than the tolerance: the frame time shown is the best this scene reaches.
+  // The sizes are as coarse as they go, the resolution as low, and the last frame was
+  // still over the target by more than the tolerance: the frame time shown is the best
+  // this scene reaches.
   bool cannotReach() const { return cannotReach_; }
 
   // Frames within this share of the target leave the sizes alone (no hunting on noise).
   static constexpr double kTolerance = 0.1;
+  // The most a frame moves the sizes or the resolution by: kFirstStep after one frame off
+  // the target, its powers after several in a row on the same side, up to kLargestStep.
+  static constexpr double kFirstStep = 1.5, kLargestStep = 4.0;
   // At the finest, LOD0 reaches trees 1/16 of the base size; at the coarsest every mesh
   // level is 64 times farther in (a balanced 600-pixel LOD0 switch becomes 38,400 pixels:
   // nothing but impostors).
   static constexpr double kMinScale = 1.0 / 16.0, kMaxScale = 64.0;
+  // A quarter of the width and height: 320 x 180 pixels of a 1280 x 720 window, a sixteenth
+  // of the fragments, still a picture one can steer by.
+  static constexpr double kMinResolution = 0.25;
 
  private:
   std::array<float, 3> base_;
   double target_ms_;
   double scale_ = 1.0;
+  double resolution_ = 1.0;
+  int streak_ = 0;  // frames in a row over (> 0) or under (< 0) the target
   bool cannotReach_ = false;
 };
 

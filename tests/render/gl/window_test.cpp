@@ -43,7 +43,10 @@ TEST(Window, OpensDrawsAFrameAndClosesItself) {
     EXPECT_TRUE(input.pressed.empty());
     const FrameSize size = window.framebufferSize();
     EXPECT_EQ(size, (FrameSize{96, 64}));
-    const RenderTarget target = RenderTarget::create(size.width, size.height);
+    // The second window shows a target of half its size, magnified (view's dynamic
+    // resolution).
+    const RenderTarget target =
+        RenderTarget::create(size.width / (round + 1), size.height / (round + 1));
     target.bind();
     glClearColor(0.2f, 0.4f, 0.6f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);

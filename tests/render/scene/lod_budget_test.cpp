@@ -8,18 +8,23 @@
 namespace eco {
 namespace {
 
+using FrameCost = std::function<double(const LodBudget&)>;
+
 // A frame's cost: a floor (terrain, impostors, the panel) and the meshes, whose number at
-// each level grows with the area inside its switching distance, 1 / scale^2.
-std::function<double(double)> frameCost(double floor_ms, double meshes_ms) {
-  return [=](double scale) { return floor_ms + meshes_ms / (scale * scale); };
+// each level grows with the area inside its switching distance, 1 / scale^2; with
+// `pixels_ms`, the share of the floor that scales with the pixels drawn, resolution^2.
+FrameCost frameCost(double floor_ms, double meshes_ms, double pixels_ms = 0.0) {
+  return [=](const LodBudget& b) {
+    const double r = b.resolution(), scale = b.scale();
+    return floor_ms + pixels_ms * r * r + meshes_ms / (scale * scale);
+  };
 }
 
 // Runs the budget for `frames` frames and returns the frame times of the last `tail`.
-std::vector<double> run(LodBudget& budget, const std::function<double(double)>& cost, int frames,
-                        int tail) {
+std::vector<double> run(LodBudget& budget, const FrameCost& cost, int frames, int tail) {
   std::vector<double> last;
   for (int f = 0; f < frames; ++f) {
-    const double ms = cost(budget.scale());
+    const double ms = cost(budget);
     if (f >= frames - tail) last.push_back(ms);
     budget.update(ms);
   }
@@ -32,6 +37,7 @@ TEST(LodBudget, ASlowSceneIsCoarsenedUntilItHoldsTheTargetWithinTwentyPercent) {
   const auto times = run(budget, frameCost(10.0, 400.0), 40, 20);
   for (double ms : times) EXPECT_NEAR(ms, budget.target_ms(), 0.2 * budget.target_ms());
   EXPECT_GT(budget.scale(), 3.0);
+  EXPECT_DOUBLE_EQ(budget.resolution(), 1.0);  // the levels sufficed
   EXPECT_FALSE(budget.cannotReach());
   // Every size is the base times one factor: the levels keep their order.
   EXPECT_FLOAT_EQ(budget.switchPixels()[0], 600.0f * static_cast<float>(budget.scale()));
@@ -50,24 +56,71 @@ TEST(LodBudget, AFastSceneShowsFullDetailFartherOut) {
   EXPECT_FALSE(idle.cannotReach());
 }
 
+// llvmpipe with a whole run's impostors: at the coarsest levels the frame is still 6 times
+// the target, nearly all of it the sprites' pixels. Fewer pixels hold the target.
+TEST(LodBudget, WhereTheCoarsestLevelsAreTooSlowFewerPixelsHoldTheTarget) {
+  LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
+  const auto times = run(budget, frameCost(8.0, 400.0, 200.0), 60, 20);
+  for (double ms : times) EXPECT_NEAR(ms, budget.target_ms(), 0.2 * budget.target_ms());
+  EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kMaxScale);
+  EXPECT_GT(budget.resolution(), LodBudget::kMinResolution);
+  EXPECT_LT(budget.resolution(), 0.5);
+  EXPECT_FALSE(budget.cannotReach());
+}
+
+// Below the target the pixels come back before the detail: while the frame is magnified
+// the levels stay as coarse as they go.
+TEST(LodBudget, TheResolutionComesBackBeforeTheDetail) {
+  LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
+  run(budget, frameCost(8.0, 400.0, 200.0), 60, 1);
+  ASSERT_LT(budget.resolution(), 0.5);
+  const FrameCost cheaper = frameCost(2.0, 40.0, 10.0);  // species switched off
+  while (budget.resolution() < 1.0) {
+    EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kMaxScale);
+    budget.update(cheaper(budget));
+  }
+  const auto times = run(budget, cheaper, 40, 20);
+  for (double ms : times) EXPECT_NEAR(ms, budget.target_ms(), 0.2 * budget.target_ms());
+  EXPECT_DOUBLE_EQ(budget.resolution(), 1.0);
+  EXPECT_LT(budget.scale(), LodBudget::kMaxScale);
+}
+
 TEST(LodBudget, WhereEvenTheCoarsestLevelIsTooSlowItSaysSo) {
   LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
-  run(budget, frameCost(80.0, 400.0), 60, 1);  // the floor alone is 80 ms
+  run(budget, frameCost(80.0, 400.0), 60, 1);  // the floor alone is 80 ms, at any resolution
   EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kMaxScale);
+  EXPECT_DOUBLE_EQ(budget.resolution(), LodBudget::kMinResolution);
   EXPECT_TRUE(budget.cannotReach());
   // Once the scene gets cheaper (species switched off) it is reachable again.
   run(budget, frameCost(5.0, 400.0), 60, 1);
   EXPECT_FALSE(budget.cannotReach());
 }
 
+// Ten times the target at the start, nearly all of it pixels (a whole run's impostors on
+// llvmpipe, every one drawn whatever the sizes): the levels reach their coarsest and the
+// resolution the target within ten frames, where steps of 1.5 take eleven to the coarsest
+// levels alone.
+TEST(LodBudget, ASceneThatStaysSlowIsFollowedInAFewFrames) {
+  LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
+  const FrameCost impostorsOnly = frameCost(10.0, 0.0, 350.0);
+  const auto times = run(budget, impostorsOnly, 10, 1);
+  EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kMaxScale);
+  EXPECT_NEAR(times.back(), budget.target_ms(), 0.2 * budget.target_ms());
+}
+
 TEST(LodBudget, OneSlowFrameMovesTheSizesByABoundedStep) {
   LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
   budget.update(5000.0);  // a snapshot loading
   EXPECT_DOUBLE_EQ(budget.scale(), 1.5);
-  budget.update(0.0);  // no measurement: unchanged
+  EXPECT_DOUBLE_EQ(budget.resolution(), 1.0);  // the levels move first
+  budget.update(0.0);                          // no measurement: unchanged
   EXPECT_DOUBLE_EQ(budget.scale(), 1.5);
   budget.update(budget.target_ms() * 1.05);  // within the tolerance: unchanged
   EXPECT_DOUBLE_EQ(budget.scale(), 1.5);
+  budget.update(5000.0);  // one more slow frame after one on the target: the first step again
+  EXPECT_DOUBLE_EQ(budget.scale(), 1.5 * 1.5);
+  budget.update(5000.0);  // two in a row: a wider step
+  EXPECT_DOUBLE_EQ(budget.scale(), 1.5 * 1.5 * 2.25);
 }
 
 }  // namespace

@@ -131,16 +131,26 @@ TEST(RenderCommand, CtrlCLeavesNothingPartial) {
   }
 }
 
-// The window under a virtual X server: it opens, draws a few frames, saves a screenshot
-// and exits. Skipped where Xvfb is not installed.
-TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
-  if (eco::test::runCommand("command -v xvfb-run").exitCode != 0)
-    GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb); the view window is not tested";
+// `view` of the short default run in a 400 x 300 window under a virtual X server, its
+// screenshot written to `shot`. Skipped where Xvfb is not installed.
+class ViewWindow : public testing::Test {
+ protected:
+  void SetUp() override {
+    if (eco::test::runCommand("command -v xvfb-run").exitCode != 0)
+      GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb); the view window is not tested";
+  }
+  static CommandResult view(const std::string& options, const std::filesystem::path& shot) {
+    return eco::test::runCommand(std::string(ECOFOREST_X_WINDOW_ENV) +
+                                 "xvfb-run -a -s '-screen 0 800x600x24' " + ECOFOREST_EXE +
+                                 " view " + shortDefaultRun().string() + " --size 400x300 " +
+                                 options + " --screenshot " + shot.string());
+  }
+};
+
+// The window opens, draws a few frames, saves a screenshot and exits.
+TEST_F(ViewWindow, OpensDrawsFramesAndSavesAScreenshot) {
   const auto shot = eco::test::freshDirectory("app_view") / "view.png";
-  CommandResult r = eco::test::runCommand(
-      std::string(ECOFOREST_X_WINDOW_ENV) + "xvfb-run -a -s '-screen 0 800x600x24' " +
-      std::string(ECOFOREST_EXE) + " view " + shortDefaultRun().string() +
-      " --size 400x300 --frames 4 --view ground --screenshot " + shot.string());
+  const CommandResult r = view("--frames 4 --view ground", shot);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(pngSize(shot), std::make_pair(400, 300));
 }
@@ -148,14 +158,9 @@ TEST(ViewCommand, OpensAWindowDrawsFramesAndSavesAScreenshot) {
 // A frame-time target no frame can reach: the view coarsens the levels, then draws fewer
 // pixels down to a quarter of the window's width and height, says so, and its screenshot is
 // still the window's full size.
-TEST(ViewCommand, AnUnreachableTargetLowersTheResolutionButNotTheScreenshots) {
-  if (eco::test::runCommand("command -v xvfb-run").exitCode != 0)
-    GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb); the view window is not tested";
+TEST_F(ViewWindow, AnUnreachableTargetLowersTheResolutionButNotTheScreenshots) {
   const auto shot = eco::test::freshDirectory("app_view_budget") / "view.png";
-  CommandResult r = eco::test::runCommand(
-      std::string(ECOFOREST_X_WINDOW_ENV) + "xvfb-run -a -s '-screen 0 800x600x24' " +
-      std::string(ECOFOREST_EXE) + " view " + shortDefaultRun().string() +
-      " --size 400x300 --frames 14 --target-fps 1000 --view low --screenshot " + shot.string());
+  const CommandResult r = view("--frames 14 --target-fps 1000 --view low", shot);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("14 frames"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("not reachable): LOD sizes x64.00, resolution 25 %"), std::string::npos)

@@ -53,7 +53,7 @@ enum class RenderPass : int {
 };
 inline constexpr int kRenderPassCount = 7;
 static_assert(kShadowCascades == 3, "a shadow pass for each cascade");
-// Their names in `render --stats` and the benchmarks.
+// Their names in the benchmarks' output (bench/render_bench).
 inline constexpr std::array<const char*, kRenderPassCount> kRenderPassNames{
     "shadow_near",  "shadow_middle", "shadow_far", "sky_and_terrain",
     "ground_cover", "tree_meshes",   "impostors"};

@@ -15,6 +15,12 @@ LodBudget::LodBudget(std::array<float, 3> baseSwitchPixels, double targetFrame_m
 void LodBudget::update(double frame_ms) {
   if (!(frame_ms > 0.0)) return;  // no measurement (the first frame, a minimised window)
   const double ratio = frame_ms / target_ms_;
+  // The last coarsening saved less than the tolerance: what is left of the frame is what the
+  // levels do not change (on llvmpipe, a whole run's impostors), so the resolution moves
+  // next instead of detail thrown away for nothing, at seconds a frame.
+  if (coarsenedLevels_ && frame_ms > lastFrame_ms_ * (1.0 - kTolerance)) levelsSpent_ = true;
+  coarsenedLevels_ = false;
+  lastFrame_ms_ = frame_ms;
   const bool coarsest = scale_ >= kMaxScale;
   cannotReach_ = coarsest && resolution_ <= kMinResolution && ratio > 1.0 + kTolerance;
   if (std::abs(ratio - 1.0) <= kTolerance) {
@@ -31,13 +37,18 @@ void LodBudget::update(double frame_ms) {
   streak_ = streak_ * side > 0 ? streak_ + side : side;
   const double cap = std::min(std::pow(kFirstStep, std::abs(streak_)), kLargestStep);
   const double step = std::clamp(std::sqrt(ratio), 1.0 / cap, cap);
-  // Over the target: coarser levels first, then fewer pixels. Under it: the pixels back
-  // first (a magnified picture blurs every tree), then finer levels.
-  const bool resolutionMoves = ratio > 1.0 ? coarsest : resolution_ < 1.0;
-  if (resolutionMoves)
+  // Over the target: coarser levels first, then fewer pixels (sooner where the levels
+  // stopped paying; at the lowest resolution the levels go on to their coarsest). Under it:
+  // the pixels back first (a magnified picture blurs every tree), then finer levels.
+  const bool resolutionMoves =
+      ratio > 1.0 ? coarsest || (levelsSpent_ && resolution_ > kMinResolution) : resolution_ < 1.0;
+  if (resolutionMoves) {
     resolution_ = std::clamp(resolution_ / step, kMinResolution, 1.0);
-  else
-    scale_ = std::clamp(scale_ * step, kMinScale, kMaxScale);
+    return;
+  }
+  scale_ = std::clamp(scale_ * step, kMinScale, kMaxScale);
+  coarsenedLevels_ = ratio > 1.0;
+  if (ratio < 1.0) levelsSpent_ = false;
 }
 
 std::array<float, 3> LodBudget::switchPixels() const {

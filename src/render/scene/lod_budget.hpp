@@ -3,9 +3,11 @@
 // target it grows (coarser levels nearer), below it shrinks (finer levels farther out), so
 // a GPU shows LOD0 far out and llvmpipe stays interactive. Where even the coarsest levels
 // are over the target, the frame is drawn at a lower resolution and magnified (dynamic
-// resolution, as game engines hold their frame rate), its shadow maps with it; below the
-// target the resolution comes back first, before the detail. Apart from any window or
-// OpenGL, so that it can be tested with a model of a frame's cost.
+// resolution, as game engines hold their frame rate), its shadow maps with it, and so it is
+// where coarser levels stopped paying: a frame that a coarsening left within the tolerance
+// of the one before (a scene of impostors, which every level draws alike). Below the target
+// the resolution comes back first, before the detail. Apart from any window or OpenGL, so
+// that it can be tested with a model of a frame's cost.
 #pragma once
 
 #include <array>
@@ -50,6 +52,10 @@ class LodBudget {
   double resolution_ = 1.0;
   int streak_ = 0;  // frames in a row over (> 0) or under (< 0) the target
   bool cannotReach_ = false;
+  double lastFrame_ms_ = 0.0;
+  bool coarsenedLevels_ = false;  // the last update coarsened the levels
+  // Coarsening the levels no longer paid; cleared when they are refined again.
+  bool levelsSpent_ = false;
 };
 
 }  // namespace eco

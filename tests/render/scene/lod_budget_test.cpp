@@ -57,12 +57,15 @@ TEST(LodBudget, AFastSceneShowsFullDetailFartherOut) {
 }
 
 // llvmpipe with a whole run's impostors: at the coarsest levels the frame is still 6 times
-// the target, nearly all of it the sprites' pixels. Fewer pixels hold the target.
+// the target, nearly all of it the sprites' pixels. The levels coarsen until that stops
+// paying (the meshes' share under the tolerance), then fewer pixels hold the target.
 TEST(LodBudget, WhereTheCoarsestLevelsAreTooSlowFewerPixelsHoldTheTarget) {
   LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
-  const auto times = run(budget, frameCost(8.0, 400.0, 200.0), 60, 20);
+  const FrameCost cost = frameCost(8.0, 400.0, 200.0);
+  const auto times = run(budget, cost, 60, 20);
   for (double ms : times) EXPECT_NEAR(ms, budget.target_ms(), 0.2 * budget.target_ms());
-  EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kMaxScale);
+  const double meshes_ms = 400.0 / (budget.scale() * budget.scale());
+  EXPECT_LT(meshes_ms, LodBudget::kTolerance * times.back());
   EXPECT_GT(budget.resolution(), LodBudget::kMinResolution);
   EXPECT_LT(budget.resolution(), 0.5);
   EXPECT_FALSE(budget.cannotReach());
@@ -74,16 +77,17 @@ TEST(LodBudget, TheResolutionComesBackBeforeTheDetail) {
   LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
   run(budget, frameCost(8.0, 400.0, 200.0), 60, 1);
   ASSERT_LT(budget.resolution(), 0.5);
+  const double coarse = budget.scale();
   const FrameCost cheaper = frameCost(2.0, 40.0, 10.0);  // species switched off
   for (int frame = 0; frame < 20 && budget.resolution() < 1.0; ++frame) {
-    EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kMaxScale);
+    EXPECT_DOUBLE_EQ(budget.scale(), coarse);
     budget.update(cheaper(budget));
   }
   ASSERT_DOUBLE_EQ(budget.resolution(), 1.0);
   const auto times = run(budget, cheaper, 40, 20);
   for (double ms : times) EXPECT_NEAR(ms, budget.target_ms(), 0.2 * budget.target_ms());
   EXPECT_DOUBLE_EQ(budget.resolution(), 1.0);
-  EXPECT_LT(budget.scale(), LodBudget::kMaxScale);
+  EXPECT_LT(budget.scale(), coarse);
 }
 
 TEST(LodBudget, WhereEvenTheCoarsestLevelIsTooSlowItSaysSo) {
@@ -98,15 +102,26 @@ TEST(LodBudget, WhereEvenTheCoarsestLevelIsTooSlowItSaysSo) {
 }
 
 // Ten times the target at the start, nearly all of it pixels (a whole run's impostors on
-// llvmpipe, every one drawn whatever the sizes): the levels reach their coarsest and the
-// resolution the target within ten frames, where steps of 1.5 take eleven to the coarsest
-// levels alone.
+// llvmpipe, every one drawn whatever the sizes): one coarsening of the levels shows they do
+// not pay, so they keep their detail and the resolution reaches the target within five
+// frames, where coarsening the levels to their coarsest first took ten (and steps of 1.5
+// eleven to the coarsest levels alone).
 TEST(LodBudget, ASceneThatStaysSlowIsFollowedInAFewFrames) {
   LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
   const FrameCost impostorsOnly = frameCost(10.0, 0.0, 350.0);
-  const auto times = run(budget, impostorsOnly, 10, 1);
-  EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kMaxScale);
+  const auto times = run(budget, impostorsOnly, 5, 1);
+  EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kFirstStep);
   EXPECT_NEAR(times.back(), budget.target_ms(), 0.2 * budget.target_ms());
+}
+
+// Where coarser levels stop paying and even the lowest resolution is over the target, the
+// levels go on to their coarsest after all: at that point every millisecond counts.
+TEST(LodBudget, AtTheLowestResolutionTheLevelsCoarsenToTheEnd) {
+  LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
+  run(budget, frameCost(10.0, 0.0, 2000.0), 40, 1);
+  EXPECT_DOUBLE_EQ(budget.resolution(), LodBudget::kMinResolution);
+  EXPECT_DOUBLE_EQ(budget.scale(), LodBudget::kMaxScale);
+  EXPECT_TRUE(budget.cannotReach());
 }
 
 TEST(LodBudget, OneSlowFrameMovesTheSizesByABoundedStep) {
@@ -120,8 +135,12 @@ TEST(LodBudget, OneSlowFrameMovesTheSizesByABoundedStep) {
   EXPECT_DOUBLE_EQ(budget.scale(), 1.5);
   budget.update(5000.0);  // one more slow frame after one on the target: the first step again
   EXPECT_DOUBLE_EQ(budget.scale(), 1.5 * 1.5);
-  budget.update(5000.0);  // two in a row: a wider step
+  budget.update(4000.0);  // two in a row, the second faster: a wider step
   EXPECT_DOUBLE_EQ(budget.scale(), 1.5 * 1.5 * 2.25);
+  EXPECT_DOUBLE_EQ(budget.resolution(), 1.0);
+  budget.update(3900.0);  // the coarsening saved under the tolerance: the resolution moves
+  EXPECT_DOUBLE_EQ(budget.scale(), 1.5 * 1.5 * 2.25);
+  EXPECT_DOUBLE_EQ(budget.resolution(), 1.0 / 3.375);
 }
 
 }  // namespace

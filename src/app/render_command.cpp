@@ -33,26 +33,29 @@ double mebibytes(std::size_t bytes) {
 nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
   const FrameStats& s = still.frame;
   const auto& n = s.forest.instances;
-  return {{"renderer", still.renderer},
-          {"antialias_samples", still.samples},
-          {"instances", {{"lod0", n[0]}, {"lod1", n[1]}, {"lod2", n[2]}, {"impostor", n[3]}}},
-          {"culled", s.forest.culled},
-          {"too_small", s.forest.tooSmall},
-          {"shadow_casters", s.forest.shadowCasterCount()},
-          {"triangles", s.triangles()},
-          {"tree_triangles", s.forest.triangles},
-          {"tree_triangles_all_lod0", s.forest.lod0Triangles},
-          {"terrain_triangles", s.terrainTriangles},
-          {"ground_tufts", s.groundTufts},
-          {"tree_gpu_mib",
-           {{"meshes", mebibytes(still.treeMemory.meshBytes)},
-            {"impostors", mebibytes(still.treeMemory.impostorBytes)}}},
-          {"load_ms", loadMs},
-          {"renderer_setup_ms", still.setupMs},
-          {"mesh_upload_ms", s.forest.meshUploadMs},
-          {"impostor_bake_ms", s.forest.impostorBakeMs},
-          {"prepare_ms", s.prepareMs},
-          {"frame_ms", s.frameMs}};
+  return {
+      {"renderer", still.renderer},
+      {"antialias_samples", still.samples},
+      {"instances", {{"lod0", n[0]}, {"lod1", n[1]}, {"lod2", n[2]}, {"impostor", n[3]}}},
+      {"culled", s.forest.culled},
+      {"too_small", s.forest.tooSmall},
+      {"shadow_casters", s.forest.shadowCasterCount()},
+      {"triangles", s.triangles()},
+      {"tree_triangles", s.forest.triangles},
+      {"tree_triangles_all_lod0", s.forest.lod0Triangles},
+      {"terrain_triangles", s.terrainTriangles},
+      {"ground_tufts", s.groundTufts},
+      {"tree_gpu_mib",
+       {{"meshes", mebibytes(still.treeMemory.meshBytes)},
+        {"impostors", mebibytes(still.treeMemory.impostorBytes)}}},
+      {"load_ms", loadMs},
+      {"renderer_setup_ms", still.setupMs},
+      {"mesh_upload_ms", s.forest.meshUploadMs},
+      {"impostor_bake_ms", s.forest.impostorBakeMs},
+      {"impostor_atlases",
+       {{"baked", s.forest.impostorAtlasesBaked}, {"from_cache", s.forest.impostorAtlasesCached}}},
+      {"prepare_ms", s.prepareMs},
+      {"frame_ms", s.frameMs}};
 }
 
 // Fails before the slow work when the output cannot be written.

@@ -72,6 +72,39 @@ TEST(RenderCommand, AntialiasingSmoothsEdgesOfTheSamePicture) {
   EXPECT_LT(eco::meanAbsoluteDifference(a, b), 6.0);
 }
 
+// The impostor atlases a still bakes are kept in the user's cache folder
+// (ECOFOREST_CACHE_DIR here), and the next still of the same trees reads them instead: the
+// same picture, byte for byte. A cache folder that cannot be made warns and draws anyway.
+TEST(RenderCommand, TheNextStillOfTheSameTreesReadsItsImpostorsFromTheCache) {
+  const auto dir = eco::test::freshDirectory("app_render_cache");
+  const std::string still =
+      "render " + shortDefaultRun().string() + " --year 20 --size 320x180 --stats --out ";
+  auto atlases = [](const CommandResult& r) {
+    const auto json = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+    return std::pair(json["impostor_atlases"]["baked"].get<int>(),
+                     json["impostor_atlases"]["from_cache"].get<int>());
+  };
+  setenv("ECOFOREST_CACHE_DIR", (dir / "cache").c_str(), 1);
+  CommandResult first = ecoforest(still + (dir / "1.png").string());
+  CommandResult second = ecoforest(still + (dir / "2.png").string());
+  eco::test::writeFile(dir / "a file", "in the way of the cache folder");
+  setenv("ECOFOREST_CACHE_DIR", (dir / "a file" / "cache").c_str(), 1);
+  CommandResult blocked = ecoforest(still + (dir / "3.png").string());
+  setenv("ECOFOREST_CACHE_DIR", "off", 1);  // as the suite runs (tests/CMakeLists.txt)
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  ASSERT_EQ(second.exitCode, 0) << second.output;
+  const auto [baked, none] = atlases(first);
+  EXPECT_GT(baked, 0);
+  EXPECT_EQ(none, 0);
+  EXPECT_EQ(atlases(second), std::pair(0, baked));
+  EXPECT_EQ(eco::test::readFile(dir / "1.png"), eco::test::readFile(dir / "2.png"));
+  ASSERT_EQ(blocked.exitCode, 0) << blocked.output;
+  EXPECT_NE(blocked.output.find("warning: cannot keep results in the cache folder"),
+            std::string::npos)
+      << blocked.output;
+  EXPECT_EQ(eco::test::readFile(dir / "1.png"), eco::test::readFile(dir / "3.png"));
+}
+
 TEST(RenderCommand, BadInputIsExitTwoWithAClearMessageAndNoFile) {
   const auto dir = eco::test::freshDirectory("app_render_bad");
   const std::string out = " --out " + (dir / "x.png").string();

@@ -13,7 +13,7 @@
 namespace eco {
 
 // Frames of 256 pixels: a far tree's picture, sharper than the renderer's 64.
-inline constexpr ImpostorSettings kBillboardImpostors{.frames = 8, .tilePixels = 256, .bakeLod = 1};
+inline const ImpostorSettings kBillboardImpostors{.frames = 8, .tilePixels = 256, .bakeLod = 1};
 
 // The pictures of these types (a forest's: typesOf); the other types' stay empty.
 Billboards bakeBillboards(const TreeLibrary& library, std::span<const int> types,

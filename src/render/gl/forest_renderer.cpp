@@ -80,6 +80,8 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
           {{GL_VERTEX_SHADER, "impostor.vert"}, {GL_FRAGMENT_SHADER, "impostor.frag"}},
           {"SHADOW_PASS"}) {
   resetMeshes();
+  if (!impostors.cacheFolder.empty() && programIdentity())
+    atlasCache_.emplace(impostors.cacheFolder);
 
   // Materials of each species, textures generated as the exporters do (in parallel: the
   // procedural textures take a moment each), then uploaded.
@@ -91,9 +93,17 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
   });
   for (std::size_t s = 0; s < speciesCount; ++s) {
     std::vector<Material>& kinds = materials_.emplace_back(kMaterialKinds);
+    CacheKey key;
     for (int k = 0; k < kMaterialKinds; ++k) {
       const auto kind = static_cast<MaterialKind>(k);
       const eco::Material& source = sources[s * kMaterialKinds + k];
+      if (source.texture)
+        key.addValue(source.texture->width)
+            .addValue(source.texture->height)
+            .add(std::string_view(reinterpret_cast<const char*>(source.texture->rgba.data()),
+                                  source.texture->rgba.size()));
+      key.addValue(source.baseColor).addValue(source.alphaMask).addValue(source.doubleSided);
+      key.addValue(source.repeat);
       Material& m = kinds[k];
       if (source.texture) {
         m.texture = makeTexture(*source.texture, source.repeat);
@@ -105,6 +115,7 @@ ForestRenderer::ForestRenderer(const TreeLibrary& library, const ImpostorSetting
       // Thin leaves pass light; bark and the closed crown proxies do not.
       m.translucency = kind == MaterialKind::Bark || kind == MaterialKind::Crown ? 0.0f : 0.35f;
     }
+    materialKeys_.push_back(key.value());
   }
 }
 
@@ -308,26 +319,79 @@ void ForestRenderer::bakeAtlases(const std::vector<int>& sources) {
   for (int row = 0; row < frames; ++row)
     for (int column = 0; column < frames; ++column) all.push_back({column, row});
   const RenderTarget target = beginBaking();
+  const GlName* drawn[] = {&target.color, &target.extraColors[0], &target.extraColors[1]};
   for (const int t : sources) {
     drawImpostorFrames(t, all, target);
-    Atlas& atlas = atlases_[t];
-    // Copy the attachments into mipmapped textures of their own.
-    const int levels = 1 + static_cast<int>(std::log2(tile));  // mip down to 1 texel per tile
-    auto copy = [&](const GlName& attachment, GLenum format) {
-      GlName texture = makeTextureStorage(format, size, size, levels);
-      glCopyImageSubData(attachment.id(), GL_TEXTURE_2D, 0, 0, 0, 0, texture.id(), GL_TEXTURE_2D, 0,
-                         0, 0, 0, size, size, 1);
-      glGenerateTextureMipmap(texture.id());
-      return texture;
-    };
-    // Three RGBA8 textures; a full mip chain adds a third.
-    gpuMemory_.impostorBytes += 3 * std::size_t{4} * size * size * 4 / 3;
-    atlas.albedo = copy(target.color, GL_SRGB8_ALPHA8);
-    atlas.normal = copy(target.extraColors[0], GL_RGBA8);
-    atlas.depth = copy(target.extraColors[1], GL_RGBA8);
-    atlas.extents = frameExtentsTexture(atlas.albedo, levels);
+    makeAtlas(t, [&](int attachment, const GlName& texture) {
+      glCopyImageSubData(drawn[attachment]->id(), GL_TEXTURE_2D, 0, 0, 0, 0, texture.id(),
+                         GL_TEXTURE_2D, 0, 0, 0, 0, size, size, 1);
+    });
+    if (!atlasCache_) continue;
+    // Kept as the level-0 texels of the three, from which makeAtlas makes the same atlas.
+    const std::size_t bytes = std::size_t{4} * size * size;
+    std::string texels(3 * bytes, '\0');
+    const Atlas& atlas = atlases_[t];
+    const GlName* made[] = {&atlas.albedo, &atlas.normal, &atlas.depth};
+    for (int i = 0; i < 3; ++i)
+      glGetTextureImage(made[i]->id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bytes),
+                        texels.data() + i * bytes);
+    atlasCache_->write(atlasKey(t), texels);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void ForestRenderer::makeAtlas(int source,
+                               const std::function<void(int, const GlName&)>& fillLevel0) {
+  const int size = impostorSettings_.frames * impostorSettings_.tilePixels;
+  const int levels = 1 + static_cast<int>(std::log2(impostorSettings_.tilePixels));  // to 1 texel
+  auto make = [&](int attachment, GLenum format) {
+    GlName texture = makeTextureStorage(format, size, size, levels);
+    fillLevel0(attachment, texture);
+    glGenerateTextureMipmap(texture.id());
+    return texture;
+  };
+  Atlas& atlas = atlases_[source];
+  // Three RGBA8 textures; a full mip chain adds a third.
+  gpuMemory_.impostorBytes += 3 * std::size_t{4} * size * size * 4 / 3;
+  atlas.albedo = make(0, GL_SRGB8_ALPHA8);
+  atlas.normal = make(1, GL_RGBA8);
+  atlas.depth = make(2, GL_RGBA8);
+  atlas.extents = frameExtentsTexture(atlas.albedo, levels);
+}
+
+std::uint64_t ForestRenderer::atlasKey(int source) const {
+  const TreeType& type = library_.type(source);
+  const int level = bakeLevel(source);
+  CacheKey key;
+  key.add("impostor atlas").addValue(*programIdentity());
+  for (const GLenum name : {GL_VENDOR, GL_RENDERER, GL_VERSION})
+    key.add(reinterpret_cast<const char*>(glGetString(name)));
+  key.addValue(impostorSettings_.frames).addValue(impostorSettings_.tilePixels).addValue(level);
+  key.addValue(type.bounds).addValue(materialKeys_[type.species]);
+  std::vector<PackedTreeVertex> packed;
+  for (const WindPart& part : type.meshes.lods[level].parts) {
+    packed.clear();
+    for (const TreeVertex& v : part.vertices) packed.push_back(packVertex(v));
+    key.addValue(part.material)
+        .add(std::string_view(reinterpret_cast<const char*>(packed.data()),
+                              packed.size() * sizeof(PackedTreeVertex)))
+        .add(std::string_view(reinterpret_cast<const char*>(part.indices.data()),
+                              part.indices.size() * sizeof(std::uint32_t)));
+  }
+  return key.value();
+}
+
+bool ForestRenderer::loadCachedAtlas(int source) {
+  if (!atlasCache_) return false;
+  const std::optional<std::string> texels = atlasCache_->read(atlasKey(source));
+  const int size = impostorSettings_.frames * impostorSettings_.tilePixels;
+  const std::size_t bytes = std::size_t{4} * size * size;
+  if (!texels || texels->size() != 3 * bytes) return false;
+  makeAtlas(source, [&](int attachment, const GlName& texture) {
+    glTextureSubImage2D(texture.id(), 0, 0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE,
+                        texels->data() + attachment * bytes);
+  });
+  return true;
 }
 
 ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, int width,
@@ -463,18 +527,26 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
         else
           sprites[impostorSource(static_cast<int>(t))] = 1;
       }
+    // The atlases the cache holds are read from it; the others need their level to bake.
+    const auto bakeStart = std::chrono::steady_clock::now();
     std::vector<int> unbaked;
     for (std::size_t t = 0; t < types; ++t)
       if (sprites[t] && !atlases_[t].albedo) {
+        if (loadCachedAtlas(static_cast<int>(t))) {
+          ++stats.impostorAtlasesCached;
+          continue;
+        }
         unbaked.push_back(static_cast<int>(t));
         levels.emplace_back(static_cast<int>(t), bakeLevel(static_cast<int>(t)));
       }
+    if (stats.impostorAtlasesCached > 0) stats.impostorBakeMs = millisecondsSince(bakeStart);
     const auto uploadStart = std::chrono::steady_clock::now();
     if (uploadLevels(levels)) stats.meshUploadMs = millisecondsSince(uploadStart);
     if (!unbaked.empty()) {
-      const auto bakeStart = std::chrono::steady_clock::now();
+      const auto drawStart = std::chrono::steady_clock::now();
       bakeAtlases(unbaked);
-      stats.impostorBakeMs = millisecondsSince(bakeStart);
+      stats.impostorBakeMs += millisecondsSince(drawStart);
+      stats.impostorAtlasesBaked = unbaked.size();
     }
   }
   GLuint next = 0;

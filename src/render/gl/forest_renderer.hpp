@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -15,6 +16,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/disk_cache.hpp"
 #include "core/image.hpp"
 #include "render/gl/frame_uniforms.hpp"
 #include "render/gl/gl_objects.hpp"
@@ -146,8 +148,17 @@ class ForestRenderer {
   void resetMeshes();
   // Uploads the levels (type, level) that are not yet, each once; whether any was.
   bool uploadLevels(std::span<const std::pair<int, int>> levels);
-  // Bakes the atlases of these impostor sources.
+  // Bakes the atlases of these impostor sources (and keeps them in the cache, if any).
   void bakeAtlases(const std::vector<int>& sources);
+  // The key of a source's atlas in the cache: everything its texels are made from (the
+  // program, the GL that draws, the settings, the mesh it is baked from and its materials).
+  std::uint64_t atlasKey(int source) const;
+  // The source's atlas from the cache, if it holds one; whether it did.
+  bool loadCachedAtlas(int source);
+  // Makes atlas `source`: its albedo, normal and depth textures (attachments 0, 1, 2, each
+  // frames × tilePixels square), whose level 0 `fillLevel0` fills, then their mip levels
+  // and the frame extents.
+  void makeAtlas(int source, const std::function<void(int, const GlName&)>& fillLevel0);
   // A target of frames × frames tiles (albedo, normal, depth) and the baking pass's state:
   // one upright instance at the origin, the bake program.
   RenderTarget beginBaking();
@@ -168,8 +179,10 @@ class ForestRenderer {
   std::vector<std::array<std::vector<DrawRange>, kLodCount>> ranges_;  // [type][lod]
   std::vector<std::array<bool, kLodCount>> uploaded_;                  // [type][lod]
   std::vector<std::vector<Material>> materials_;                       // [species][MaterialKind]
-  std::vector<Atlas> atlases_;   // [type]; baked for impostor sources only
-  std::vector<Bucket> buckets_;  // [type * kLevelCount + level]
+  std::vector<std::uint64_t> materialKeys_;  // [species]: its materials' data, for atlasKey
+  std::optional<DiskCache> atlasCache_;      // where impostorSettings_.cacheFolder names one
+  std::vector<Atlas> atlases_;               // [type]; baked for impostor sources only
+  std::vector<Bucket> buckets_;              // [type * kLevelCount + level]
   // Shadow casters, per cascade: in the nearest each tree casts with the level it is drawn
   // at; trees outside the view, and every tree in the coarser cascades (whose texels are
   // decimetres to metres), cast as impostor sprites seen from the sun.

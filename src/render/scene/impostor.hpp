@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <span>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct ImpostorSettings {
   // Draw each sprite only as large as its frames' content reaches (frameExtents) instead of
   // the bounding sphere's square: the same picture from fewer fragments. False: the square.
   bool cropSprites = true;
+  // A folder where baked atlases are kept between runs (core/disk_cache.hpp), under a key
+  // of everything they are made from; empty: baked by every renderer.
+  std::filesystem::path cacheFolder{};
 };
 
 // High quality bakes its frames from LOD0: far trees look like the full model (the 300 m

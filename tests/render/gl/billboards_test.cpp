@@ -12,7 +12,7 @@ namespace eco {
 namespace {
 
 // The export's own frames: at 256 pixels every stem is wider than a pixel.
-constexpr ImpostorSettings kSmall = kBillboardImpostors;
+const ImpostorSettings kSmall = kBillboardImpostors;
 
 // Each type's picture is its two views side by side, the tree standing upright in each:
 // its stem base is the lowest drawn pixel, where the quad's geometry puts it.

@@ -519,6 +519,63 @@ TEST(Impostor, ACroppedSpriteDrawsTheSamePictureFromFewerFragments) {
 // pixels to within 20 %, as the type's own shape does above. Measured: 195 pixels against
 // the mesh's 186 (0.7) and 393 against 387 (1.4); shown as the type's frame stretched to the
 // larger of the two scales, as before, 283 and 548.
+// The atlases a renderer bakes are kept in the cache folder (ImpostorSettings::cacheFolder)
+// and the next renderer of the same trees reads them instead of baking: the same picture to
+// the byte, without uploading the meshes they are baked from. A damaged file is baked again,
+// and a change to what an atlas is made from (here the tile size) misses the cache.
+TEST(Impostor, ACachedAtlasDrawsTheBakedPictureWithoutBaking) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(65, 10.0);
+  Forest forest = rowOfTrees(library, 6);  // a mature maple's source
+  forest.add(library, library.typeIndex(0, 0, 0), worldFromMap(150, 60, 100),
+             library.type(library.typeIndex(0, 0, 0)).height_m, 0.0f, 1.0f, 7);  // and another
+  Camera camera;
+  camera.position = worldFromMap(160, -10, 150);
+  camera.pitch_deg = -40.0f;
+  RenderOptions options;
+  options.lod.forcedLevel = kLevelImpostor;
+  constexpr int kSize = 160;
+  struct Drawn {
+    Image image;
+    ForestStats stats;
+    ForestGpuMemory memory;
+  };
+  auto draw = [&](const ImpostorSettings& settings) {
+    SceneRenderer renderer(terrain, 46.0, &library, settings);
+    const RenderTarget target = RenderTarget::create(kSize, kSize);
+    const FrameStats stats = renderer.render(&forest, camera, options, target);
+    return Drawn{readPixels(kSize, kSize), stats.forest, renderer.forest()->gpuMemory()};
+  };
+  ImpostorSettings settings;
+  settings.cacheFolder = test::freshDirectory("atlas_cache");
+  const Drawn baked = draw(settings);
+  EXPECT_EQ(baked.stats.impostorAtlasesBaked, 2u);
+  EXPECT_EQ(baked.stats.impostorAtlasesCached, 0u);
+  const Drawn cached = draw(settings);
+  EXPECT_EQ(cached.stats.impostorAtlasesBaked, 0u);
+  EXPECT_EQ(cached.stats.impostorAtlasesCached, 2u);
+  EXPECT_TRUE(cached.image.rgba == baked.image.rgba) << "the same picture to the byte";
+  EXPECT_EQ(cached.memory.impostorBytes, baked.memory.impostorBytes);
+  EXPECT_EQ(cached.memory.meshBytes, 0u) << "no mesh uploaded to bake from";
+  EXPECT_GT(baked.memory.meshBytes, 0u);
+  // One file damaged: that atlas is baked again, the other read, the picture the same.
+  std::filesystem::path file;
+  for (const auto& entry : std::filesystem::directory_iterator(settings.cacheFolder))
+    file = entry.path();
+  test::writeFile(file, test::readFile(file).substr(0, 1000));
+  const Drawn repaired = draw(settings);
+  EXPECT_EQ(repaired.stats.impostorAtlasesBaked, 1u);
+  EXPECT_EQ(repaired.stats.impostorAtlasesCached, 1u);
+  EXPECT_TRUE(repaired.image.rgba == baked.image.rgba);
+  // Other settings, other atlases.
+  ImpostorSettings smaller = settings;
+  smaller.tilePixels = 32;
+  EXPECT_EQ(draw(smaller).stats.impostorAtlasesBaked, 2u);
+  // No folder, no cache.
+  EXPECT_EQ(draw(ImpostorSettings{}).stats.impostorAtlasesBaked, 2u);
+}
+
 TEST(Impostor, KeepsItsTreesCrownWidth) {
   test::useHeadlessGl();
   for (float widthRatio : {0.7f, 1.4f}) {

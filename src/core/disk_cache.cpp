@@ -66,9 +66,10 @@ std::filesystem::path DiskCache::fileOf(std::uint64_t key) const {
 
 std::optional<std::string> DiskCache::read(std::uint64_t key) const {
   const std::filesystem::path file = fileOf(key);
-  std::optional<std::string> bytes = readFileBytes(file);
-  if (!bytes) return std::nullopt;
-  const std::string_view all(*bytes);
+  // Mapped, not read through a stream: an atlas is megabytes.
+  const std::optional<MappedFile> mapped = MappedFile::open(file);
+  if (!mapped) return std::nullopt;
+  const std::string_view all = mapped->bytes();
   BinaryReader header(all);
   std::string magic(kMagic.size(), '\0');
   for (char& c : magic) c = header.get<char>();
@@ -87,7 +88,7 @@ std::optional<std::string> DiskCache::read(std::uint64_t key) const {
   }
   // A use: the eviction keeps the recently used.
   std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
-  return bytes->substr(kHeaderBytes, length);
+  return std::string(all.substr(kHeaderBytes, length));
 }
 
 void DiskCache::write(std::uint64_t key, std::string_view bytes) {

@@ -194,6 +194,7 @@ void ForestRenderer::reloadMeshes(bool rebakeImpostors) {
   if (rebakeImpostors) {
     atlases_.clear();
     atlases_.resize(library_.typeCount());
+    atlasesMade_.clear();
     gpuMemory_.impostorBytes = 0;
   }
 }
@@ -312,7 +313,7 @@ void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> fr
   }
 }
 
-void ForestRenderer::bakeAtlases(const std::vector<int>& sources) {
+void ForestRenderer::bakeAtlases(const std::vector<std::pair<int, std::uint64_t>>& sources) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;
   std::vector<glm::ivec2> all;
@@ -320,28 +321,29 @@ void ForestRenderer::bakeAtlases(const std::vector<int>& sources) {
     for (int column = 0; column < frames; ++column) all.push_back({column, row});
   const RenderTarget target = beginBaking();
   const GlName* drawn[] = {&target.color, &target.extraColors[0], &target.extraColors[1]};
-  for (const int t : sources) {
+  for (const auto& [t, key] : sources) {
     drawImpostorFrames(t, all, target);
-    makeAtlas(t, [&](int attachment, const GlName& texture) {
-      glCopyImageSubData(drawn[attachment]->id(), GL_TEXTURE_2D, 0, 0, 0, 0, texture.id(),
-                         GL_TEXTURE_2D, 0, 0, 0, 0, size, size, 1);
-    });
+    const std::shared_ptr<const Atlas> atlas =
+        makeAtlas([&](int attachment, const GlName& texture) {
+          glCopyImageSubData(drawn[attachment]->id(), GL_TEXTURE_2D, 0, 0, 0, 0, texture.id(),
+                             GL_TEXTURE_2D, 0, 0, 0, 0, size, size, 1);
+        });
+    atlases_[t] = atlasesMade_[key] = atlas;
     if (!atlasCache_) continue;
     // Kept as the level-0 texels of the three, from which makeAtlas makes the same atlas.
     const std::size_t bytes = std::size_t{4} * size * size;
     std::string texels(3 * bytes, '\0');
-    const Atlas& atlas = atlases_[t];
-    const GlName* made[] = {&atlas.albedo, &atlas.normal, &atlas.depth};
+    const GlName* made[] = {&atlas->albedo, &atlas->normal, &atlas->depth};
     for (int i = 0; i < 3; ++i)
       glGetTextureImage(made[i]->id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bytes),
                         texels.data() + i * bytes);
-    atlasCache_->write(atlasKey(t), texels);
+    atlasCache_->write(key, texels);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void ForestRenderer::makeAtlas(int source,
-                               const std::function<void(int, const GlName&)>& fillLevel0) {
+std::shared_ptr<const ForestRenderer::Atlas> ForestRenderer::makeAtlas(
+    const std::function<void(int, const GlName&)>& fillLevel0) {
   const int size = impostorSettings_.frames * impostorSettings_.tilePixels;
   const int levels = 1 + static_cast<int>(std::log2(impostorSettings_.tilePixels));  // to 1 texel
   auto make = [&](int attachment, GLenum format) {
@@ -350,13 +352,14 @@ void ForestRenderer::makeAtlas(int source,
     glGenerateTextureMipmap(texture.id());
     return texture;
   };
-  Atlas& atlas = atlases_[source];
+  auto atlas = std::make_shared<Atlas>();
   // Three RGBA8 textures; a full mip chain adds a third.
   gpuMemory_.impostorBytes += 3 * std::size_t{4} * size * size * 4 / 3;
-  atlas.albedo = make(0, GL_SRGB8_ALPHA8);
-  atlas.normal = make(1, GL_RGBA8);
-  atlas.depth = make(2, GL_RGBA8);
-  atlas.extents = frameExtentsTexture(atlas.albedo, levels);
+  atlas->albedo = make(0, GL_SRGB8_ALPHA8);
+  atlas->normal = make(1, GL_RGBA8);
+  atlas->depth = make(2, GL_RGBA8);
+  atlas->extents = frameExtentsTexture(atlas->albedo, levels);
+  return atlas;
 }
 
 std::uint64_t ForestRenderer::atlasKey(int source) const {
@@ -381,17 +384,16 @@ std::uint64_t ForestRenderer::atlasKey(int source) const {
   return key.value();
 }
 
-bool ForestRenderer::loadCachedAtlas(int source) {
-  if (!atlasCache_) return false;
-  const std::optional<std::string> texels = atlasCache_->read(atlasKey(source));
+std::shared_ptr<const ForestRenderer::Atlas> ForestRenderer::cachedAtlas(std::uint64_t key) {
+  if (!atlasCache_) return nullptr;
+  const std::optional<std::string> texels = atlasCache_->read(key);
   const int size = impostorSettings_.frames * impostorSettings_.tilePixels;
   const std::size_t bytes = std::size_t{4} * size * size;
-  if (!texels || texels->size() != 3 * bytes) return false;
-  makeAtlas(source, [&](int attachment, const GlName& texture) {
+  if (!texels || texels->size() != 3 * bytes) return nullptr;
+  return makeAtlas([&](int attachment, const GlName& texture) {
     glTextureSubImage2D(texture.id(), 0, 0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE,
                         texels->data() + attachment * bytes);
   });
-  return true;
 }
 
 ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, int width,
@@ -527,19 +529,32 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
         else
           sprites[impostorSource(static_cast<int>(t))] = 1;
       }
-    // The atlases the cache holds are read from it; the others need their level to bake.
+    // A source takes the atlas of another made alike (the same key: a young tree's crown
+    // classes, pruned of branches it does not have yet), else the cache's, else it needs its
+    // level to bake from; one of each key is baked.
     const auto bakeStart = std::chrono::steady_clock::now();
-    std::vector<int> unbaked;
-    for (std::size_t t = 0; t < types; ++t)
-      if (sprites[t] && !atlases_[t].albedo) {
-        if (loadCachedAtlas(static_cast<int>(t))) {
-          ++stats.impostorAtlasesCached;
-          continue;
-        }
-        unbaked.push_back(static_cast<int>(t));
-        levels.emplace_back(static_cast<int>(t), bakeLevel(static_cast<int>(t)));
+    std::vector<std::pair<int, std::uint64_t>> unbaked, sharing;
+    bool needed = false;  // a source drawn has no atlas yet
+    for (std::size_t t = 0; t < types; ++t) {
+      if (!sprites[t] || atlases_[t]) continue;
+      needed = true;
+      const auto source = static_cast<int>(t);
+      const std::uint64_t key = atlasKey(source);
+      if (const auto made = atlasesMade_.find(key); made != atlasesMade_.end()) {
+        atlases_[t] = made->second;
+      } else if (std::shared_ptr<const Atlas> cached = cachedAtlas(key)) {
+        atlases_[t] = atlasesMade_[key] = std::move(cached);
+        ++stats.impostorAtlasesCached;
+      } else if (std::any_of(unbaked.begin(), unbaked.end(),
+                             [&](const auto& u) { return u.second == key; })) {
+        sharing.emplace_back(source, key);
+      } else {
+        unbaked.emplace_back(source, key);
+        levels.emplace_back(source, bakeLevel(source));
       }
-    if (stats.impostorAtlasesCached > 0) stats.impostorBakeMs = millisecondsSince(bakeStart);
+    }
+    // Zero where nothing was needed: a frame with setup time is not measured (view).
+    if (needed) stats.impostorBakeMs = millisecondsSince(bakeStart);
     const auto uploadStart = std::chrono::steady_clock::now();
     if (uploadLevels(levels)) stats.meshUploadMs = millisecondsSince(uploadStart);
     if (!unbaked.empty()) {
@@ -548,6 +563,7 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       stats.impostorBakeMs += millisecondsSince(drawStart);
       stats.impostorAtlasesBaked = unbaked.size();
     }
+    for (const auto& [t, key] : sharing) atlases_[t] = atlasesMade_.at(key);
   }
   GLuint next = 0;
   for (Bucket& b : buckets_) b.first = next, next += b.count, b.count = 0;
@@ -624,10 +640,11 @@ void ForestRenderer::drawImpostors(const Program& program, float pixelsPerUnit,
     if (bucket.count == 0) continue;
     const int source = impostorSource(t);
     program.set("uBounds", library_.type(source).bounds);
-    glBindTextureUnit(1, atlases_[source].albedo.id());
-    glBindTextureUnit(2, atlases_[source].normal.id());
-    glBindTextureUnit(5, atlases_[source].depth.id());
-    glBindTextureUnit(9, atlases_[source].extents.id());
+    const Atlas& atlas = *atlases_[source];
+    glBindTextureUnit(1, atlas.albedo.id());
+    glBindTextureUnit(2, atlas.normal.id());
+    glBindTextureUnit(5, atlas.depth.id());
+    glBindTextureUnit(9, atlas.extents.id());
     glDrawArraysInstancedBaseInstance(GL_POINTS, 0, 1, bucket.count, bucket.first);
   }
 }

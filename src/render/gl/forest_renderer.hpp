@@ -7,6 +7,8 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <utility>
@@ -148,17 +150,19 @@ class ForestRenderer {
   void resetMeshes();
   // Uploads the levels (type, level) that are not yet, each once; whether any was.
   bool uploadLevels(std::span<const std::pair<int, int>> levels);
-  // Bakes the atlases of these impostor sources (and keeps them in the cache, if any).
-  void bakeAtlases(const std::vector<int>& sources);
-  // The key of a source's atlas in the cache: everything its texels are made from (the
-  // program, the GL that draws, the settings, the mesh it is baked from and its materials).
+  // Bakes the atlases of these impostor sources, each with its atlasKey (and keeps them in
+  // the cache, if any).
+  void bakeAtlases(const std::vector<std::pair<int, std::uint64_t>>& sources);
+  // The key of a source's atlas: everything its texels are made from (the program, the GL
+  // that draws, the settings, the mesh it is baked from and its materials). Sources of
+  // the same key share an atlas, and the cache keeps it under that key.
   std::uint64_t atlasKey(int source) const;
-  // The source's atlas from the cache, if it holds one; whether it did.
-  bool loadCachedAtlas(int source);
-  // Makes atlas `source`: its albedo, normal and depth textures (attachments 0, 1, 2, each
-  // frames × tilePixels square), whose level 0 `fillLevel0` fills, then their mip levels
-  // and the frame extents.
-  void makeAtlas(int source, const std::function<void(int, const GlName&)>& fillLevel0);
+  // The atlas the cache holds under this key, or null.
+  std::shared_ptr<const Atlas> cachedAtlas(std::uint64_t key);
+  // An atlas of albedo, normal and depth textures (attachments 0, 1, 2, each frames ×
+  // tilePixels square) whose level 0 `fillLevel0` fills, then their mip levels and the
+  // frame extents.
+  std::shared_ptr<const Atlas> makeAtlas(const std::function<void(int, const GlName&)>& fillLevel0);
   // A target of frames × frames tiles (albedo, normal, depth) and the baking pass's state:
   // one upright instance at the origin, the bake program.
   RenderTarget beginBaking();
@@ -181,8 +185,10 @@ class ForestRenderer {
   std::vector<std::vector<Material>> materials_;                       // [species][MaterialKind]
   std::vector<std::uint64_t> materialKeys_;  // [species]: its materials' data, for atlasKey
   std::optional<DiskCache> atlasCache_;      // where impostorSettings_.cacheFolder names one
-  std::vector<Atlas> atlases_;               // [type]; baked for impostor sources only
-  std::vector<Bucket> buckets_;              // [type * kLevelCount + level]
+  std::map<std::uint64_t, std::shared_ptr<const Atlas>> atlasesMade_;  // by atlasKey
+  // [type]: impostor sources only; sources whose atlases are made alike share one.
+  std::vector<std::shared_ptr<const Atlas>> atlases_;
+  std::vector<Bucket> buckets_;  // [type * kLevelCount + level]
   // Shadow casters, per cascade: in the nearest each tree casts with the level it is drawn
   // at; trees outside the view, and every tree in the coarser cascades (whose texels are
   // decimetres to metres), cast as impostor sprites seen from the sun.

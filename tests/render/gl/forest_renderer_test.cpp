@@ -576,6 +576,46 @@ TEST(Impostor, ACachedAtlasDrawsTheBakedPictureWithoutBaking) {
   EXPECT_EQ(draw(ImpostorSettings{}).stats.impostorAtlasesBaked, 2u);
 }
 
+// Sources whose atlases would be made alike share one, baked once: a young beech (the
+// library's youngest age class) has no branches yet below a third or half of its height,
+// so its crown classes' clear boles prune nothing and their meshes are the same.
+TEST(Impostor, SourcesMadeAlikeShareOneAtlas) {
+  test::useHeadlessGl();
+  LibrarySettings settings = LibrarySettings::shaped(true);
+  settings.variants = 1;
+  settings.ageClasses = {0.15};
+  const TreeLibrary library({test::namedLibrarySpecies("beech")}, settings);
+  const ImpostorSettings impostors;
+  const int open = library.typeIndex(0, 0, 0, 0), pruned = library.typeIndex(0, 0, 0, 1);
+  ASSERT_NE(library.impostorSource(open), library.impostorSource(pruned));
+  auto bytesOf = [&](int type) {
+    std::string bytes;
+    for (const WindPart& part : library.type(type).meshes.lods[impostors.bakeLod].parts) {
+      for (const TreeVertex& v : part.vertices) {
+        const PackedTreeVertex p = packVertex(v);
+        bytes.append(reinterpret_cast<const char*>(&p), sizeof p);
+      }
+      bytes.append(reinterpret_cast<const char*>(part.indices.data()), part.indices.size() * 4);
+    }
+    return bytes;
+  };
+  ASSERT_EQ(bytesOf(open), bytesOf(pruned)) << "the premise: the same mesh";
+  FrameUniformBuffer uniforms;
+  ForestRenderer renderer(library, impostors, uniforms);
+  Forest forest;
+  for (const int type : {open, pruned})
+    forest.add(library, type, worldFromMap(160, 60, 100), library.type(type).height_m, 0.0f, 1.0f,
+               type);
+  Camera camera;
+  camera.position = worldFromMap(160, 20, 105);
+  LodSettings lod;
+  lod.forcedLevel = kLevelImpostor;
+  const ForestStats stats = renderer.prepare(forest, camera, 640, 360, lod, {});
+  EXPECT_EQ(stats.impostorAtlasesBaked, 1u);
+  const std::size_t side = static_cast<std::size_t>(impostors.frames * impostors.tilePixels);
+  EXPECT_EQ(renderer.gpuMemory().impostorBytes, 3 * 4 * side * side * 4 / 3) << "one atlas";
+}
+
 TEST(Impostor, KeepsItsTreesCrownWidth) {
   test::useHeadlessGl();
   for (float widthRatio : {0.7f, 1.4f}) {

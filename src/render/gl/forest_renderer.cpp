@@ -366,7 +366,9 @@ std::uint64_t ForestRenderer::atlasKey(int source) const {
   const TreeType& type = library_.type(source);
   const int level = bakeLevel(source);
   CacheKey key;
-  key.add("impostor atlas").addValue(*programIdentity());
+  // Without the program's identity there is no cache (the constructor), and within one
+  // program the keys need not tell builds apart.
+  key.add("impostor atlas").addValue(programIdentity().value_or(0));
   for (const GLenum name : {GL_VENDOR, GL_RENDERER, GL_VERSION})
     key.add(reinterpret_cast<const char*>(glGetString(name)));
   key.addValue(impostorSettings_.frames).addValue(impostorSettings_.tilePixels).addValue(level);

@@ -9,6 +9,7 @@
 #include "app/scene_source.hpp"
 #include "app/view_options.hpp"
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "render/gl/gl_context.hpp"
 #include "sim/image_io.hpp"
@@ -76,6 +77,10 @@ void runRender(const RenderArgs& args) {
   std::optional<Field> overlay;
   if (!args.view.overlay.empty()) overlay = source.overlay(args.view.overlay);
   checkCameraOption(args.view);
+  // On a terminal each slow step says what it does (a still of a whole run takes minutes
+  // at high quality on a software renderer); logs and tests stay clean.
+  const bool terminal = Progress::stderrIsTerminal();
+  if (terminal && source.run) std::cerr << fmt::format("render: reading year {}\n", year);
   if (source.run || args.demoTrees > 0)
     source.buildLibrary(LibrarySettings::shaped(source.run.has_value() && !args.view.noShaping));
   const Forest forest = source.forestOf(year, args.demoTrees);
@@ -83,8 +88,15 @@ void runRender(const RenderArgs& args) {
 
   const double loadMs = millisecondsSince(start);
   StillStats stats;
+  if (terminal)
+    std::cerr << fmt::format("render: drawing {} plants, {}x{} at {} quality\n", forest.size(),
+                             args.view.size.width, args.view.size.height,
+                             toString(args.view.quality));
   const Image image = drawStill(source, forest, camera, args.view, overlay, &stats);
   writeRgb8Image(args.out, image);
+  if (terminal)
+    std::cerr << fmt::format("render: wrote {} in {:.1f} s\n", args.out,
+                             millisecondsSince(start) / 1000.0);
   if (args.stats) std::cout << statsJson(stats, loadMs).dump(2) << "\n";
 }
 

@@ -1,11 +1,13 @@
 #include "app/view_options.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/disk_cache.hpp"
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "render/scene/tree_clearance.hpp"
 #include "sim/conditions/moisture.hpp"
 
@@ -140,6 +142,15 @@ std::unique_ptr<SceneRenderer> sceneRendererFor(const SceneSource& source, const
     impostors.cacheFolder = *cache / "impostors";
   auto renderer = std::make_unique<SceneRenderer>(
       source.terrain, source.scenario.climate.latitude_deg, source.library.get(), impostors);
+  // On a terminal the impostors' baking shows its progress: the valley's first frame waits
+  // 15 s for it.
+  if (renderer->forest() && Progress::stderrIsTerminal())
+    renderer->forest()->onAtlasProgress(
+        [line = std::shared_ptr<Progress>()](std::size_t done, std::size_t total) mutable {
+          if (!line) line = std::make_shared<Progress>("impostor atlases", true);
+          line->update(static_cast<double>(done) / static_cast<double>(total));
+          if (done == total) line.reset();  // prints "done"
+        });
   renderer->setGroundMoisture(
       moistureOf(source.terrain, source.scenario.climate.annualPrecipitation_mm));
   return renderer;

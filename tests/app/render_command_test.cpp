@@ -105,6 +105,25 @@ TEST(RenderCommand, TheNextStillOfTheSameTreesReadsItsImpostorsFromTheCache) {
   EXPECT_EQ(eco::test::readFile(dir / "1.png"), eco::test::readFile(dir / "3.png"));
 }
 
+// On a terminal (here a pseudo-terminal of util-linux's `script`) each slow step of a still
+// says what it does, and the impostors' baking shows its progress; elsewhere (every other
+// test) nothing of it is printed.
+TEST(RenderCommand, OnATerminalEachSlowStepSaysWhatItDoes) {
+  if (eco::test::runCommand("command -v script").exitCode != 0)
+    GTEST_SKIP() << "util-linux's script is not installed";
+  const auto out = eco::test::freshDirectory("app_render_terminal") / "still.png";
+  const std::string still = "render " + shortDefaultRun().string() +
+                            " --year 20 --quality draft --size 320x180 --out " + out.string();
+  const CommandResult r = eco::test::runCommand("script -qec '" + std::string(ECOFOREST_EXE) + " " +
+                                                still + "' /dev/null");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* line : {"render: reading year 20", "render: drawing ", "at draft quality",
+                           "impostor atlases", "done", "render: wrote"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << " in:\n" << r.output;
+  const CommandResult plain = ecoforest(still);
+  EXPECT_EQ(plain.output.find("render:"), std::string::npos) << plain.output;
+}
+
 TEST(RenderCommand, BadInputIsExitTwoWithAClearMessageAndNoFile) {
   const auto dir = eco::test::freshDirectory("app_render_bad");
   const std::string out = " --out " + (dir / "x.png").string();

@@ -313,7 +313,8 @@ void ForestRenderer::drawImpostorFrames(int type, std::span<const glm::ivec2> fr
   }
 }
 
-void ForestRenderer::bakeAtlases(const std::vector<std::pair<int, std::uint64_t>>& sources) {
+void ForestRenderer::bakeAtlases(const std::vector<std::pair<int, std::uint64_t>>& sources,
+                                 const std::function<void()>& baked) {
   const int frames = impostorSettings_.frames, tile = impostorSettings_.tilePixels;
   const int size = frames * tile;
   std::vector<glm::ivec2> all;
@@ -329,6 +330,7 @@ void ForestRenderer::bakeAtlases(const std::vector<std::pair<int, std::uint64_t>
                              GL_TEXTURE_2D, 0, 0, 0, 0, size, size, 1);
         });
     atlases_[t] = atlasesMade_[key] = atlas;
+    baked();
     if (!atlasCache_) continue;
     // Kept as the level-0 texels of the three, from which makeAtlas makes the same atlas.
     const std::size_t bytes = std::size_t{4} * size * size;
@@ -536,17 +538,22 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
     // level to bake from; one of each key is baked.
     const auto bakeStart = std::chrono::steady_clock::now();
     std::vector<std::pair<int, std::uint64_t>> unbaked, sharing;
-    bool needed = false;  // a source drawn has no atlas yet
+    std::size_t needed = 0, done = 0;  // sources drawn without an atlas yet; given theirs
+    for (std::size_t t = 0; t < types; ++t) needed += sprites[t] && !atlases_[t];
+    const auto given = [&] {
+      if (atlasProgress_) atlasProgress_(++done, needed);
+    };
     for (std::size_t t = 0; t < types; ++t) {
       if (!sprites[t] || atlases_[t]) continue;
-      needed = true;
       const auto source = static_cast<int>(t);
       const std::uint64_t key = atlasKey(source);
       if (const auto made = atlasesMade_.find(key); made != atlasesMade_.end()) {
         atlases_[t] = made->second;
+        given();
       } else if (std::shared_ptr<const Atlas> cached = cachedAtlas(key)) {
         atlases_[t] = atlasesMade_[key] = std::move(cached);
         ++stats.impostorAtlasesCached;
+        given();
       } else if (std::any_of(unbaked.begin(), unbaked.end(),
                              [&](const auto& u) { return u.second == key; })) {
         sharing.emplace_back(source, key);
@@ -556,16 +563,19 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
       }
     }
     // Zero where nothing was needed: a frame with setup time is not measured (view).
-    if (needed) stats.impostorBakeMs = millisecondsSince(bakeStart);
+    if (needed > 0) stats.impostorBakeMs = millisecondsSince(bakeStart);
     const auto uploadStart = std::chrono::steady_clock::now();
     if (uploadLevels(levels)) stats.meshUploadMs = millisecondsSince(uploadStart);
     if (!unbaked.empty()) {
       const auto drawStart = std::chrono::steady_clock::now();
-      bakeAtlases(unbaked);
+      bakeAtlases(unbaked, given);
       stats.impostorBakeMs += millisecondsSince(drawStart);
       stats.impostorAtlasesBaked = unbaked.size();
     }
-    for (const auto& [t, key] : sharing) atlases_[t] = atlasesMade_.at(key);
+    for (const auto& [t, key] : sharing) {
+      atlases_[t] = atlasesMade_.at(key);
+      given();
+    }
   }
   GLuint next = 0;
   for (Bucket& b : buckets_) b.first = next, next += b.count, b.count = 0;

@@ -91,6 +91,12 @@ class ForestRenderer {
   ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
                       const LodSettings& lod, std::span<const ShadowBox> shadows);
   const TreeLibrary& library() const { return library_; }
+  // Called as a frame gets the impostor atlases it needs (read, shared or baked): how many
+  // of its sources have theirs, of how many; the last call has done == total. A command's
+  // progress line on a terminal: the valley's first frame bakes for 15 s.
+  void onAtlasProgress(std::function<void(std::size_t done, std::size_t total)> report) {
+    atlasProgress_ = std::move(report);
+  }
   const ForestGpuMemory& gpuMemory() const { return gpuMemory_; }
   // The colour pass of what prepare() chose: the meshes (LOD0-2), then the impostors.
   void drawMeshes() const;
@@ -152,7 +158,8 @@ class ForestRenderer {
   bool uploadLevels(std::span<const std::pair<int, int>> levels);
   // Bakes the atlases of these impostor sources, each with its atlasKey (and keeps them in
   // the cache, if any).
-  void bakeAtlases(const std::vector<std::pair<int, std::uint64_t>>& sources);
+  void bakeAtlases(const std::vector<std::pair<int, std::uint64_t>>& sources,
+                   const std::function<void()>& baked);
   // The key of a source's atlas: everything its texels are made from (the program, the GL
   // that draws, the settings, the mesh it is baked from and its materials). Sources of
   // the same key share an atlas, and the cache keeps it under that key.
@@ -186,6 +193,7 @@ class ForestRenderer {
   std::vector<std::uint64_t> materialKeys_;  // [species]: its materials' data, for atlasKey
   std::optional<DiskCache> atlasCache_;      // where impostorSettings_.cacheFolder names one
   std::map<std::uint64_t, std::shared_ptr<const Atlas>> atlasesMade_;  // by atlasKey
+  std::function<void(std::size_t, std::size_t)> atlasProgress_;
   // [type]: impostor sources only; sources whose atlases are made alike share one.
   std::vector<std::shared_ptr<const Atlas>> atlases_;
   std::vector<Bucket> buckets_;  // [type * kLevelCount + level]

@@ -610,8 +610,13 @@ TEST(Impostor, SourcesMadeAlikeShareOneAtlas) {
   camera.position = worldFromMap(160, 20, 105);
   LodSettings lod;
   lod.forcedLevel = kLevelImpostor;
+  std::vector<std::pair<std::size_t, std::size_t>> progress;
+  renderer.onAtlasProgress(
+      [&](std::size_t done, std::size_t total) { progress.emplace_back(done, total); });
   const ForestStats stats = renderer.prepare(forest, camera, 640, 360, lod, {});
   EXPECT_EQ(stats.impostorAtlasesBaked, 1u);
+  using Step = std::pair<std::size_t, std::size_t>;
+  EXPECT_EQ(progress, (std::vector<Step>{{1, 2}, {2, 2}})) << "each source given its atlas";
   const std::size_t side = static_cast<std::size_t>(impostors.frames * impostors.tilePixels);
   EXPECT_EQ(renderer.gpuMemory().impostorBytes, 3 * 4 * side * side * 4 / 3) << "one atlas";
 }

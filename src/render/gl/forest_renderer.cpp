@@ -368,9 +368,10 @@ std::uint64_t ForestRenderer::atlasKey(int source) const {
   const TreeType& type = library_.type(source);
   const int level = bakeLevel(source);
   CacheKey key;
-  // Without the program's identity there is no cache (the constructor), and within one
-  // program the keys need not tell builds apart.
-  key.add("impostor atlas").addValue(programIdentity().value_or(0));
+  // The program's identity tells builds apart in the cache (which the constructor makes
+  // only where there is one); within one renderer, sharing atlases, it is not needed, and
+  // hashing the executable is left out of the renderers that keep no cache.
+  key.add("impostor atlas").addValue(atlasCache_ ? *programIdentity() : std::uint64_t{0});
   for (const GLenum name : {GL_VENDOR, GL_RENDERER, GL_VERSION})
     key.add(reinterpret_cast<const char*>(glGetString(name)));
   key.addValue(impostorSettings_.frames).addValue(impostorSettings_.tilePixels).addValue(level);

@@ -70,7 +70,8 @@ struct ForestStats {
   // (left out of FrameStats' times).
   double impostorBakeMs = 0.0;
   double meshUploadMs = 0.0;
-  // Of those atlases, the ones read from the cache (ImpostorSettings::cacheFolder) instead.
+  // The atlases this frame baked, and the ones it read from the cache instead
+  // (ImpostorSettings::cacheFolder); sources sharing another's atlas are neither.
   std::size_t impostorAtlasesBaked = 0, impostorAtlasesCached = 0;
   double setupMs() const { return impostorBakeMs + meshUploadMs; }
   std::size_t shadowCasterCount() const {

@@ -86,7 +86,7 @@ void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow
     text += fmt::format(
         "{},{},{},{},{},{:.3f},{:.1f},{:.4f},{:.2f},{:.2f},{:.1f},{:.2f},{:.4f},{:.4f},{},{},{},{:."
         "3f}\n",
-        r.year, r.species == kAllSpecies ? std::string("all") : species[r.species].species.name,
+        r.year, r.species == kAllSpecies ? std::string(kAllSpeciesName) : species[r.species].species.name,
         r.alive, r.born, r.died, r.meanHeight_m, r.stemsPerHa, r.basalArea_m2PerHa, r.qmd_cm,
         r.dominantHeight_m, r.sdi, r.volume_m3PerHa, r.coverFraction,
         r.densestHectareBasalArea_m2PerHa, r.planted, r.diedAfterPlanting, r.removed,
@@ -157,7 +157,7 @@ StatsFile readStatsCsv(const std::filesystem::path& file) {
       fail(fmt::format("expected {} fields", fields.size()));
     StatsRow r;
     const std::string_view species = fields[speciesField];
-    if (species == "all") {
+    if (species == kAllSpeciesName) {
       r.species = kAllSpecies;
     } else {
       if (const std::string why = whyNotAPlainName(species); !why.empty())

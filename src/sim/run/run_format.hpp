@@ -42,6 +42,7 @@ struct RunPaths {
 // One line of stats.csv: a species in a year, or the whole stand (species kAllSpecies).
 // Plain numbers without padding so that checkpoints can hold rows.
 inline constexpr std::int32_t kAllSpecies = -1;
+inline constexpr const char* kAllSpeciesName = "all";  // its name in the files
 struct StatsRow {
   std::int32_t year = 0;
   std::int32_t species = 0;

@@ -13,6 +13,7 @@
 #include "app/lsystem_command.hpp"
 #include "app/render_command.hpp"
 #include "app/run_command.hpp"
+#include "app/stand_command.hpp"
 #include "app/timelapse_command.hpp"
 #include "app/tree_command.hpp"
 #include "app/validate_command.hpp"
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   eco::addRunCommand(app);
   eco::addValidateCommand(app);
   eco::addCompareCommand(app);
+  eco::addStandCommand(app);
   eco::addRenderCommand(app);
   eco::addViewCommand(app);
   eco::addExportCommand(app);

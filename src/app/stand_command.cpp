@@ -1,0 +1,84 @@
+#include "app/stand_command.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "app/scene_source.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "sim/ecology/ecosystem.hpp"
+#include "sim/run/run_format.hpp"
+#include "sim/run/stand_table.hpp"
+
+namespace eco {
+namespace {
+
+struct StandArgs {
+  std::string run;
+  std::optional<int> year;
+  double classWidth_cm = 5.0;
+  std::string out;
+};
+
+// The form factor of each of the snapshot's species, from the run's species files.
+std::vector<double> formFactorsOf(const TreeSnapshot& snapshot, const Scenario& scenario,
+                                  const std::filesystem::path& snapshotFile) {
+  std::vector<EcosystemSpecies> species;
+  for (const ScenarioSpecies& entry : scenario.species)
+    species.push_back(readEcosystemSpecies(entry.file, entry.where));
+  std::vector<double> formFactors;
+  for (const std::string& name : snapshot.speciesNames) {
+    auto it = std::find_if(species.begin(), species.end(),
+                           [&](const EcosystemSpecies& s) { return s.species.name == name; });
+    if (it == species.end())
+      throw InputError(
+          {snapshotFile, 0, "species"},
+          fmt::format("species '{}' is not one of the run's scenario's species", name));
+    formFactors.push_back(it->ecology.life.formFactor);
+  }
+  return formFactors;
+}
+
+void runStand(const StandArgs& args) {
+  const std::optional<std::filesystem::path> out =
+      args.out.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.out);
+  if (out) requireOutputFolder(*out);
+  const SceneSource source = openRunSource(args.run);
+  const int year = args.year.value_or(source.defaultYear());
+  const TreeSnapshot snapshot = readSnapshot(*source.run, year);
+  const std::filesystem::path snapshotFile = RunPaths{source.run->dir}.existingSnapshot(year);
+  const StandTable table =
+      standTable(snapshot, formFactorsOf(snapshot, source.scenario, snapshotFile),
+                 source.terrain.grid.area_m2() / 1e4, args.classWidth_cm);
+  std::cout << standTableText(table);
+  if (!out) return;
+  AtomicFile file(*out);
+  file.write(standTableCsv(table));
+  file.commit();
+  std::cout << fmt::format("{}: {} rows of {} classes\n", out->string(), table.rows.size(),
+                           table.classCount());
+}
+
+}  // namespace
+
+void addStandCommand(CLI::App& app) {
+  auto args = std::make_shared<StandArgs>();
+  CLI::App* command = app.add_subcommand(
+      "stand",
+      "Print a run's stand table: its trees of at least 10 cm by diameter class and species, "
+      "stems, basal area and volume per hectare, mean height and slenderness");
+  command->add_option("run", args->run, "Run folder of `ecoforest run`")->required();
+  command->add_option("--year", args->year, "Snapshot year (default: the run's last)");
+  command->add_option("--class-width", args->classWidth_cm, "Width of a diameter class, cm")
+      ->check(CLI::Range(0.5, 100.0))
+      ->capture_default_str();
+  command->add_option("--out", args->out,
+                      "Also write the table as CSV (a line per species and class)");
+  command->callback([args] { runStand(*args); });
+}
+
+}  // namespace eco

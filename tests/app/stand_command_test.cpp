@@ -1,0 +1,134 @@
+// Runs `ecoforest stand` as a user would.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "app_support.hpp"
+
+namespace {
+
+using eco::test::CommandResult;
+using eco::test::ecoforest;
+
+// A 45 m plot planted with pine and beech 2 m apart, grown 40 years, binary snapshots of
+// years 20 and 40 (the simulation's diameters exactly): made once for every test here.
+const std::filesystem::path& plotRun() {
+  static const std::filesystem::path run = [] {
+    const auto dir = eco::test::freshDirectory("app_stand");
+    eco::test::writeFile(dir / "plot.toml",
+                         fmt::format(R"(name = "stand_plot"
+seed = 3
+[terrain]
+cell_size_m = 5
+[terrain.generate]
+size = 9
+relief_m = 0
+base_altitude_m = 400
+[simulation]
+years = 40
+[[species]]
+file = "{0}/species/pine.toml"
+[[species]]
+file = "{0}/species/beech.toml"
+[[planting]]
+species = {{ pine = 0.5, beech = 0.5 }}
+spacing_m = 2.0
+[output]
+dir = "{1}"
+snapshot_every_years = 20
+snapshot_format = "binary"
+)",
+                                     ECOFOREST_DATA_DIR, (dir / "run").string()));
+    CommandResult r = ecoforest("run " + (dir / "plot.toml").string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return dir / "run";
+  }();
+  return run;
+}
+
+std::vector<std::string> splitCsv(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+  return fields;
+}
+
+TEST(StandCommand, PrintsAndWritesTheStandTableThatAddsUpToStatsCsv) {
+  const auto out = eco::test::freshDirectory("app_stand_out") / "stand.csv";
+  CommandResult r = ecoforest(fmt::format("stand {} --out {}", plotRun().string(), out.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("year 40, 0.20 ha"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("pine"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("total"), std::string::npos) << r.output;
+
+  // The stand's classes add up to the year's stems and basal area in stats.csv.
+  std::istringstream csv(eco::test::readFile(out));
+  std::string line;
+  std::getline(csv, line);
+  ASSERT_EQ(line.rfind("year,species,dbh_from_cm,dbh_to_cm,stems_per_ha", 0), 0u);
+  double stems = 0.0, basalArea = 0.0;
+  int standClasses = 0;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> f = splitCsv(line);
+    ASSERT_EQ(f.size(), 9u) << line;
+    EXPECT_EQ(f[0], "40");
+    if (f[1] != "all") continue;
+    ++standClasses;
+    stems += std::stod(f[4]);
+    basalArea += std::stod(f[5]);
+  }
+  EXPECT_GE(standClasses, 2);  // pines of 40 years on 2 m reach past 15 cm
+  std::istringstream stats(eco::test::readFile(plotRun() / "stats.csv"));
+  while (std::getline(stats, line))
+    if (line.rfind("40,all,", 0) == 0) break;
+  const std::vector<std::string> f = splitCsv(line);
+  ASSERT_GT(f.size(), 7u) << line;
+  EXPECT_NEAR(stems, std::stod(f[6]), 0.05 + 0.005 * standClasses);
+  EXPECT_NEAR(basalArea, std::stod(f[7]), 1e-4 + 5e-5 * standClasses);
+}
+
+TEST(StandCommand, TakesAnEarlierYearAndAClassWidth) {
+  CommandResult r =
+      ecoforest(fmt::format("stand {} --year 20 --class-width 10", plotRun().string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("year 20"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("classes of 10 cm"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("10-20"), std::string::npos) << r.output;
+}
+
+TEST(StandCommand, RefusesBadInputWithExitTwo) {
+  const std::string run = plotRun().string();
+  CommandResult noYear = ecoforest(fmt::format("stand {} --year 7", run));
+  EXPECT_EQ(noYear.exitCode, 2) << noYear.output;
+  EXPECT_NE(noYear.output.find("20, 40"), std::string::npos) << noYear.output;
+  CommandResult width = ecoforest(fmt::format("stand {} --class-width 0", run));
+  EXPECT_EQ(width.exitCode, 2) << width.output;
+  CommandResult notARun = ecoforest("stand valley");
+  EXPECT_EQ(notARun.exitCode, 2) << notARun.output;
+  const auto missing = eco::test::freshDirectory("app_stand_missing") / "no" / "t.csv";
+  CommandResult noFolder = ecoforest(fmt::format("stand {} --out {}", run, missing.string()));
+  EXPECT_EQ(noFolder.exitCode, 2) << noFolder.output;
+  EXPECT_FALSE(std::filesystem::exists(missing.parent_path()));
+}
+
+TEST(StandCommand, RefusesASnapshotOfSpeciesTheScenarioDoesNotHave) {
+  // The run's folder with its last snapshot as CSV, in which the pines became oaks.
+  const auto copy = eco::test::freshDirectory("app_stand_oaks") / "run";
+  std::filesystem::copy(plotRun(), copy, std::filesystem::copy_options::recursive);
+  const auto csv = copy / "trees" / "year_0040.csv";
+  CommandResult exported =
+      ecoforest(fmt::format("export {} --out {}", copy.string(), csv.string()));
+  ASSERT_EQ(exported.exitCode, 0) << exported.output;
+  std::filesystem::remove(copy / "trees" / "year_0040.bin");
+  std::string text = eco::test::readFile(csv);
+  for (std::size_t at = text.find(",pine,"); at != std::string::npos; at = text.find(",pine,", at))
+    text.replace(at, 6, ",oak,");
+  eco::test::writeFile(csv, text);
+  CommandResult r = ecoforest("stand " + copy.string());
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("year_0040.csv"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'oak'"), std::string::npos) << r.output;
+}
+
+}  // namespace

@@ -1,0 +1,126 @@
+#include "sim/run/stand_table.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "core/random.hpp"
+#include "sim/ecology/stand_measures.hpp"
+
+namespace eco {
+namespace {
+
+TreeRow tree(int species, float dbh_m, float height_m) {
+  TreeRow row;
+  row.species = species;
+  row.dbh_m = dbh_m;
+  row.height_m = height_m;
+  return row;
+}
+
+double basalArea(float dbh_m) {
+  const double d = dbh_m;
+  return std::numbers::pi / 4.0 * d * d;
+}
+
+TEST(StandTable, TalliesEachTreeOfTenCentimetresIntoItsDiameterClass) {
+  TreeSnapshot snapshot{150, {"beech", "pine"}, {}};
+  snapshot.trees = {tree(0, 0.12f, 15.0f), tree(0, 0.14f, 17.0f), tree(1, 0.31f, 25.0f),
+                    tree(0, 0.05f, 6.0f),    // under the calipering limit: not tallied
+                    tree(0, 0.15f, 20.0f)};  // on a boundary: the class it opens
+  const StandTable table = standTable(snapshot, {0.5, 0.4}, 2.0, 5.0);
+  ASSERT_EQ(table.rows, (std::vector<std::string>{"beech", "pine", "all"}));
+  ASSERT_EQ(table.classCount(), 5u);  // 10-15 up to 30-35, the thickest tree's
+  EXPECT_DOUBLE_EQ(table.from_cm(0), 10.0);
+  EXPECT_DOUBLE_EQ(table.from_cm(4), 30.0);
+
+  const DiameterClass& thinBeech = table.classes[0][0];
+  EXPECT_DOUBLE_EQ(thinBeech.stemsPerHa, 1.0);  // two trees on 2 ha
+  EXPECT_NEAR(thinBeech.basalArea_m2PerHa, (basalArea(0.12f) + basalArea(0.14f)) / 2.0, 1e-12);
+  EXPECT_NEAR(thinBeech.volume_m3PerHa,
+              0.5 * (basalArea(0.12f) * 15.0 + basalArea(0.14f) * 17.0) / 2.0, 1e-12);
+  EXPECT_DOUBLE_EQ(thinBeech.meanHeight_m, 16.0);
+  EXPECT_NEAR(thinBeech.meanSlenderness, (15.0 / double(0.12f) + 17.0 / double(0.14f)) / 2.0, 1e-9);
+  EXPECT_DOUBLE_EQ(table.classes[0][1].stemsPerHa, 0.5);
+  EXPECT_DOUBLE_EQ(table.classes[0][1].meanHeight_m, 20.0);
+  // Classes without trees are zeros, means included.
+  EXPECT_EQ(table.classes[0][4].stemsPerHa, 0.0);
+  EXPECT_EQ(table.classes[0][4].meanHeight_m, 0.0);
+  EXPECT_EQ(table.classes[1][0].stemsPerHa, 0.0);
+  EXPECT_DOUBLE_EQ(table.classes[1][4].stemsPerHa, 0.5);
+  EXPECT_NEAR(table.classes[1][4].volume_m3PerHa, 0.4 * basalArea(0.31f) * 25.0 / 2.0, 1e-12);
+  // The stand's row holds every species'.
+  EXPECT_DOUBLE_EQ(table.classes[2][0].stemsPerHa, 1.0);
+  EXPECT_DOUBLE_EQ(table.classes[2][4].stemsPerHa, 0.5);
+  const DiameterClass all = table.total(2);
+  EXPECT_DOUBLE_EQ(all.stemsPerHa, 2.0);
+  EXPECT_NEAR(all.meanHeight_m, (15.0 + 17.0 + 25.0 + 20.0) / 4.0, 1e-12);
+}
+
+TEST(StandTable, ItsClassesAddUpToTheStandMeasuresOfStatsCsv) {
+  Rng random(7);
+  TreeSnapshot snapshot{60, {"beech", "maple", "pine"}, {}};
+  const std::vector<double> formFactors{0.5, 0.45, 0.42};
+  for (int i = 0; i < 5000; ++i) {
+    const float dbh = static_cast<float>(0.01 + 0.8 * std::pow(random.uniform(), 2.0));
+    snapshot.trees.push_back(tree(i % 3, dbh, static_cast<float>(1.3 + 60.0 * dbh)));
+  }
+  for (const double width : {2.0, 5.0, 10.0}) {
+    const StandTable table = standTable(snapshot, formFactors, 3.5, width);
+    std::vector<StandTally> tallies(4);
+    for (const TreeRow& t : snapshot.trees) {
+      tallies[static_cast<std::size_t>(t.species)].add(t.dbh_m, t.height_m, formFactors[t.species]);
+      tallies[3].add(t.dbh_m, t.height_m, formFactors[t.species]);
+    }
+    for (std::size_t row = 0; row < 4; ++row) {
+      const StandMeasures expected = tallies[row].perHectare(3.5);
+      const DiameterClass total = table.total(row);
+      EXPECT_NEAR(total.stemsPerHa, expected.stemsPerHa, 1e-9) << width << " cm, row " << row;
+      EXPECT_NEAR(total.basalArea_m2PerHa, expected.basalArea_m2PerHa, 1e-9);
+      EXPECT_NEAR(total.volume_m3PerHa, expected.volume_m3PerHa, 1e-9);
+    }
+    // Every class holds the trees its bounds say.
+    for (std::size_t k = 0; k < table.classCount(); ++k) {
+      double stems = 0.0;
+      for (const TreeRow& t : snapshot.trees)
+        if (t.dbh_m >= kMeasuredDbh_m && 100.0 * t.dbh_m >= table.from_cm(k) &&
+            100.0 * t.dbh_m < table.from_cm(k + 1))
+          stems += 1.0;
+      EXPECT_NEAR(table.classes[3][k].stemsPerHa * 3.5, stems, 1e-9) << width << " cm, class " << k;
+    }
+  }
+}
+
+TEST(StandTable, AStandWithoutTreesOfTenCentimetresHasNoClasses) {
+  TreeSnapshot snapshot{5, {"beech"}, {tree(0, 0.02f, 2.0f)}};
+  const StandTable table = standTable(snapshot, {0.5}, 1.0, 5.0);
+  EXPECT_EQ(table.classCount(), 0u);
+  EXPECT_EQ(table.total(1).stemsPerHa, 0.0);
+  EXPECT_EQ(standTableCsv(table).find('\n') + 1, standTableCsv(table).size());  // the header
+  EXPECT_NE(standTableText(table).find("total"), std::string::npos);
+}
+
+TEST(StandTable, WritesALinePerRowAndClassAndATableForReading) {
+  TreeSnapshot snapshot{150, {"beech", "pine"}, {tree(0, 0.12f, 15.0f), tree(1, 0.31f, 25.0f)}};
+  const StandTable table = standTable(snapshot, {0.5, 0.4}, 2.0, 10.0);
+  std::istringstream csv(standTableCsv(table));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line,
+            "year,species,dbh_from_cm,dbh_to_cm,stems_per_ha,basal_area_m2_per_ha,volume_m3_per_ha,"
+            "mean_height_m,mean_slenderness");
+  std::vector<std::string> lines;
+  while (std::getline(csv, line)) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 9u);  // beech, pine and all, each in 10-20, 20-30 and 30-40
+  EXPECT_EQ(lines[0].rfind("150,beech,10,20,0.50,", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[8].rfind("150,all,30,40,0.50,", 0), 0u) << lines[8];
+  const std::string text = standTableText(table);
+  EXPECT_NE(text.find("year 150, 2.00 ha"), std::string::npos) << text;
+  EXPECT_NE(text.find("30-40"), std::string::npos) << text;
+  EXPECT_NE(text.find("total"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace eco

@@ -13,6 +13,7 @@
 #include "sim/run/charts.hpp"
 #include "sim/run/comparison.hpp"
 #include "sim/run/simulation.hpp"
+#include "sim/run/stand_table.hpp"
 
 namespace eco {
 namespace {
@@ -48,6 +49,39 @@ const Charted kCharts[] = {
      [](const StandYear& y) { return y.removedVolumeSoFar_m3PerHa; }},
 };
 
+// Diameter classes of the compared stand tables, cm.
+constexpr double kCompareClassWidth_cm = 5.0;
+
+// Each run's stand table in each year every run has a snapshot of: a CSV of them all
+// (stand_tables.csv, the run's name first on each line) and a chart of the stems per class
+// for each year.
+void writeDiameterDistributions(const std::vector<RunFolder>& folders,
+                                const std::vector<std::string>& names,
+                                const std::vector<int>& years, const std::filesystem::path& out) {
+  std::string csv = fmt::format("run,{}\n", kStandTableCsvHeader);
+  for (int year : years) {
+    LineChart chart{fmt::format("Diameter distribution in year {} (classes of {:g} cm)", year,
+                                kCompareClassWidth_cm),
+                    "dbh, cm (class middle)",
+                    "stems/ha",
+                    {},
+                    {}};
+    for (std::size_t i = 0; i < folders.size(); ++i) {
+      const StandTable table = standTableOfRun(folders[i], year, kCompareClassWidth_cm);
+      csv += standTableCsvLines(table, names[i] + ",");
+      ChartSeries& series = chart.series.emplace_back(ChartSeries{names[i], {}});
+      const std::size_t stand = table.rows.size() - 1;
+      for (std::size_t k = 0; k < table.classCount(); ++k)
+        series.points.emplace_back(table.from_cm(k) + 0.5 * kCompareClassWidth_cm,
+                                   table.classes[stand][k].stemsPerHa);
+    }
+    writeRgb8Image(out / fmt::format("diameters_year_{:04d}.png", year), drawLineChart(chart));
+  }
+  AtomicFile file(out / "stand_tables.csv");
+  file.write(csv);
+  file.commit();
+}
+
 // Each run by its scenario's name, or its folder's where two runs share a scenario name.
 std::vector<std::string> namesOf(const std::vector<RunFolder>& runs) {
   std::vector<std::string> names;
@@ -68,17 +102,19 @@ void runCompare(const CompareArgs& args) {
   for (std::size_t i = 0; i < folders.size(); ++i)
     runs.push_back(readComparedRun(folders[i].dir, names[i]));
   const std::vector<int> years = comparisonYears(runs, args.years);
-  // Stills need a snapshot of the year in every run.
-  std::vector<int> stillYears;
-  for (int year : args.noStills ? std::vector<int>{} : years) {
+  // Stills and diameter distributions need a snapshot of the year in every run.
+  std::vector<int> snapshotYears;
+  for (int year : years) {
     const bool everyRun = std::all_of(folders.begin(), folders.end(), [&](const RunFolder& f) {
       return std::binary_search(f.snapshotYears.begin(), f.snapshotYears.end(), year);
     });
     if (everyRun)
-      stillYears.push_back(year);
+      snapshotYears.push_back(year);
     else
-      std::cerr << fmt::format("compare: no still of year {}: not every run has its snapshot\n",
-                               year);
+      std::cerr << fmt::format(
+          "compare: no still or diameter distribution of year {}: not every run has its "
+          "snapshot\n",
+          year);
   }
   const std::filesystem::path out(args.out);
   createOutputFolder(out);
@@ -99,10 +135,13 @@ void runCompare(const CompareArgs& args) {
     }
     writeRgb8Image(out / c.file, drawLineChart(chart));
   }
+  writeDiameterDistributions(folders, names, snapshotYears, out);
   std::cout << fmt::format(
-      "compare: {} runs at years {}: {}/compare.csv, compare.md and {} charts\n", runs.size(),
-      fmt::join(years, ", "), out.string(), std::size(kCharts));
-  if (stillYears.empty()) return;
+      "compare: {} runs at years {}: {}/compare.csv, compare.md, {} charts, stand_tables.csv and "
+      "{} diameter distributions\n",
+      runs.size(), fmt::join(years, ", "), out.string(), std::size(kCharts), snapshotYears.size());
+  if (args.noStills || snapshotYears.empty()) return;
+  const std::vector<int>& stillYears = snapshotYears;
   // One still per run and year; runs whose species are the same files share one tree
   // library, built once (it is the slow and large part).
   std::vector<std::vector<Image>> stills(stillYears.size());

@@ -1,6 +1,5 @@
 #include "app/stand_command.hpp"
 
-#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -10,8 +9,6 @@
 #include "app/scene_source.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "sim/ecology/ecosystem.hpp"
-#include "sim/run/run_format.hpp"
 #include "sim/run/stand_table.hpp"
 
 namespace eco {
@@ -24,36 +21,15 @@ struct StandArgs {
   std::string out;
 };
 
-// The form factor of each of the snapshot's species, from the run's species files.
-std::vector<double> formFactorsOf(const TreeSnapshot& snapshot, const Scenario& scenario,
-                                  const std::filesystem::path& snapshotFile) {
-  std::vector<EcosystemSpecies> species;
-  for (const ScenarioSpecies& entry : scenario.species)
-    species.push_back(readEcosystemSpecies(entry.file, entry.where));
-  std::vector<double> formFactors;
-  for (const std::string& name : snapshot.speciesNames) {
-    auto it = std::find_if(species.begin(), species.end(),
-                           [&](const EcosystemSpecies& s) { return s.species.name == name; });
-    if (it == species.end())
-      throw InputError(
-          {snapshotFile, 0, "species"},
-          fmt::format("species '{}' is not one of the run's scenario's species", name));
-    formFactors.push_back(it->ecology.life.formFactor);
-  }
-  return formFactors;
-}
-
 void runStand(const StandArgs& args) {
   const std::optional<std::filesystem::path> out =
       args.out.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.out);
   if (out) requireOutputFolder(*out);
-  const SceneSource source = openRunSource(args.run);
-  const int year = args.year.value_or(source.defaultYear());
-  const TreeSnapshot snapshot = readSnapshot(*source.run, year);
-  const std::filesystem::path snapshotFile = RunPaths{source.run->dir}.existingSnapshot(year);
+  const RunFolder run = openRunArgument(args.run);
+  if (run.snapshotYears.empty())
+    throw InputError({run.dir, 0, "trees"}, "the run has no tree snapshot yet");
   const StandTable table =
-      standTable(snapshot, formFactorsOf(snapshot, source.scenario, snapshotFile),
-                 source.terrain.grid.area_m2() / 1e4, args.classWidth_cm);
+      standTableOfRun(run, args.year.value_or(run.snapshotYears.back()), args.classWidth_cm);
   std::cout << standTableText(table);
   if (!out) return;
   AtomicFile file(*out);

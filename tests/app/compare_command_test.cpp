@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include "app_support.hpp"
 
 namespace {
@@ -89,6 +91,21 @@ TEST(CompareCommand, WritesTheTableChartsAndStillsOfTheRuns) {
     EXPECT_EQ(sizeOf(out / chart), std::make_pair(900, 520)) << chart;
   for (const char* still : {"stills_year_0010.png", "stills_year_0030.png"})
     EXPECT_EQ(sizeOf(out / still), std::make_pair(2 * 160, 90 + 30)) << still;
+  // The runs' stand tables of each year, and a chart of their diameter distributions.
+  for (const char* chart : {"diameters_year_0010.png", "diameters_year_0030.png"})
+    EXPECT_EQ(sizeOf(out / chart), std::make_pair(900, 520)) << chart;
+  std::istringstream tables(eco::test::readFile(out / "stand_tables.csv"));
+  std::string line;
+  std::getline(tables, line);
+  EXPECT_EQ(line.rfind("run,year,species,dbh_from_cm,dbh_to_cm,stems_per_ha", 0), 0u) << line;
+  int planted30 = 0;
+  while (std::getline(tables, line)) {
+    EXPECT_TRUE(line.starts_with("app_compare_natural,") ||
+                line.starts_with("app_compare_planted,"))
+        << line;
+    planted30 += line.starts_with("app_compare_planted,30,all,") ? 1 : 0;
+  }
+  EXPECT_GE(planted30, 1);  // its pines of 30 years pass 10 cm
 }
 
 TEST(CompareCommand, BadArgumentsAreExitTwo) {

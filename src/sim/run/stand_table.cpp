@@ -6,8 +6,10 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "sim/ecology/ecosystem.hpp"
 #include "sim/ecology/stand_measures.hpp"
 #include "sim/run/run_format.hpp"
+#include "sim/terrain.hpp"
 
 namespace eco {
 namespace {
@@ -36,6 +38,25 @@ struct ClassSums {
     return c;
   }
 };
+
+// The form factor of each of the snapshot's species, from the run's species files.
+std::vector<double> formFactorsOf(const TreeSnapshot& snapshot, const Scenario& scenario,
+                                  const std::filesystem::path& snapshotFile) {
+  std::vector<EcosystemSpecies> species;
+  for (const ScenarioSpecies& entry : scenario.species)
+    species.push_back(readEcosystemSpecies(entry.file, entry.where));
+  std::vector<double> formFactors;
+  for (const std::string& name : snapshot.speciesNames) {
+    auto it = std::find_if(species.begin(), species.end(),
+                           [&](const EcosystemSpecies& s) { return s.species.name == name; });
+    if (it == species.end())
+      throw InputError(
+          {snapshotFile, 0, "species"},
+          fmt::format("species '{}' is not one of the run's scenario's species", name));
+    formFactors.push_back(it->ecology.life.formFactor);
+  }
+  return formFactors;
+}
 
 }  // namespace
 
@@ -98,16 +119,26 @@ StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& f
   return table;
 }
 
+StandTable standTableOfRun(const RunFolder& run, int year, double classWidth_cm) {
+  const TreeSnapshot snapshot = readSnapshot(run, year);
+  const std::filesystem::path file = RunPaths{run.dir}.existingSnapshot(year);
+  return standTable(snapshot, formFactorsOf(snapshot, run.scenario, file),
+                    loadTerrain(run.scenario).grid.area_m2() / 1e4, classWidth_cm);
+}
+
 std::string standTableCsv(const StandTable& table) {
-  std::string text =
-      "year,species,dbh_from_cm,dbh_to_cm,stems_per_ha,basal_area_m2_per_ha,volume_m3_per_ha,"
-      "mean_height_m,mean_slenderness\n";
+  return std::string(kStandTableCsvHeader) + "\n" + standTableCsvLines(table);
+}
+
+std::string standTableCsvLines(const StandTable& table, std::string_view prefix) {
+  std::string text;
   for (std::size_t r = 0; r < table.rows.size(); ++r)
     for (std::size_t k = 0; k < table.classCount(); ++k) {
       const DiameterClass& c = table.classes[r][k];
-      text += fmt::format("{},{},{:g},{:g},{:.2f},{:.4f},{:.3f},{:.2f},{:.1f}\n", table.year,
-                          table.rows[r], table.from_cm(k), table.from_cm(k + 1), c.stemsPerHa,
-                          c.basalArea_m2PerHa, c.volume_m3PerHa, c.meanHeight_m, c.meanSlenderness);
+      text +=
+          fmt::format("{}{},{},{:g},{:g},{:.2f},{:.4f},{:.3f},{:.2f},{:.1f}\n", prefix, table.year,
+                      table.rows[r], table.from_cm(k), table.from_cm(k + 1), c.stemsPerHa,
+                      c.basalArea_m2PerHa, c.volume_m3PerHa, c.meanHeight_m, c.meanSlenderness);
     }
   return text;
 }

@@ -6,8 +6,10 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "sim/run/run_folder.hpp"
 #include "sim/run/trees_file.hpp"
 
 namespace eco {
@@ -41,9 +43,17 @@ struct StandTable {
 StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& formFactors,
                       double area_ha, double classWidth_cm);
 
-// `year,species,dbh_from_cm,dbh_to_cm,stems_per_ha,basal_area_m2_per_ha,volume_m3_per_ha,
-// mean_height_m,mean_slenderness`: a line per row and class, the stand's as species "all".
+// The stand table of a run's snapshot of `year`, per hectare of its map, with its species'
+// form factors; InputErrors name the snapshot (a year it lacks, a species its scenario lacks).
+StandTable standTableOfRun(const RunFolder& run, int year, double classWidth_cm);
+
+// A CSV line per row and class, the stand's as species "all", under this header.
+inline constexpr const char* kStandTableCsvHeader =
+    "year,species,dbh_from_cm,dbh_to_cm,stems_per_ha,basal_area_m2_per_ha,volume_m3_per_ha,"
+    "mean_height_m,mean_slenderness";
 std::string standTableCsv(const StandTable& table);
+// The same lines without the header, each after `prefix` (compare's run name and a comma).
+std::string standTableCsvLines(const StandTable& table, std::string_view prefix = "");
 // For a terminal: a line per class, each species' stems and the stand's measures, and the
 // totals last.
 std::string standTableText(const StandTable& table);

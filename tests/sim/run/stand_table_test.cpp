@@ -1,13 +1,19 @@
 #include "sim/run/stand_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "core/random.hpp"
 #include "sim/ecology/stand_measures.hpp"
+#include "sim/run/run_format.hpp"
+#include "sim/run/simulation.hpp"
+#include "test_files.hpp"
 
 namespace eco {
 namespace {
@@ -120,6 +126,59 @@ TEST(StandTable, WritesALinePerRowAndClassAndATableForReading) {
   EXPECT_NE(text.find("year 150, 2.00 ha"), std::string::npos) << text;
   EXPECT_NE(text.find("30-40"), std::string::npos) << text;
   EXPECT_NE(text.find("total"), std::string::npos) << text;
+}
+
+// A run's own snapshot, per hectare of its map, with its species' form factors: the totals
+// are its stats.csv's (to the digits stats.csv prints; binary snapshots keep the diameters).
+TEST(StandTable, OfARunAddsUpToItsStatsCsv) {
+  const auto folder = test::freshDirectory("stand_table_run");
+  test::writeFile(folder / "s.toml", fmt::format(R"(name = "plot"
+seed = 3
+[terrain]
+cell_size_m = 5
+[terrain.generate]
+size = 9
+relief_m = 0
+[simulation]
+years = 40
+[[species]]
+file = "{0}/species/pine.toml"
+[[species]]
+file = "{0}/species/beech.toml"
+[[planting]]
+species = {{ pine = 0.5, beech = 0.5 }}
+spacing_m = 2.0
+[output]
+snapshot_every_years = 40
+snapshot_format = "binary"
+)",
+                                                 ECOFOREST_DATA_DIR));
+  RunOptions options;
+  options.scenarioFile = folder / "s.toml";
+  options.out = folder / "run";
+  runSimulation(options);
+  const RunFolder run = openRunFolder(folder / "run");
+  const StandTable table = standTableOfRun(run, 40, 5.0);
+  EXPECT_NEAR(table.area_ha, 45.0 * 45.0 / 1e4, 1e-12);
+  const StatsFile stats = readStatsCsv(folder / "run" / "stats.csv");
+  ASSERT_EQ(table.rows.size(), stats.species.size() + 1);
+  for (const StatsRow& row : stats.rows) {
+    if (row.year != 40) continue;
+    const std::size_t r =
+        row.species == kAllSpecies
+            ? table.rows.size() - 1
+            : static_cast<std::size_t>(
+                  std::find(table.rows.begin(), table.rows.end(),
+                            stats.species[static_cast<std::size_t>(row.species)]) -
+                  table.rows.begin());
+    ASSERT_LT(r, table.rows.size());
+    const DiameterClass total = table.total(r);
+    EXPECT_NEAR(total.stemsPerHa, row.stemsPerHa, 0.05) << table.rows[r];
+    EXPECT_NEAR(total.basalArea_m2PerHa, row.basalArea_m2PerHa, 5e-5) << table.rows[r];
+    EXPECT_NEAR(total.volume_m3PerHa, row.volume_m3PerHa, 5e-3) << table.rows[r];
+  }
+  EXPECT_GT(table.total(table.rows.size() - 1).stemsPerHa, 100.0);  // the pines pass 10 cm
+  EXPECT_THROW(standTableOfRun(run, 20, 5.0), InputError);          // no snapshot of year 20
 }
 
 }  // namespace

@@ -182,8 +182,9 @@ void runCompare(const CompareArgs& args) {
 void addCompareCommand(CLI::App& app) {
   auto args = std::make_shared<CompareArgs>();
   args->view.size = {640, 360};
-  CLI::App* command = app.add_subcommand(
-      "compare", "Compare runs: a table at chosen years, charts over time, stills side by side");
+  CLI::App* command = app.add_subcommand("compare",
+                                         "Compare runs: a table at chosen years, charts over time, "
+                                         "diameter distributions, stills side by side");
   command->add_option("runs", args->runs, "Two or more run folders of `ecoforest run`")->required();
   command->add_option("--out", args->out, "Folder to write the comparison into")->required();
   command

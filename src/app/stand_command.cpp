@@ -45,8 +45,7 @@ void addStandCommand(CLI::App& app) {
   auto args = std::make_shared<StandArgs>();
   CLI::App* command = app.add_subcommand(
       "stand",
-      "Print a run's stand table: its trees of at least 10 cm by diameter class and species, "
-      "stems, basal area and volume per hectare, mean height and slenderness");
+      "Print a run's stand table: its trees of 10 cm and more by diameter class and species");
   command->add_option("run", args->run, "Run folder of `ecoforest run`")->required();
   command->add_option("--year", args->year, "Snapshot year (default: the run's last)");
   command->add_option("--class-width", args->classWidth_cm, "Width of a diameter class, cm")

@@ -86,7 +86,8 @@ void writeStatsCsv(const std::filesystem::path& file, const std::vector<StatsRow
     text += fmt::format(
         "{},{},{},{},{},{:.3f},{:.1f},{:.4f},{:.2f},{:.2f},{:.1f},{:.2f},{:.4f},{:.4f},{},{},{},{:."
         "3f}\n",
-        r.year, r.species == kAllSpecies ? std::string(kAllSpeciesName) : species[r.species].species.name,
+        r.year,
+        r.species == kAllSpecies ? std::string(kAllSpeciesName) : species[r.species].species.name,
         r.alive, r.born, r.died, r.meanHeight_m, r.stemsPerHa, r.basalArea_m2PerHa, r.qmd_cm,
         r.dominantHeight_m, r.sdi, r.volume_m3PerHa, r.coverFraction,
         r.densestHectareBasalArea_m2PerHa, r.planted, r.diedAfterPlanting, r.removed,

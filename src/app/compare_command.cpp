@@ -58,24 +58,28 @@ constexpr double kCompareClassWidth_cm = 5.0;
 void writeDiameterDistributions(const std::vector<RunFolder>& folders,
                                 const std::vector<std::string>& names,
                                 const std::vector<int>& years, const std::filesystem::path& out) {
+  // tables[run][k]: the map and species files of each run read once for all its years.
+  std::vector<std::vector<StandTable>> tables;
+  for (const RunFolder& folder : folders)
+    tables.push_back(standTablesOfRun(folder, years, kCompareClassWidth_cm));
   std::string csv = fmt::format("run,{}\n", kStandTableCsvHeader);
-  for (int year : years) {
-    LineChart chart{fmt::format("Diameter distribution in year {} (classes of {:g} cm)", year,
+  for (std::size_t k = 0; k < years.size(); ++k) {
+    LineChart chart{fmt::format("Diameter distribution in year {} (classes of {:g} cm)", years[k],
                                 kCompareClassWidth_cm),
                     "dbh, cm (class middle)",
                     "stems/ha",
                     {},
                     {}};
     for (std::size_t i = 0; i < folders.size(); ++i) {
-      const StandTable table = standTableOfRun(folders[i], year, kCompareClassWidth_cm);
+      const StandTable& table = tables[i][k];
       csv += standTableCsvLines(table, names[i] + ",");
       ChartSeries& series = chart.series.emplace_back(ChartSeries{names[i], {}});
       const std::size_t stand = table.rows.size() - 1;
-      for (std::size_t k = 0; k < table.classCount(); ++k)
-        series.points.emplace_back(table.from_cm(k) + 0.5 * kCompareClassWidth_cm,
-                                   table.classes[stand][k].stemsPerHa);
+      for (std::size_t c = 0; c < table.classCount(); ++c)
+        series.points.emplace_back(table.from_cm(c) + 0.5 * kCompareClassWidth_cm,
+                                   table.classes[stand][c].stemsPerHa);
     }
-    writeRgb8Image(out / fmt::format("diameters_year_{:04d}.png", year), drawLineChart(chart));
+    writeRgb8Image(out / fmt::format("diameters_year_{:04d}.png", years[k]), drawLineChart(chart));
   }
   AtomicFile file(out / "stand_tables.csv");
   file.write(csv);

@@ -29,7 +29,7 @@ void runStand(const StandArgs& args) {
   if (run.snapshotYears.empty())
     throw InputError({run.dir, 0, "trees"}, "the run has no tree snapshot yet");
   const StandTable table =
-      standTableOfRun(run, args.year.value_or(run.snapshotYears.back()), args.classWidth_cm);
+      standTablesOfRun(run, {args.year.value_or(run.snapshotYears.back())}, args.classWidth_cm)[0];
   std::cout << standTableText(table);
   if (!out) return;
   AtomicFile file(*out);

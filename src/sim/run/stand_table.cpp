@@ -39,12 +39,10 @@ struct ClassSums {
   }
 };
 
-// The form factor of each of the snapshot's species, from the run's species files.
-std::vector<double> formFactorsOf(const TreeSnapshot& snapshot, const Scenario& scenario,
+// The form factor of each of the snapshot's species, from its run's species.
+std::vector<double> formFactorsOf(const TreeSnapshot& snapshot,
+                                  const std::vector<EcosystemSpecies>& species,
                                   const std::filesystem::path& snapshotFile) {
-  std::vector<EcosystemSpecies> species;
-  for (const ScenarioSpecies& entry : scenario.species)
-    species.push_back(readEcosystemSpecies(entry.file, entry.where));
   std::vector<double> formFactors;
   for (const std::string& name : snapshot.speciesNames) {
     auto it = std::find_if(species.begin(), species.end(),
@@ -119,11 +117,21 @@ StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& f
   return table;
 }
 
-StandTable standTableOfRun(const RunFolder& run, int year, double classWidth_cm) {
-  const TreeSnapshot snapshot = readSnapshot(run, year);
-  const std::filesystem::path file = RunPaths{run.dir}.existingSnapshot(year);
-  return standTable(snapshot, formFactorsOf(snapshot, run.scenario, file),
-                    loadTerrain(run.scenario).grid.area_m2() / 1e4, classWidth_cm);
+std::vector<StandTable> standTablesOfRun(const RunFolder& run, const std::vector<int>& years,
+                                         double classWidth_cm) {
+  for (int year : years) requireSnapshotYear(run, year);  // before the map and species
+  std::vector<EcosystemSpecies> species;
+  for (const ScenarioSpecies& entry : run.scenario.species)
+    species.push_back(readEcosystemSpecies(entry.file, entry.where));
+  const double area_ha = loadTerrain(run.scenario).grid.area_m2() / 1e4;
+  std::vector<StandTable> tables;
+  for (int year : years) {
+    const TreeSnapshot snapshot = readSnapshot(run, year);
+    const std::filesystem::path file = RunPaths{run.dir}.existingSnapshot(year);
+    tables.push_back(
+        standTable(snapshot, formFactorsOf(snapshot, species, file), area_ha, classWidth_cm));
+  }
+  return tables;
 }
 
 std::string standTableCsv(const StandTable& table) {

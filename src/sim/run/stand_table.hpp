@@ -43,9 +43,11 @@ struct StandTable {
 StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& formFactors,
                       double area_ha, double classWidth_cm);
 
-// The stand table of a run's snapshot of `year`, per hectare of its map, with its species'
-// form factors; InputErrors name the snapshot (a year it lacks, a species its scenario lacks).
-StandTable standTableOfRun(const RunFolder& run, int year, double classWidth_cm);
+// The stand tables of a run's snapshots of `years`, per hectare of its map, with its
+// species' form factors (the map and the species files read once); InputErrors name the
+// snapshot (a year it lacks, a species its scenario lacks).
+std::vector<StandTable> standTablesOfRun(const RunFolder& run, const std::vector<int>& years,
+                                         double classWidth_cm);
 
 // A CSV line per row and class, the stand's as species "all", under this header.
 inline constexpr const char* kStandTableCsvHeader =

@@ -5,42 +5,20 @@
 #include <sstream>
 
 #include "app_support.hpp"
+#include "test_scenarios.hpp"
 
 namespace {
 
 using eco::test::CommandResult;
 using eco::test::ecoforest;
 
-// A 45 m plot planted with pine and beech 2 m apart, grown 40 years, binary snapshots of
-// years 20 and 40 (the simulation's diameters exactly): made once for every test here.
+// The planted plot (test_scenarios.hpp) grown once for every test here.
 const std::filesystem::path& plotRun() {
   static const std::filesystem::path run = [] {
     const auto dir = eco::test::freshDirectory("app_stand");
-    eco::test::writeFile(dir / "plot.toml",
-                         fmt::format(R"(name = "stand_plot"
-seed = 3
-[terrain]
-cell_size_m = 5
-[terrain.generate]
-size = 9
-relief_m = 0
-base_altitude_m = 400
-[simulation]
-years = 40
-[[species]]
-file = "{0}/species/pine.toml"
-[[species]]
-file = "{0}/species/beech.toml"
-[[planting]]
-species = {{ pine = 0.5, beech = 0.5 }}
-spacing_m = 2.0
-[output]
-dir = "{1}"
-snapshot_every_years = 20
-snapshot_format = "binary"
-)",
-                                     ECOFOREST_DATA_DIR, (dir / "run").string()));
-    CommandResult r = ecoforest("run " + (dir / "plot.toml").string());
+    eco::test::writeFile(dir / "plot.toml", eco::test::plantedPlotScenario(ECOFOREST_DATA_DIR));
+    CommandResult r = ecoforest(
+        fmt::format("run {} --out {}", (dir / "plot.toml").string(), (dir / "run").string()));
     EXPECT_EQ(r.exitCode, 0) << r.output;
     return dir / "run";
   }();

@@ -5,7 +5,6 @@
 #include <numbers>
 #include <sstream>
 
-#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
@@ -14,6 +13,7 @@
 #include "sim/run/run_format.hpp"
 #include "sim/run/simulation.hpp"
 #include "test_files.hpp"
+#include "test_scenarios.hpp"
 
 namespace eco {
 namespace {
@@ -132,33 +132,13 @@ TEST(StandTable, WritesALinePerRowAndClassAndATableForReading) {
 // are its stats.csv's (to the digits stats.csv prints; binary snapshots keep the diameters).
 TEST(StandTable, OfARunAddsUpToItsStatsCsv) {
   const auto folder = test::freshDirectory("stand_table_run");
-  test::writeFile(folder / "s.toml", fmt::format(R"(name = "plot"
-seed = 3
-[terrain]
-cell_size_m = 5
-[terrain.generate]
-size = 9
-relief_m = 0
-[simulation]
-years = 40
-[[species]]
-file = "{0}/species/pine.toml"
-[[species]]
-file = "{0}/species/beech.toml"
-[[planting]]
-species = {{ pine = 0.5, beech = 0.5 }}
-spacing_m = 2.0
-[output]
-snapshot_every_years = 40
-snapshot_format = "binary"
-)",
-                                                 ECOFOREST_DATA_DIR));
+  test::writeFile(folder / "s.toml", test::plantedPlotScenario(ECOFOREST_DATA_DIR));
   RunOptions options;
   options.scenarioFile = folder / "s.toml";
   options.out = folder / "run";
   runSimulation(options);
   const RunFolder run = openRunFolder(folder / "run");
-  const StandTable table = standTableOfRun(run, 40, 5.0);
+  const StandTable table = standTablesOfRun(run, {40}, 5.0).at(0);
   EXPECT_NEAR(table.area_ha, 45.0 * 45.0 / 1e4, 1e-12);
   const StatsFile stats = readStatsCsv(folder / "run" / "stats.csv");
   ASSERT_EQ(table.rows.size(), stats.species.size() + 1);
@@ -178,7 +158,7 @@ snapshot_format = "binary"
     EXPECT_NEAR(total.volume_m3PerHa, row.volume_m3PerHa, 5e-3) << table.rows[r];
   }
   EXPECT_GT(table.total(table.rows.size() - 1).stemsPerHa, 100.0);  // the pines pass 10 cm
-  EXPECT_THROW(standTableOfRun(run, 20, 5.0), InputError);          // no snapshot of year 20
+  EXPECT_THROW(standTablesOfRun(run, {40, 30}, 5.0), InputError);   // no snapshot of year 30
 }
 
 }  // namespace

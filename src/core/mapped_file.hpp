@@ -14,14 +14,23 @@ namespace eco {
 
 class MappedFile {
  public:
+  // How a reader goes through the bytes: all of them held at once (the mapping filled in
+  // as it is made), or in order, a part at a time, each part released when it is done, so
+  // the process never holds more of the file than the parts it reads (a landscape's
+  // snapshot of 4 GB, of which a stand table keeps a tenth).
+  enum class Reading { Whole, InParts };
   // Nothing when the file cannot be opened or is not a regular file.
-  static std::optional<MappedFile> open(const std::filesystem::path& file);
+  static std::optional<MappedFile> open(const std::filesystem::path& file,
+                                        Reading reading = Reading::Whole);
   MappedFile(MappedFile&& other) noexcept;
   MappedFile& operator=(MappedFile&&) = delete;
   MappedFile(const MappedFile&) = delete;
   ~MappedFile();
 
   std::string_view bytes() const { return {data_, size_}; }
+  // Done with `part` (bytes of bytes()): the whole pages it spans leave the process's
+  // memory; read again, they come back from the file.
+  void release(std::string_view part) const;
 
  private:
   MappedFile(const char* data, std::size_t size) : data_(data), size_(size) {}

@@ -31,9 +31,14 @@ std::uint64_t combineBlockHashes(const std::vector<std::uint64_t>& hashes) {
 
 }  // namespace
 
-std::uint64_t blockChecksum(std::string_view bytes) {
+std::uint64_t blockChecksum(std::string_view bytes, const PartDone& hashed) {
+  constexpr std::size_t kPart = 64 * kChecksumBlock;  // whole blocks: the same blocks' hashes
   std::vector<std::uint64_t> hashes;
-  appendBlockHashes(bytes, hashes);
+  for (std::size_t at = 0; at < bytes.size(); at += kPart) {
+    const std::string_view part = bytes.substr(at, kPart);
+    appendBlockHashes(part, hashes);
+    if (hashed) hashed(part);
+  }
   return combineBlockHashes(hashes);
 }
 
@@ -72,20 +77,21 @@ void ChecksummedOutput::emit(std::string_view bytes) {
   tbb::parallel_invoke([&] { appendBlockHashes(bytes, hashes_); }, [&] { out_.write(bytes); });
 }
 
-std::optional<std::string_view> checkedBody(std::string_view bytes) {
+std::optional<std::string_view> checkedBody(std::string_view bytes, const PartDone& hashed) {
   if (bytes.size() < sizeof(std::uint64_t)) return std::nullopt;
   const std::string_view body = bytes.substr(0, bytes.size() - sizeof(std::uint64_t));
   std::uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + body.size(), sizeof stored);
-  if (stored != blockChecksum(body)) return std::nullopt;
+  if (stored != blockChecksum(body, hashed)) return std::nullopt;
   return body;
 }
 
-SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint32_t version) {
+SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint32_t version,
+                      const PartDone& hashed) {
   BinaryReader header(bytes);
   if (header.getString() != magic || header.failed()) return {SealedFile::Fault::NotOurs, {}};
   if (header.get<std::uint32_t>() != version) return {SealedFile::Fault::OtherVersion, {}};
-  const std::optional<std::string_view> body = checkedBody(bytes);
+  const std::optional<std::string_view> body = checkedBody(bytes, hashed);
   // A forged checksum over bytes shorter than the header is no body either.
   const std::size_t headerBytes = bytes.size() - header.remaining();
   if (!body || headerBytes > body->size()) return {SealedFile::Fault::Corrupt, {}};
@@ -94,8 +100,8 @@ SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint3
 
 std::string_view requireSealed(std::string_view bytes, std::string_view magic,
                                std::uint32_t version, const std::filesystem::path& file,
-                               const SealedFileFaults& say) {
-  const SealedFile sealed = openSealed(bytes, magic, version);
+                               const SealedFileFaults& say, const PartDone& hashed) {
+  const SealedFile sealed = openSealed(bytes, magic, version, hashed);
   const std::string* why = nullptr;
   switch (sealed.fault) {
     case SealedFile::Fault::NotOurs:

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,8 +17,13 @@
 
 namespace eco {
 
-// FNV-1a of each 1 MiB block (in parallel), then FNV-1a over the blocks' hashes.
-std::uint64_t blockChecksum(std::string_view bytes);
+// Told of each part of a file's bytes once it has been gone through, in order: a reader of
+// a file mapped in parts releases it (MappedFile::release).
+using PartDone = std::function<void(std::string_view)>;
+
+// FNV-1a of each 1 MiB block (in parallel), then FNV-1a over the blocks' hashes; the bytes
+// hashed 64 MiB at a time, each part handed to `hashed` when it is.
+std::uint64_t blockChecksum(std::string_view bytes, const PartDone& hashed = {});
 
 // A file's first bytes: its magic and format version, for the writer to add more to.
 BinaryWriter sealedHeader(std::string_view magic, std::uint32_t version);
@@ -47,7 +53,7 @@ class ChecksummedOutput {
 
 // Splits a file's bytes into the body and the checksum stored after it; nothing when the
 // file is too short to hold one or the stored checksum is not the body's.
-std::optional<std::string_view> checkedBody(std::string_view bytes);
+std::optional<std::string_view> checkedBody(std::string_view bytes, const PartDone& hashed = {});
 
 // A file's bytes after its magic and version, checked in that order.
 struct SealedFile {
@@ -55,7 +61,8 @@ struct SealedFile {
   Fault fault = Fault::None;
   std::string_view afterHeader;  // the body past the magic and version, without the checksum
 };
-SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint32_t version);
+SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint32_t version,
+                      const PartDone& hashed = {});
 
 // What a reader says, in its own words, when its file fails each of openSealed's checks.
 struct SealedFileFaults {
@@ -65,6 +72,6 @@ struct SealedFileFaults {
 // check that failed.
 std::string_view requireSealed(std::string_view bytes, std::string_view magic,
                                std::uint32_t version, const std::filesystem::path& file,
-                               const SealedFileFaults& say);
+                               const SealedFileFaults& say, const PartDone& hashed = {});
 
 }  // namespace eco

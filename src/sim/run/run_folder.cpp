@@ -42,9 +42,9 @@ void requireSnapshotYear(const RunFolder& run, int year) {
   }
 }
 
-TreeSnapshot readSnapshot(const RunFolder& run, int year) {
+TreeSnapshot readSnapshot(const RunFolder& run, int year, const TreeFilter& keep) {
   requireSnapshotYear(run, year);
-  TreeSnapshot snapshot = readTrees(RunPaths{run.dir}.existingSnapshot(year));
+  TreeSnapshot snapshot = readTrees(RunPaths{run.dir}.existingSnapshot(year), keep);
   snapshot.year = year;
   return snapshot;
 }

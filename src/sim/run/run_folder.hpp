@@ -28,6 +28,7 @@ RunFolder openRunFolder(const std::filesystem::path& dir);
 
 // An InputError listing the years there are unless the run has a snapshot of `year`.
 void requireSnapshotYear(const RunFolder& run, int year);
-// The snapshot of `year`; an InputError lists the years there are when it is not one.
-TreeSnapshot readSnapshot(const RunFolder& run, int year);
+// The snapshot of `year` (only the rows `keep` keeps); an InputError lists the years there
+// are when it is not one.
+TreeSnapshot readSnapshot(const RunFolder& run, int year, const TreeFilter& keep = {});
 }  // namespace eco

@@ -126,7 +126,10 @@ std::vector<StandTable> standTablesOfRun(const RunFolder& run, const std::vector
   const double area_ha = loadTerrain(run.scenario).grid.area_m2() / 1e4;
   std::vector<StandTable> tables;
   for (int year : years) {
-    const TreeSnapshot snapshot = readSnapshot(run, year);
+    // Only the trees a table counts are held: a landscape's snapshot has ten times as many
+    // plants, most of them saplings.
+    const TreeSnapshot snapshot =
+        readSnapshot(run, year, [](const TreeRow& tree) { return tree.dbh_m >= kMeasuredDbh_m; });
     const std::filesystem::path file = RunPaths{run.dir}.existingSnapshot(year);
     tables.push_back(
         standTable(snapshot, formFactorsOf(snapshot, species, file), area_ha, classWidth_cm));

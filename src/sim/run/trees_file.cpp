@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <span>
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 #include <glm/geometric.hpp>
 
@@ -34,8 +37,9 @@ constexpr std::uint32_t kBinaryVersion = 1;
 // snapshot written out as CSV has the bytes of the CSV snapshot.
 constexpr std::size_t kRecordBytes = 8 + 2 + 3 * 4 + 4 + 5 * 4 + 4 + 4 * 4;
 
-MappedFile mapped(const std::filesystem::path& file) {
-  std::optional<MappedFile> mapping = MappedFile::open(file);
+MappedFile mapped(const std::filesystem::path& file,
+                  MappedFile::Reading reading = MappedFile::Reading::Whole) {
+  std::optional<MappedFile> mapping = MappedFile::open(file, reading);
   if (!mapping) throw InputError({file.string(), 0, ""}, "cannot read the file");
   return std::move(*mapping);
 }
@@ -258,25 +262,40 @@ std::string_view parseTreeRow(std::string_view row, std::size_t columns,
   return fields[1];
 }
 
+// The lines of `text`, the last one with or without its newline; a megabyte to a task.
+std::size_t lineCountOf(std::string_view text) {
+  const std::size_t newlines = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, text.size(), std::size_t{1} << 20), std::size_t{0},
+      [&](const tbb::blocked_range<std::size_t>& range, std::size_t count) {
+        return count + static_cast<std::size_t>(std::count(
+                           text.begin() + static_cast<std::ptrdiff_t>(range.begin()),
+                           text.begin() + static_cast<std::ptrdiff_t>(range.end()), '\n'));
+      },
+      std::plus<>());
+  return newlines + (text.empty() || text.back() == '\n' ? 0 : 1);
+}
+
 // A stretch of a trees file's rows, whole lines, read on its own: its trees go to their
 // lines' places, their species numbered in the stretch's order of first appearance.
 struct TreeChunk {
   std::string_view text;
   int firstLine = 0;
-  std::size_t firstSlot = 0;  // the place of its first line among the file's rows
+  std::size_t firstSlot = 0;  // the place of its first line among its batch's rows
   std::size_t lines = 0;
   std::vector<std::string> speciesNames;
   std::exception_ptr fault;  // its first bad row: the file's first in the earliest chunk
 };
 
+// The chunk's rows into `trees` from its first line's place on, each flagged in `filled`
+// (empty lines are not).
 void readTreeChunk(TreeChunk& chunk, std::size_t columns, const std::filesystem::path& file,
-                   std::vector<TreeRow>& trees, std::vector<char>& filled) {
+                   TreeRow* trees, char* filled) {
   try {
     forEachLine(chunk.text, [&](int number, std::string_view row) {
       if (row.empty()) return;
       const int line = chunk.firstLine + number - 1;
-      const std::size_t slot = chunk.firstSlot + static_cast<std::size_t>(number - 1);
-      TreeRow& tree = trees[slot];
+      const auto place = static_cast<std::size_t>(number - 1);
+      TreeRow& tree = trees[place];
       const std::string_view species = parseTreeRow(row, columns, file, line, tree);
       auto known = std::find(chunk.speciesNames.begin(), chunk.speciesNames.end(), species);
       if (known == chunk.speciesNames.end()) {
@@ -288,7 +307,7 @@ void readTreeChunk(TreeChunk& chunk, std::size_t columns, const std::filesystem:
       if (const std::string fault = treeRowFault(tree); !fault.empty())
         throw InputError({file.string(), line, ""}, fault);
       tree.species = static_cast<int>(known - chunk.speciesNames.begin());
-      filled[slot] = 1;
+      filled[place] = 1;
     });
   } catch (...) {
     chunk.fault = std::current_exception();
@@ -336,8 +355,11 @@ void writeTrees(const std::filesystem::path& file, const TreeSnapshot& snapshot,
   out.commit();
 }
 
-TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
-  const MappedFile mapping = mapped(file);
+TreeSnapshot readTreesCsv(const std::filesystem::path& file, const TreeFilter& keep) {
+  // Filtered, the file is read a batch at a time and its rows are not all kept: neither
+  // its bytes nor its rows are ever held whole.
+  const MappedFile mapping =
+      mapped(file, keep ? MappedFile::Reading::InParts : MappedFile::Reading::Whole);
   const std::string_view text = mapping.bytes();
   if (text.empty()) throw InputError({file.string(), 0, ""}, "the file is empty");
   const std::size_t headerEnd = std::min(text.find('\n'), text.size());
@@ -350,67 +372,85 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file) {
                      fmt::format("not a trees file: the header must be '{}'", kTreesCsvHeader));
 
   // The rows, read in stretches of whole lines side by side (a landscape's snapshot holds
-  // tens of millions), each tree put at its line's place: the trees, their species' order
-  // and the first fault reported are those of reading the lines in order.
+  // tens of millions), a batch of stretches at a time, each tree put at its line's place
+  // at the end of the snapshot's rows and the ones not kept dropped: the trees, their
+  // species' order and the first fault reported are those of reading the lines in order.
+  // Unfiltered, the lines are counted first, for room for all of the rows.
   const std::string_view body = std::string_view(text).substr(std::min(text.size(), headerEnd + 1));
-  constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
-  std::vector<TreeChunk> chunks;
-  for (std::size_t start = 0; start < body.size();) {
-    std::size_t end = std::min(body.size(), start + kChunkBytes);
-    end = std::min(body.size(), body.find('\n', end - 1) + 1);  // npos + 1 is 0
-    if (end <= start) end = body.size();
-    chunks.emplace_back().text = body.substr(start, end - start);
-    start = end;
-  }
-  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
-    const std::string_view t = chunks[c].text;
-    chunks[c].lines = static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n')) +
-                      (t.empty() || t.back() == '\n' ? 0 : 1);
-  });
-  std::size_t slots = 0;
-  for (TreeChunk& chunk : chunks) {
-    chunk.firstSlot = slots;
-    chunk.firstLine = static_cast<int>(2 + slots);
-    slots += chunk.lines;
-  }
-  std::vector<TreeRow> trees(slots);
-  std::vector<char> filled(slots, 0);  // false for the empty lines between rows
-  tbb::parallel_for(std::size_t{0}, chunks.size(),
-                    [&](std::size_t c) { readTreeChunk(chunks[c], columns, file, trees, filled); });
-  for (const TreeChunk& chunk : chunks)
-    if (chunk.fault) std::rethrow_exception(chunk.fault);
-
-  // The species in the file's order of first appearance, and the rows without the gaps.
   TreeSnapshot snapshot;
-  std::vector<std::vector<int>> speciesOf(chunks.size());
-  for (std::size_t c = 0; c < chunks.size(); ++c)
-    for (const std::string& name : chunks[c].speciesNames) {
-      auto found = std::find(snapshot.speciesNames.begin(), snapshot.speciesNames.end(), name);
-      if (found == snapshot.speciesNames.end()) found = snapshot.speciesNames.insert(found, name);
-      speciesOf[c].push_back(static_cast<int>(found - snapshot.speciesNames.begin()));
+  if (!keep) snapshot.trees.reserve(lineCountOf(body));
+  constexpr std::size_t kChunkBytes = std::size_t{1} << 20, kChunksPerBatch = 64;
+  std::vector<TreeChunk> chunks;
+  std::vector<char> filled;
+  std::size_t slots = 0;  // the lines of the batches before
+  for (std::size_t next = 0; next < body.size();) {
+    const std::size_t batchStart = next;
+    chunks.clear();
+    while (next < body.size() && chunks.size() < kChunksPerBatch) {
+      std::size_t end = std::min(body.size(), next + kChunkBytes);
+      end = std::min(body.size(), body.find('\n', end - 1) + 1);  // npos + 1 is 0
+      if (end <= next) end = body.size();
+      chunks.emplace_back().text = body.substr(next, end - next);
+      next = end;
     }
-  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
-    for (std::size_t slot = chunks[c].firstSlot; slot < chunks[c].firstSlot + chunks[c].lines;
-         ++slot)
-      if (filled[slot]) trees[slot].species = speciesOf[c][trees[slot].species];
-  });
-  std::size_t kept = 0;
-  for (std::size_t slot = 0; slot < slots; ++slot)
-    if (filled[slot]) trees[kept++] = trees[slot];
-  trees.resize(kept);
-  snapshot.trees = std::move(trees);
+    tbb::parallel_for(std::size_t{0}, chunks.size(),
+                      [&](std::size_t c) { chunks[c].lines = lineCountOf(chunks[c].text); });
+    std::size_t batchLines = 0;
+    for (TreeChunk& chunk : chunks) {
+      chunk.firstSlot = batchLines;
+      chunk.firstLine = static_cast<int>(2 + slots + batchLines);
+      batchLines += chunk.lines;
+    }
+    slots += batchLines;
+
+    const std::size_t start = snapshot.trees.size();
+    snapshot.trees.resize(start + batchLines);
+    filled.assign(batchLines, 0);
+    tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+      readTreeChunk(chunks[c], columns, file, snapshot.trees.data() + start + chunks[c].firstSlot,
+                    filled.data() + chunks[c].firstSlot);
+    });
+    for (const TreeChunk& chunk : chunks)
+      if (chunk.fault) std::rethrow_exception(chunk.fault);
+
+    // The species in the file's order of first appearance, and the rows kept without gaps.
+    std::size_t kept = start;
+    for (const TreeChunk& chunk : chunks) {
+      std::vector<int> speciesOf;
+      for (const std::string& name : chunk.speciesNames) {
+        auto found = std::find(snapshot.speciesNames.begin(), snapshot.speciesNames.end(), name);
+        if (found == snapshot.speciesNames.end()) found = snapshot.speciesNames.insert(found, name);
+        speciesOf.push_back(static_cast<int>(found - snapshot.speciesNames.begin()));
+      }
+      for (std::size_t i = chunk.firstSlot; i < chunk.firstSlot + chunk.lines; ++i)
+        if (filled[i]) {
+          TreeRow& tree = snapshot.trees[kept] = snapshot.trees[start + i];
+          tree.species = speciesOf[static_cast<std::size_t>(tree.species)];
+          if (!keep || keep(tree)) ++kept;
+        }
+    }
+    snapshot.trees.resize(kept);
+    if (keep) mapping.release(body.substr(batchStart, next - batchStart));
+  }
+  if (keep) snapshot.trees.shrink_to_fit();  // unfiltered, it holds what it reserved
   return snapshot;
 }
 
-TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
+TreeSnapshot readTreesBinary(const std::filesystem::path& file, const TreeFilter& keep) {
   auto refuse = [&](const std::string& why) { return InputError({file.string(), 0, ""}, why); };
-  const MappedFile mapping = mapped(file);
+  // Filtered, the file is gone through in parts twice (its checksum, then its rows), each
+  // part released when it is done, and its rows are not all kept.
+  const MappedFile mapping =
+      mapped(file, keep ? MappedFile::Reading::InParts : MappedFile::Reading::Whole);
+  PartDone release;
+  if (keep) release = [&](std::string_view part) { mapping.release(part); };
   const std::string_view body = requireSealed(
       mapping.bytes(), kBinaryMagic, kBinaryVersion, file,
       {.notOurs = "not a binary trees file of ecoforest",
        .otherVersion =
            "a binary trees file of another version of ecoforest: run the scenario again",
-       .corrupt = "the file is corrupt (checksum mismatch)"});
+       .corrupt = "the file is corrupt (checksum mismatch)"},
+      release);
 
   BinaryReader r(body);
   TreeSnapshot snapshot;
@@ -426,7 +466,6 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
   if (r.failed() || r.remaining() / kRecordBytes != count || r.remaining() % kRecordBytes != 0)
     throw refuse("the file is corrupt (its length is not that of its rows)");
 
-  snapshot.trees.resize(count);
   auto fault = [&](const TreeRow& tree) -> std::string {
     if (!std::isfinite(tree.east_m) || !std::isfinite(tree.north_m) ||
         !std::isfinite(tree.ground_m))
@@ -435,20 +474,36 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file) {
       return fmt::format("species {} of {}", tree.species + 1, snapshot.speciesNames.size());
     return treeRowFault(tree);
   };
-  // Each row is decoded as it is checked, side by side.
-  const std::size_t i = firstFaulty(count, [&](std::size_t row) {
-    snapshot.trees[row] = recordAt(body.substr(recordsAt + row * kRecordBytes, kRecordBytes));
-    return !fault(snapshot.trees[row]).empty();
-  });
-  if (i < count)
-    throw refuse(
-        fmt::format("row {} (tree {}): {}", i + 1, snapshot.trees[i].id, fault(snapshot.trees[i])));
+  // A batch of rows at a time, decoded at the end of the snapshot's as they are checked,
+  // side by side, and the ones not kept dropped.
+  if (!keep) snapshot.trees.reserve(count);
+  constexpr std::uint64_t kRowsPerBatch = std::uint64_t{1} << 20;
+  for (std::uint64_t first = 0; first < count; first += kRowsPerBatch) {
+    const auto rows = static_cast<std::size_t>(std::min(kRowsPerBatch, count - first));
+    const std::size_t start = snapshot.trees.size();
+    snapshot.trees.resize(start + rows);
+    TreeRow* trees = snapshot.trees.data() + start;
+    const std::size_t i = firstFaulty(rows, [&](std::size_t row) {
+      trees[row] = recordAt(body.substr(recordsAt + (first + row) * kRecordBytes, kRecordBytes));
+      return !fault(trees[row]).empty();
+    });
+    if (i < rows)
+      throw refuse(
+          fmt::format("row {} (tree {}): {}", first + i + 1, trees[i].id, fault(trees[i])));
+    if (release) release(body.substr(recordsAt + first * kRecordBytes, rows * kRecordBytes));
+    if (keep)
+      snapshot.trees.erase(
+          std::remove_if(snapshot.trees.begin() + static_cast<std::ptrdiff_t>(start),
+                         snapshot.trees.end(), [&](const TreeRow& tree) { return !keep(tree); }),
+          snapshot.trees.end());
+  }
+  if (keep) snapshot.trees.shrink_to_fit();
   return snapshot;
 }
 
-TreeSnapshot readTrees(const std::filesystem::path& file) {
-  return snapshotFormatOf(file) == SnapshotFormat::Binary ? readTreesBinary(file)
-                                                          : readTreesCsv(file);
+TreeSnapshot readTrees(const std::filesystem::path& file, const TreeFilter& keep) {
+  return snapshotFormatOf(file) == SnapshotFormat::Binary ? readTreesBinary(file, keep)
+                                                          : readTreesCsv(file, keep);
 }
 
 }  // namespace eco

@@ -62,11 +62,19 @@ void writeTrees(AtomicFile& out, const Ecosystem& ecosystem, const Plants& plant
 void writeTrees(const std::filesystem::path& file, const TreeSnapshot& snapshot,
                 SnapshotFormat format);
 
+// The rows a reader keeps, asked of each row in the file's order (its species numbered as
+// in the snapshot); none keeps every row. A stand table needs a landscape's trees of 10
+// cm and more, a tenth of its plants: the others are checked but not held beyond their
+// batch of rows, nor the file's bytes beyond their batch, so the memory is that of the
+// rows kept.
+using TreeFilter = std::function<bool(const TreeRow&)>;
+
 // Each reader checks the file as untrusted input: an InputError names the file and the
-// line (CSV) or row (binary) at fault.
-TreeSnapshot readTreesCsv(const std::filesystem::path& file);
-TreeSnapshot readTreesBinary(const std::filesystem::path& file);
+// line (CSV) or row (binary) at fault. The species names are those of every row, kept or
+// not, in the file's order.
+TreeSnapshot readTreesCsv(const std::filesystem::path& file, const TreeFilter& keep = {});
+TreeSnapshot readTreesBinary(const std::filesystem::path& file, const TreeFilter& keep = {});
 // By the file's extension.
-TreeSnapshot readTrees(const std::filesystem::path& file);
+TreeSnapshot readTrees(const std::filesystem::path& file, const TreeFilter& keep = {});
 
 }  // namespace eco

@@ -121,7 +121,8 @@ ValidationReport validateRun(const RunFolder& run) {
 
   // The planted cohort in a snapshot: the species' trees as old as the run.
   auto cohortOf = [&](int year) {
-    const TreeSnapshot snapshot = readSnapshot(run, year);
+    const TreeSnapshot snapshot =
+        readSnapshot(run, year, [&](const TreeRow& tree) { return tree.age_years == year; });
     const auto named =
         std::find(snapshot.speciesNames.begin(), snapshot.speciesNames.end(), v.species);
     StandTally tally;

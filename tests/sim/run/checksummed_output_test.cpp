@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +48,24 @@ TEST(ChecksummedOutput, PiecesOfAnySizeGiveTheChecksumOfTheWhole) {
   EXPECT_EQ(checksum, blockChecksum(whole));
   EXPECT_EQ(test::readFile(file),
             whole + std::string(reinterpret_cast<const char*>(&checksum), sizeof checksum));
+}
+
+// The bytes are hashed in parts of 64 MiB, each handed on once hashed, in order: the
+// checksum of the blocks is the same, in parts or not.
+TEST(ChecksummedOutput, TheHashedPartsAreHandedOnInOrder) {
+  const std::string whole = patternOf((std::size_t{130} << 20) + 777);
+  std::vector<std::string_view> parts;
+  const std::uint64_t inParts =
+      blockChecksum(whole, [&](std::string_view part) { parts.push_back(part); });
+  EXPECT_EQ(inParts, blockChecksum(whole));
+  ASSERT_EQ(parts.size(), 3u);
+  std::size_t at = 0;
+  for (const std::string_view part : parts) {
+    EXPECT_EQ(part.data(), whole.data() + at);
+    at += part.size();
+  }
+  EXPECT_EQ(at, whole.size());
+  EXPECT_EQ(parts[0].size(), std::size_t{64} << 20);
 }
 
 TEST(ChecksummedOutput, ABodyIsCheckedAgainstTheChecksumAfterIt) {

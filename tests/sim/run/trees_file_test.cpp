@@ -125,6 +125,13 @@ TEST(TreesFile, ALongTreesFileReadsAsItsLinesInOrder) {
     ASSERT_EQ(s.speciesNames[static_cast<std::size_t>(tree.species)], speciesOf(id));
     ASSERT_EQ(tree.variantSeed, static_cast<std::uint32_t>(id % 1000));
   }
+  // Only the maples kept: the species are still the file's, in its order.
+  const TreeSnapshot maples = readTreesCsv(
+      file, [&](const TreeRow& tree) { return s.speciesNames[tree.species] == "maple"; });
+  EXPECT_EQ(maples.speciesNames, s.speciesNames);
+  ASSERT_EQ(maples.trees.size(), static_cast<std::size_t>(kRows - 45000 + 1));
+  EXPECT_EQ(maples.trees.front().id, 45000u);
+  for (const TreeRow& tree : maples.trees) ASSERT_EQ(maples.speciesNames[tree.species], "maple");
   // Two bad rows, one near the end and one in the middle: the middle one is reported.
   auto bad = [&](int id) {
     const std::string good = rowOf(id, speciesOf(id));
@@ -134,12 +141,14 @@ TEST(TreesFile, ALongTreesFileReadsAsItsLinesInOrder) {
   bad(55000);
   bad(30000);
   test::writeFile(file, text);
-  try {
-    readTreesCsv(file);
-    FAIL() << "a bad row was read";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().line, lineOf[30000]);
-  }
+  // Also when the rows are filtered: a row not kept is checked all the same.
+  for (const TreeFilter& keep : {TreeFilter{}, TreeFilter{[](const TreeRow&) { return false; }}})
+    try {
+      readTreesCsv(file, keep);
+      ADD_FAILURE() << "a bad row was read";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().line, lineOf[30000]);
+    }
 }
 
 // Both formats read back what was written: CSV to its decimals, binary exactly.
@@ -206,8 +215,9 @@ TEST(TreesFile, TheSiteColumnsReadBackAndAreChecked) {
   }
 }
 
-TEST_F(OneHectare, ALargeSnapshotIsWrittenInBatchesInOrder) {
-  // More rows than one batch of encoded chunks (64 x 16,384), so batches meet.
+TEST_F(OneHectare, ALargeSnapshotIsWrittenAndReadInBatchesInOrder) {
+  // More rows than one batch of encoded chunks (64 x 16,384) and than one batch the binary
+  // reader decodes (2^20), and more than the CSV reader's batch of 64 MiB, so batches meet.
   const std::size_t n = 64 * 16384 + 1000;
   Plants p;
   p.resize(n);
@@ -215,15 +225,45 @@ TEST_F(OneHectare, ALargeSnapshotIsWrittenInBatchesInOrder) {
     p.id[i] = i + 1;
     p.age_years[i] = static_cast<std::int32_t>(i % 97);
   }
+  auto keep = [](const TreeRow& tree) { return tree.age_years % 7 == 3 || tree.id > n - 5; };
   const auto folder = test::freshDirectory("trees_file_batches");
   for (const SnapshotFormat format : {SnapshotFormat::Csv, SnapshotFormat::Binary}) {
     const auto file = folder / ("year_0001" + std::string(extensionOf(format)));
     writeTrees(file, ecosystem, p, format);
+    if (format == SnapshotFormat::Csv) {
+      ASSERT_GT(std::filesystem::file_size(file), 64u << 20);
+    }
     const TreeSnapshot snapshot = readTrees(file);
     ASSERT_EQ(snapshot.trees.size(), n);
     for (std::size_t i = 0; i < n; ++i) {
       ASSERT_EQ(snapshot.trees[i].id, i + 1);
       ASSERT_EQ(snapshot.trees[i].age_years, static_cast<int>(i % 97));
+    }
+    // Filtered: the rows kept, in order, and only those held.
+    const TreeSnapshot kept = readTrees(file, keep);
+    std::vector<std::uint64_t> expected;
+    for (const TreeRow& tree : snapshot.trees)
+      if (keep(tree)) expected.push_back(tree.id);
+    std::vector<std::uint64_t> ids;
+    for (const TreeRow& tree : kept.trees) ids.push_back(tree.id);
+    EXPECT_EQ(ids, expected);
+    EXPECT_EQ(kept.speciesNames, snapshot.speciesNames);
+    EXPECT_EQ(kept.trees.capacity(), kept.trees.size());
+  }
+  // A bad row in the CSV reader's second batch is reported at its line, kept or not.
+  const auto file = folder / "year_0001.csv";
+  std::string text = test::readFile(file);
+  const std::size_t row = n - 10;  // line row + 2
+  std::size_t at = 0;
+  for (std::size_t line = 0; line < row + 1; ++line) at = text.find('\n', at) + 1;
+  text.insert(text.find(',', text.find(',', at) + 1) + 1, "x");  // x_m is not a number
+  test::writeFile(file, text);
+  for (const TreeFilter& filter : {TreeFilter{}, TreeFilter{keep}}) {
+    try {
+      readTrees(file, filter);
+      ADD_FAILURE() << "a bad row was read";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().line, static_cast<int>(row + 2));
     }
   }
 }

@@ -9,6 +9,8 @@
 #include "app/scene_source.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/toml_reader.hpp"
+#include "sim/plan/plan_spec.hpp"
 #include "sim/run/stand_table.hpp"
 
 namespace eco {
@@ -18,18 +20,37 @@ struct StandArgs {
   std::string run;
   std::optional<int> year;
   double classWidth_cm = 5.0;
+  std::string region;  // TOML keys of a plan's region
   std::string out;
 };
+
+// `--region 'polygon = [[0, 0], [400, 0], [400, 300]]'`: the keys a plan's rule gives its
+// region with (docs/planning.md, "Regions"), a mask relative to the working folder.
+RegionSpec regionArgument(const std::string& text) {
+  const std::string name = "--region";
+  const TomlDocument document = TomlDocument::parse(text, name);
+  TomlTable table = document.root();
+  const RegionSpec region =
+      parseRegion(table, std::filesystem::current_path(), false, SourceLocation(name));
+  table.finish();
+  if (region.kind == RegionSpec::Kind::WholeMap)
+    throw InputError(SourceLocation(name),
+                     "give the region as a plan does: polygon = [[x, y], ...], line = [[x, y], "
+                     "...] with buffer_m, or mask = \"FILE.png\" (docs/planning.md)");
+  return region;
+}
 
 void runStand(const StandArgs& args) {
   const std::optional<std::filesystem::path> out =
       args.out.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.out);
   if (out) requireOutputFolder(*out);
+  std::optional<RegionSpec> region;
+  if (!args.region.empty()) region = regionArgument(args.region);
   const RunFolder run = openRunArgument(args.run);
   if (run.snapshotYears.empty())
     throw InputError({run.dir, 0, "trees"}, "the run has no tree snapshot yet");
-  const StandTable table =
-      standTablesOfRun(run, {args.year.value_or(run.snapshotYears.back())}, args.classWidth_cm)[0];
+  const StandTable table = standTablesOfRun(run, {args.year.value_or(run.snapshotYears.back())},
+                                            args.classWidth_cm, region)[0];
   std::cout << standTableText(table);
   if (!out) return;
   AtomicFile file(*out);
@@ -51,6 +72,10 @@ void addStandCommand(CLI::App& app) {
   command->add_option("--class-width", args->classWidth_cm, "Width of a diameter class, cm")
       ->check(CLI::Range(0.5, 100.0))
       ->capture_default_str();
+  command->add_option("--region", args->region,
+                      "Only the trees within a region and per hectare of it, given as a plan's "
+                      "rule gives it: 'polygon = [[x, y], ...]' in map metres, or a line or "
+                      "mask, with buffer_m (docs/planning.md)");
   command->add_option("--out", args->out,
                       "Also write the table as CSV (a line per species and class)");
   command->callback([args] { runStand(*args); });

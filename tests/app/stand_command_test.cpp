@@ -90,6 +90,23 @@ TEST(StandCommand, RefusesBadInputWithExitTwo) {
   EXPECT_FALSE(std::filesystem::exists(missing.parent_path()));
 }
 
+// A region given as a plan gives it: its trees, per hectare of its cells.
+TEST(StandCommand, TalliesTheTreesWithinARegion) {
+  const std::string run = plotRun().string();
+  CommandResult r = ecoforest(fmt::format(
+      "stand {} --region 'polygon = [[-10, -10], [17.5, -10], [17.5, 50], [-10, 50]]'", run));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("year 40, 0.09 ha within the region"), std::string::npos) << r.output;
+  for (const char* bad : {"'polygon = [[0, 0], [10, 0]]'",
+                          "'polygon = [[100, 100], [200, 100], "
+                          "[200, 200]]'",
+                          "'colour = 3'", "'buffer_m = 3'", "'polygon = [[0, 0]'"}) {
+    CommandResult refused = ecoforest(fmt::format("stand {} --region {}", run, bad));
+    EXPECT_EQ(refused.exitCode, 2) << bad << refused.output;
+    EXPECT_NE(refused.output.find("--region:"), std::string::npos) << refused.output;
+  }
+}
+
 TEST(StandCommand, RefusesASnapshotOfSpeciesTheScenarioDoesNotHave) {
   // The run's folder with its last snapshot as CSV, in which the pines became oaks.
   const auto copy = eco::test::freshDirectory("app_stand_oaks") / "run";

@@ -23,47 +23,6 @@ std::vector<glm::dvec2> cornersOf(const std::vector<TomlPoint>& points) {
   return corners;
 }
 
-RegionSpec parseRegion(TomlTable& table, const std::filesystem::path& folder, bool borderAllowed,
-                       const SourceLocation& rule) {
-  RegionSpec region;
-  region.where = rule;
-  int shapes = 0;
-  if (table.has("polygon")) {
-    region.kind = RegionSpec::Kind::Polygon;
-    region.where = table.where("polygon");
-    region.points = cornersOf(table.points("polygon", 3));
-    ++shapes;
-  }
-  if (table.has("line")) {
-    region.kind = RegionSpec::Kind::Line;
-    region.where = table.where("line");
-    region.points = cornersOf(table.points("line", 2));
-    ++shapes;
-  }
-  if (table.has("mask")) {
-    region.kind = RegionSpec::Kind::Mask;
-    region.where = table.where("mask");
-    region.mask = folder / table.string("mask");
-    ++shapes;
-  }
-  if (borderAllowed && table.has("border_m")) {
-    region.kind = RegionSpec::Kind::Border;
-    region.where = table.where("border_m");
-    region.border_m = table.number("border_m", {}, {1.0, 1e5});
-    ++shapes;
-  }
-  if (shapes > 1)
-    table.fail(table.has("mask") ? "mask" : "line",
-               borderAllowed ? "give one of polygon, line, mask and border_m, not several"
-                             : "give one of polygon, line and mask, not several");
-  region.buffer_m = table.number("buffer_m", 0.0, {0.0, 1e5});
-  if (region.kind == RegionSpec::Kind::Line && region.buffer_m <= 0.0)
-    table.fail("line", "a line needs buffer_m > 0, the half width of the strip along it");
-  if (region.kind == RegionSpec::Kind::WholeMap && table.has("buffer_m"))
-    table.fail("buffer_m", "a buffer widens a polygon, line or mask; none is given");
-  return region;
-}
-
 // `key = "beech"` (share 1) or `key = { beech = 0.7, maple = 0.3 }` (shares summing to 1).
 std::vector<SpeciesShare> parseMix(TomlTable& table, std::string_view key) {
   if (table.isString(key)) return {{table.string(key), 1.0, table.where(key)}};
@@ -197,6 +156,47 @@ Thinning parseThinning(TomlTable& table, const std::filesystem::path& folder) {
 }
 
 }  // namespace
+
+RegionSpec parseRegion(TomlTable& table, const std::filesystem::path& folder, bool borderAllowed,
+                       const SourceLocation& rule) {
+  RegionSpec region;
+  region.where = rule;
+  int shapes = 0;
+  if (table.has("polygon")) {
+    region.kind = RegionSpec::Kind::Polygon;
+    region.where = table.where("polygon");
+    region.points = cornersOf(table.points("polygon", 3));
+    ++shapes;
+  }
+  if (table.has("line")) {
+    region.kind = RegionSpec::Kind::Line;
+    region.where = table.where("line");
+    region.points = cornersOf(table.points("line", 2));
+    ++shapes;
+  }
+  if (table.has("mask")) {
+    region.kind = RegionSpec::Kind::Mask;
+    region.where = table.where("mask");
+    region.mask = folder / table.string("mask");
+    ++shapes;
+  }
+  if (borderAllowed && table.has("border_m")) {
+    region.kind = RegionSpec::Kind::Border;
+    region.where = table.where("border_m");
+    region.border_m = table.number("border_m", {}, {1.0, 1e5});
+    ++shapes;
+  }
+  if (shapes > 1)
+    table.fail(table.has("mask") ? "mask" : "line",
+               borderAllowed ? "give one of polygon, line, mask and border_m, not several"
+                             : "give one of polygon, line and mask, not several");
+  region.buffer_m = table.number("buffer_m", 0.0, {0.0, 1e5});
+  if (region.kind == RegionSpec::Kind::Line && region.buffer_m <= 0.0)
+    table.fail("line", "a line needs buffer_m > 0, the half width of the strip along it");
+  if (region.kind == RegionSpec::Kind::WholeMap && table.has("buffer_m"))
+    table.fail("buffer_m", "a buffer widens a polygon, line or mask; none is given");
+  return region;
+}
 
 std::vector<std::string> Planting::speciesNames() const {
   std::vector<std::string> names;

@@ -115,6 +115,12 @@ struct Plan {
   }
 };
 
+// A rule's region from its table's keys (polygon, line, mask, border_m where allowed,
+// buffer_m; a mask relative to `folder`), at the rule's location when it gives no shape (the
+// whole map). Also a region a command is given (`stand --region`).
+RegionSpec parseRegion(TomlTable& table, const std::filesystem::path& folder, bool borderAllowed,
+                       const SourceLocation& rule);
+
 // Reads the scenario's [[planting]], [[seed_source]], [[exclusion]] and [[thinning]] tables
 // (paths relative to the scenario's folder); errors name the file, line and key.
 Plan parsePlan(TomlTable& root, const std::filesystem::path& scenarioFolder);

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "sim/ecology/ecosystem.hpp"
 #include "sim/ecology/stand_measures.hpp"
+#include "sim/plan/region.hpp"
 #include "sim/run/run_format.hpp"
 #include "sim/terrain.hpp"
 
@@ -118,21 +119,32 @@ StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& f
 }
 
 std::vector<StandTable> standTablesOfRun(const RunFolder& run, const std::vector<int>& years,
-                                         double classWidth_cm) {
+                                         double classWidth_cm,
+                                         const std::optional<RegionSpec>& within) {
   for (int year : years) requireSnapshotYear(run, year);  // before the map and species
   std::vector<EcosystemSpecies> species;
   for (const ScenarioSpecies& entry : run.scenario.species)
     species.push_back(readEcosystemSpecies(entry.file, entry.where));
-  const double area_ha = loadTerrain(run.scenario).grid.area_m2() / 1e4;
+  const Terrain terrain = loadTerrain(run.scenario);
+  std::optional<Region> region;
+  if (within) region.emplace(*within, terrain.grid);
+  const double area_ha =
+      (region ? region->areaOnLandscape_m2(terrain) : terrain.grid.area_m2()) / 1e4;
+  if (region && area_ha <= 0.0)
+    throw InputError(within->where, "the region holds no cell centre of the landscape");
+  // Only the trees a table counts are held: a landscape's snapshot has ten times as many
+  // plants, most of them saplings.
+  const TreeFilter counted = [&](const TreeRow& tree) {
+    return tree.dbh_m >= kMeasuredDbh_m &&
+           (!region || region->contains({tree.east_m, tree.north_m}));
+  };
   std::vector<StandTable> tables;
   for (int year : years) {
-    // Only the trees a table counts are held: a landscape's snapshot has ten times as many
-    // plants, most of them saplings.
-    const TreeSnapshot snapshot =
-        readSnapshot(run, year, [](const TreeRow& tree) { return tree.dbh_m >= kMeasuredDbh_m; });
+    const TreeSnapshot snapshot = readSnapshot(run, year, counted);
     const std::filesystem::path file = RunPaths{run.dir}.existingSnapshot(year);
-    tables.push_back(
+    StandTable& table = tables.emplace_back(
         standTable(snapshot, formFactorsOf(snapshot, species, file), area_ha, classWidth_cm));
+    table.ofRegion = region.has_value();
   }
   return tables;
 }
@@ -157,8 +169,9 @@ std::string standTableCsvLines(const StandTable& table, std::string_view prefix)
 std::string standTableText(const StandTable& table) {
   const std::size_t species = table.rows.size() - 1;
   std::string text = fmt::format(
-      "year {}, {:.2f} ha: trees of at least {:g} cm dbh in classes of {:g} cm, per hectare\n",
-      table.year, table.area_ha, kFirstClass_cm, table.classWidth_cm);
+      "year {}, {:.2f} ha{}: trees of at least {:g} cm dbh in classes of {:g} cm, per hectare\n",
+      table.year, table.area_ha, table.ofRegion ? " within the region" : "", kFirstClass_cm,
+      table.classWidth_cm);
   std::vector<std::size_t> widths;
   for (std::size_t r = 0; r < species; ++r)
     widths.push_back(std::max<std::size_t>(8, table.rows[r].size()));

@@ -5,10 +5,12 @@
 // are made up.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "sim/plan/plan_spec.hpp"
 #include "sim/run/run_folder.hpp"
 #include "sim/run/trees_file.hpp"
 
@@ -24,7 +26,8 @@ struct DiameterClass {
 
 struct StandTable {
   int year = 0;
-  double area_ha = 0.0;  // the stems and sums are per hectare of this
+  double area_ha = 0.0;   // the stems and sums are per hectare of this
+  bool ofRegion = false;  // of a region's trees and area, not the whole map's
   double classWidth_cm = 0.0;
   // The snapshot's species, then "all" (the stand).
   std::vector<std::string> rows;
@@ -45,9 +48,12 @@ StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& f
 
 // The stand tables of a run's snapshots of `years`, per hectare of its map, with its
 // species' form factors (the map and the species files read once); InputErrors name the
-// snapshot (a year it lacks, a species its scenario lacks).
+// snapshot (a year it lacks, a species its scenario lacks). Within a region: its trees,
+// per hectare of its landscape cells (as a plan's thinning counts them; an InputError at
+// the region's key when it misses the map).
 std::vector<StandTable> standTablesOfRun(const RunFolder& run, const std::vector<int>& years,
-                                         double classWidth_cm);
+                                         double classWidth_cm,
+                                         const std::optional<RegionSpec>& within = {});
 
 // A CSV line per row and class, the stand's as species "all", under this header.
 inline constexpr const char* kStandTableCsvHeader =

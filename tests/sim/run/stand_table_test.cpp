@@ -161,5 +161,50 @@ TEST(StandTable, OfARunAddsUpToItsStatsCsv) {
   EXPECT_THROW(standTablesOfRun(run, {40, 30}, 5.0), InputError);   // no snapshot of year 30
 }
 
+// Within a region: its trees per hectare of its cells. The map (9 x 9 cells of 5 m, -2.5 ..
+// 42.5 m each way) cut at x = 17.5 m between cell centres: the two parts' trees add up to
+// the map's, and each part's are the snapshot's trees on its side.
+TEST(StandTable, WithinARegionTalliesItsTreesPerHectareOfItsCells) {
+  const auto folder = test::freshDirectory("stand_table_region");
+  test::writeFile(folder / "s.toml", test::plantedPlotScenario(ECOFOREST_DATA_DIR));
+  RunOptions options;
+  options.scenarioFile = folder / "s.toml";
+  options.out = folder / "run";
+  runSimulation(options);
+  const RunFolder run = openRunFolder(folder / "run");
+  auto regionOf = [](double west, double east) {
+    RegionSpec region;
+    region.kind = RegionSpec::Kind::Polygon;
+    region.points = {{west, -10.0}, {east, -10.0}, {east, 50.0}, {west, 50.0}};
+    return region;
+  };
+  const StandTable whole = standTablesOfRun(run, {40}, 5.0).at(0);
+  const StandTable west = standTablesOfRun(run, {40}, 5.0, regionOf(-10.0, 17.5)).at(0);
+  const StandTable east = standTablesOfRun(run, {40}, 5.0, regionOf(17.5, 50.0)).at(0);
+  EXPECT_FALSE(whole.ofRegion);
+  EXPECT_TRUE(west.ofRegion);
+  EXPECT_NEAR(west.area_ha, 4 * 9 * 25.0 / 1e4, 1e-12);  // the cell centres x = 0 .. 15 m
+  EXPECT_NEAR(east.area_ha, 5 * 9 * 25.0 / 1e4, 1e-12);
+  const std::size_t all = whole.rows.size() - 1;
+  double westStems = 0.0;
+  for (const TreeRow& tree : readSnapshot(run, 40).trees)
+    if (tree.dbh_m >= kMeasuredDbh_m && tree.east_m < 17.5) westStems += 1.0;
+  EXPECT_GT(westStems, 10.0);
+  EXPECT_NEAR(west.total(all).stemsPerHa * west.area_ha, westStems, 1e-9);
+  for (auto measure : {&DiameterClass::stemsPerHa, &DiameterClass::basalArea_m2PerHa,
+                       &DiameterClass::volume_m3PerHa})
+    EXPECT_NEAR(west.total(all).*measure * west.area_ha + east.total(all).*measure * east.area_ha,
+                whole.total(all).*measure * whole.area_ha, 1e-9);
+  // A region off the map is refused at its key.
+  RegionSpec off = regionOf(100.0, 200.0);
+  off.where = SourceLocation("--region", 1, "polygon");
+  try {
+    standTablesOfRun(run, {40}, 5.0, off);
+    ADD_FAILURE() << "a region off the map was tallied";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "polygon");
+  }
+}
+
 }  // namespace
 }  // namespace eco

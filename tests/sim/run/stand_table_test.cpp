@@ -128,19 +128,27 @@ TEST(StandTable, WritesALinePerRowAndClassAndATableForReading) {
   EXPECT_NE(text.find("total"), std::string::npos) << text;
 }
 
+// The planted plot (test_scenarios.hpp) grown once for the tests of a run here.
+const std::filesystem::path& plotRun() {
+  static const std::filesystem::path run = [] {
+    const auto folder = test::freshDirectory("stand_table_run");
+    test::writeFile(folder / "s.toml", test::plantedPlotScenario(ECOFOREST_DATA_DIR));
+    RunOptions options;
+    options.scenarioFile = folder / "s.toml";
+    options.out = folder / "run";
+    runSimulation(options);
+    return folder / "run";
+  }();
+  return run;
+}
+
 // A run's own snapshot, per hectare of its map, with its species' form factors: the totals
 // are its stats.csv's (to the digits stats.csv prints; binary snapshots keep the diameters).
 TEST(StandTable, OfARunAddsUpToItsStatsCsv) {
-  const auto folder = test::freshDirectory("stand_table_run");
-  test::writeFile(folder / "s.toml", test::plantedPlotScenario(ECOFOREST_DATA_DIR));
-  RunOptions options;
-  options.scenarioFile = folder / "s.toml";
-  options.out = folder / "run";
-  runSimulation(options);
-  const RunFolder run = openRunFolder(folder / "run");
+  const RunFolder run = openRunFolder(plotRun());
   const StandTable table = standTablesOfRun(run, {40}, 5.0).at(0);
   EXPECT_NEAR(table.area_ha, 45.0 * 45.0 / 1e4, 1e-12);
-  const StatsFile stats = readStatsCsv(folder / "run" / "stats.csv");
+  const StatsFile stats = readStatsCsv(plotRun() / "stats.csv");
   ASSERT_EQ(table.rows.size(), stats.species.size() + 1);
   for (const StatsRow& row : stats.rows) {
     if (row.year != 40) continue;
@@ -165,13 +173,7 @@ TEST(StandTable, OfARunAddsUpToItsStatsCsv) {
 // 42.5 m each way) cut at x = 17.5 m between cell centres: the two parts' trees add up to
 // the map's, and each part's are the snapshot's trees on its side.
 TEST(StandTable, WithinARegionTalliesItsTreesPerHectareOfItsCells) {
-  const auto folder = test::freshDirectory("stand_table_region");
-  test::writeFile(folder / "s.toml", test::plantedPlotScenario(ECOFOREST_DATA_DIR));
-  RunOptions options;
-  options.scenarioFile = folder / "s.toml";
-  options.out = folder / "run";
-  runSimulation(options);
-  const RunFolder run = openRunFolder(folder / "run");
+  const RunFolder run = openRunFolder(plotRun());
   auto regionOf = [](double west, double east) {
     RegionSpec region;
     region.kind = RegionSpec::Kind::Polygon;

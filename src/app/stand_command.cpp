@@ -18,7 +18,8 @@ namespace {
 
 struct StandArgs {
   std::string run;
-  std::optional<int> year;
+  std::vector<int> years;  // none: the last
+  bool allYears = false;
   double classWidth_cm = 5.0;
   std::string region;  // TOML keys of a plan's region
   std::string out;
@@ -49,15 +50,22 @@ void runStand(const StandArgs& args) {
   const RunFolder run = openRunArgument(args.run);
   if (run.snapshotYears.empty())
     throw InputError({run.dir, 0, "trees"}, "the run has no tree snapshot yet");
-  const StandTable table = standTablesOfRun(run, {args.year.value_or(run.snapshotYears.back())},
-                                            args.classWidth_cm, region)[0];
-  std::cout << standTableText(table);
+  std::vector<int> years = args.years;
+  if (args.allYears) years = run.snapshotYears;
+  if (years.empty()) years = {run.snapshotYears.back()};
+  const std::vector<StandTable> tables = standTablesOfRun(run, years, args.classWidth_cm, region);
+  // A development over the years: each year's table, and in the CSV each year's lines.
+  std::size_t lines = 0;
+  for (const StandTable& table : tables) {
+    std::cout << (&table == &tables.front() ? "" : "\n") << standTableText(table);
+    lines += table.rows.size() * table.classCount();
+  }
   if (!out) return;
   AtomicFile file(*out);
-  file.write(standTableCsv(table));
+  file.write(standTableCsv(tables));
   file.commit();
-  std::cout << fmt::format("{}: {} rows of {} classes\n", out->string(), table.rows.size(),
-                           table.classCount());
+  std::cout << fmt::format("{}: {} lines of {} year{}\n", out->string(), lines, tables.size(),
+                           tables.size() == 1 ? "" : "s");
 }
 
 }  // namespace
@@ -68,7 +76,13 @@ void addStandCommand(CLI::App& app) {
       "stand",
       "Print a run's stand table: its trees of 10 cm and more by diameter class and species");
   command->add_option("run", args->run, "Run folder of `ecoforest run`")->required();
-  command->add_option("--year", args->year, "Snapshot year (default: the run's last)");
+  CLI::Option* year =
+      command
+          ->add_option("--year", args->years,
+                       "Snapshot year, or years as 50,100,150 (default: the run's last)")
+          ->delimiter(',');
+  command->add_flag("--all-years", args->allYears, "Every snapshot year of the run")
+      ->excludes(year);
   command->add_option("--class-width", args->classWidth_cm, "Width of a diameter class, cm")
       ->check(CLI::Range(0.5, 100.0))
       ->capture_default_str();

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <set>
 #include <sstream>
 
 #include "app_support.hpp"
@@ -73,6 +74,29 @@ TEST(StandCommand, TakesAnEarlierYearAndAClassWidth) {
   EXPECT_NE(r.output.find("year 20"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("classes of 10 cm"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("10-20"), std::string::npos) << r.output;
+}
+
+// Several years, or every snapshot year: a table each, and the CSV's lines of each year.
+TEST(StandCommand, TalliesSeveralYearsIntoOneCsv) {
+  const auto folder = eco::test::freshDirectory("app_stand_years");
+  for (const char* years : {"--year 20,40", "--all-years"}) {
+    const auto out = folder / "years.csv";
+    CommandResult r =
+        ecoforest(fmt::format("stand {} {} --out {}", plotRun().string(), years, out.string()));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_LT(r.output.find("year 20,"), r.output.find("year 40,")) << r.output;
+    std::istringstream csv(eco::test::readFile(out));
+    std::string line;
+    std::getline(csv, line);  // the header
+    std::set<std::string> seen;
+    while (std::getline(csv, line)) seen.insert(splitCsv(line).at(0));
+    EXPECT_EQ(seen, (std::set<std::string>{"20", "40"})) << years;
+  }
+  CommandResult both = ecoforest(fmt::format("stand {} --year 20 --all-years", plotRun().string()));
+  EXPECT_EQ(both.exitCode, 2) << both.output;
+  CommandResult missing = ecoforest(fmt::format("stand {} --year 20,30", plotRun().string()));
+  EXPECT_EQ(missing.exitCode, 2) << missing.output;
+  EXPECT_NE(missing.output.find("year 30"), std::string::npos) << missing.output;
 }
 
 TEST(StandCommand, RefusesBadInputWithExitTwo) {

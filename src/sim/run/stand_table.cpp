@@ -40,11 +40,12 @@ struct ClassSums {
   }
 };
 
-// The form factor of each of the snapshot's species, from its run's species.
-std::vector<double> formFactorsOf(const TreeSnapshot& snapshot,
-                                  const std::vector<EcosystemSpecies>& species,
-                                  const std::filesystem::path& snapshotFile) {
-  std::vector<double> formFactors;
+// The snapshot's species numbered as the run's scenario numbers them, each of the
+// scenario's species named even where none of its trees is there: tables of several years,
+// and of runs of the same species, have the same rows in the same order.
+void numberSpeciesAsScenario(TreeSnapshot& snapshot, const std::vector<EcosystemSpecies>& species,
+                             const std::filesystem::path& snapshotFile) {
+  std::vector<int> scenarioIndex;
   for (const std::string& name : snapshot.speciesNames) {
     auto it = std::find_if(species.begin(), species.end(),
                            [&](const EcosystemSpecies& s) { return s.species.name == name; });
@@ -52,9 +53,12 @@ std::vector<double> formFactorsOf(const TreeSnapshot& snapshot,
       throw InputError(
           {snapshotFile, 0, "species"},
           fmt::format("species '{}' is not one of the run's scenario's species", name));
-    formFactors.push_back(it->ecology.life.formFactor);
+    scenarioIndex.push_back(static_cast<int>(it - species.begin()));
   }
-  return formFactors;
+  for (TreeRow& tree : snapshot.trees)
+    tree.species = scenarioIndex[static_cast<std::size_t>(tree.species)];
+  snapshot.speciesNames.clear();
+  for (const EcosystemSpecies& s : species) snapshot.speciesNames.push_back(s.species.name);
 }
 
 }  // namespace
@@ -138,19 +142,23 @@ std::vector<StandTable> standTablesOfRun(const RunFolder& run, const std::vector
     return tree.dbh_m >= kMeasuredDbh_m &&
            (!region || region->contains({tree.east_m, tree.north_m}));
   };
+  std::vector<double> formFactors;
+  for (const EcosystemSpecies& s : species) formFactors.push_back(s.ecology.life.formFactor);
   std::vector<StandTable> tables;
   for (int year : years) {
-    const TreeSnapshot snapshot = readSnapshot(run, year, counted);
-    const std::filesystem::path file = RunPaths{run.dir}.existingSnapshot(year);
-    StandTable& table = tables.emplace_back(
-        standTable(snapshot, formFactorsOf(snapshot, species, file), area_ha, classWidth_cm));
+    TreeSnapshot snapshot = readSnapshot(run, year, counted);
+    numberSpeciesAsScenario(snapshot, species, RunPaths{run.dir}.existingSnapshot(year));
+    StandTable& table =
+        tables.emplace_back(standTable(snapshot, formFactors, area_ha, classWidth_cm));
     table.ofRegion = region.has_value();
   }
   return tables;
 }
 
-std::string standTableCsv(const StandTable& table) {
-  return std::string(kStandTableCsvHeader) + "\n" + standTableCsvLines(table);
+std::string standTableCsv(const std::vector<StandTable>& tables) {
+  std::string csv = std::string(kStandTableCsvHeader) + "\n";
+  for (const StandTable& table : tables) csv += standTableCsvLines(table);
+  return csv;
 }
 
 std::string standTableCsvLines(const StandTable& table, std::string_view prefix) {

@@ -47,8 +47,9 @@ StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& f
                       double area_ha, double classWidth_cm);
 
 // The stand tables of a run's snapshots of `years`, per hectare of its map, with its
-// species' form factors (the map and the species files read once); InputErrors name the
-// snapshot (a year it lacks, a species its scenario lacks). Within a region: its trees,
+// species' form factors (the map and the species files read once), a row for each of the
+// scenario's species in its order; InputErrors name the snapshot (a year it lacks, a
+// species its scenario lacks). Within a region: its trees,
 // per hectare of its landscape cells (as a plan's thinning counts them; an InputError at
 // the region's key when it misses the map).
 std::vector<StandTable> standTablesOfRun(const RunFolder& run, const std::vector<int>& years,
@@ -59,7 +60,8 @@ std::vector<StandTable> standTablesOfRun(const RunFolder& run, const std::vector
 inline constexpr const char* kStandTableCsvHeader =
     "year,species,dbh_from_cm,dbh_to_cm,stems_per_ha,basal_area_m2_per_ha,volume_m3_per_ha,"
     "mean_height_m,mean_slenderness";
-std::string standTableCsv(const StandTable& table);
+// The tables of one or more years under the header: a development over the years.
+std::string standTableCsv(const std::vector<StandTable>& tables);
 // The same lines without the header, each after `prefix` (compare's run name and a comma).
 std::string standTableCsvLines(const StandTable& table, std::string_view prefix = "");
 // For a terminal: a line per class, each species' stems and the stand's measures, and the

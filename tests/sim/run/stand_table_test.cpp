@@ -104,14 +104,14 @@ TEST(StandTable, AStandWithoutTreesOfTenCentimetresHasNoClasses) {
   const StandTable table = standTable(snapshot, {0.5}, 1.0, 5.0);
   EXPECT_EQ(table.classCount(), 0u);
   EXPECT_EQ(table.total(1).stemsPerHa, 0.0);
-  EXPECT_EQ(standTableCsv(table).find('\n') + 1, standTableCsv(table).size());  // the header
+  EXPECT_EQ(standTableCsv({table}).find('\n') + 1, standTableCsv({table}).size());  // the header
   EXPECT_NE(standTableText(table).find("total"), std::string::npos);
 }
 
 TEST(StandTable, WritesALinePerRowAndClassAndATableForReading) {
   TreeSnapshot snapshot{150, {"beech", "pine"}, {tree(0, 0.12f, 15.0f), tree(1, 0.31f, 25.0f)}};
   const StandTable table = standTable(snapshot, {0.5, 0.4}, 2.0, 10.0);
-  std::istringstream csv(standTableCsv(table));
+  std::istringstream csv(standTableCsv({table}));
   std::string line;
   std::getline(csv, line);
   EXPECT_EQ(line,
@@ -166,7 +166,10 @@ TEST(StandTable, OfARunAddsUpToItsStatsCsv) {
     EXPECT_NEAR(total.volume_m3PerHa, row.volume_m3PerHa, 5e-3) << table.rows[r];
   }
   EXPECT_GT(table.total(table.rows.size() - 1).stemsPerHa, 100.0);  // the pines pass 10 cm
-  EXPECT_THROW(standTablesOfRun(run, {40, 30}, 5.0), InputError);   // no snapshot of year 30
+  // Every year's rows are the scenario's species in its order, with or without trees.
+  for (const StandTable& year : standTablesOfRun(run, {20, 40}, 5.0))
+    EXPECT_EQ(year.rows, (std::vector<std::string>{"pine", "beech", "all"})) << year.year;
+  EXPECT_THROW(standTablesOfRun(run, {40, 30}, 5.0), InputError);  // no snapshot of year 30
 }
 
 // Within a region: its trees per hectare of its cells. The map (9 x 9 cells of 5 m, -2.5 ..

@@ -95,17 +95,20 @@ StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& f
 
   // In the snapshot's order, so the sums do not depend on anything but the file.
   std::vector<std::vector<ClassSums>> sums(speciesCount);
+  std::vector<StandTally> tallies(speciesCount + 1);  // each species', the stand's last
   for (const TreeRow& tree : snapshot.trees) {
     const double dbh_m = tree.dbh_m;
     if (dbh_m < kMeasuredDbh_m) continue;
+    const double formFactor = formFactors[static_cast<std::size_t>(tree.species)];
+    for (StandTally* tally : {&tallies[static_cast<std::size_t>(tree.species)], &tallies.back()})
+      tally->add(dbh_m, tree.height_m, formFactor);
     const auto k =
         static_cast<std::size_t>(std::floor((100.0 * dbh_m - kFirstClass_cm) / classWidth_cm));
     std::vector<ClassSums>& row = sums[static_cast<std::size_t>(tree.species)];
     if (row.size() <= k) row.resize(k + 1);
     const double basalArea_m2 = basalAreaOf(dbh_m);
-    row[k].add({1.0, basalArea_m2,
-                formFactors[static_cast<std::size_t>(tree.species)] * basalArea_m2 * tree.height_m,
-                tree.height_m, tree.height_m / dbh_m});
+    row[k].add({1.0, basalArea_m2, formFactor * basalArea_m2 * tree.height_m, tree.height_m,
+                tree.height_m / dbh_m});
   }
   std::size_t classCount = 0;
   for (const auto& row : sums) classCount = std::max(classCount, row.size());
@@ -119,6 +122,7 @@ StandTable standTable(const TreeSnapshot& snapshot, const std::vector<double>& f
     std::vector<DiameterClass>& out = table.classes.emplace_back();
     for (const ClassSums& c : row) out.push_back(c.perHectare(area_ha));
   }
+  for (const StandTally& tally : tallies) table.measures.push_back(tally.perHectare(area_ha));
   return table;
 }
 
@@ -204,6 +208,14 @@ std::string standTableText(const StandTable& table) {
   line(
       "total", [&](std::size_t r) { return fmt::format("{:.1f}", table.total(r).stemsPerHa); },
       table.total(species));
+  // What a forester reports of each species and the stand (stats.csv's measures).
+  text += fmt::format("\n{:<9} {:>8} {:>7} {:>7} {:>6} {:>8}\n", "", "stems", "m²/ha", "qmd cm",
+                      "SDI", "m³/ha");
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const StandMeasures& m = table.measures[r];
+    text += fmt::format("{:<9} {:>8.1f} {:>7.2f} {:>7.1f} {:>6.0f} {:>8.1f}\n", table.rows[r],
+                        m.stemsPerHa, m.basalArea_m2PerHa, m.qmd_cm, m.sdi, m.volume_m3PerHa);
+  }
   return text;
 }
 

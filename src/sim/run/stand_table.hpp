@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sim/ecology/stand_measures.hpp"
 #include "sim/plan/plan_spec.hpp"
 #include "sim/run/run_folder.hpp"
 #include "sim/run/trees_file.hpp"
@@ -34,6 +35,9 @@ struct StandTable {
   // classes[row][k] holds the trees of dbh in [from_cm(k), from_cm(k + 1)); every row has
   // the classes up to the stand's thickest tree, none where no tree reaches 10 cm.
   std::vector<std::vector<DiameterClass>> classes;
+  // Each row's measures as stats.csv gives them (stems, basal area, quadratic mean diameter,
+  // stand density index, volume; not the dominant height, which takes the thinner trees).
+  std::vector<StandMeasures> measures;
 
   double from_cm(std::size_t k) const;
   std::size_t classCount() const { return classes.empty() ? 0 : classes.front().size(); }

@@ -57,6 +57,14 @@ TEST(StandTable, TalliesEachTreeOfTenCentimetresIntoItsDiameterClass) {
   EXPECT_EQ(table.classes[1][0].stemsPerHa, 0.0);
   EXPECT_DOUBLE_EQ(table.classes[1][4].stemsPerHa, 0.5);
   EXPECT_NEAR(table.classes[1][4].volume_m3PerHa, 0.4 * basalArea(0.31f) * 25.0 / 2.0, 1e-12);
+  // Each row's measures: the beeches' quadratic mean diameter and Reineke's index by hand.
+  const double beechQmd_cm =
+      100.0 * std::sqrt((std::pow(double(0.12f), 2) + std::pow(double(0.14f), 2) +
+                         std::pow(double(0.15f), 2)) /
+                        3.0);
+  EXPECT_NEAR(table.measures[0].qmd_cm, beechQmd_cm, 1e-9);
+  EXPECT_NEAR(table.measures[0].sdi, 1.5 * std::pow(beechQmd_cm / 25.4, 1.605), 1e-9);
+  EXPECT_DOUBLE_EQ(table.measures[2].stemsPerHa, 2.0);  // four trees on 2 ha
   // The stand's row holds every species'.
   EXPECT_DOUBLE_EQ(table.classes[2][0].stemsPerHa, 1.0);
   EXPECT_DOUBLE_EQ(table.classes[2][4].stemsPerHa, 0.5);
@@ -164,6 +172,8 @@ TEST(StandTable, OfARunAddsUpToItsStatsCsv) {
     EXPECT_NEAR(total.stemsPerHa, row.stemsPerHa, 0.05) << table.rows[r];
     EXPECT_NEAR(total.basalArea_m2PerHa, row.basalArea_m2PerHa, 5e-5) << table.rows[r];
     EXPECT_NEAR(total.volume_m3PerHa, row.volume_m3PerHa, 5e-3) << table.rows[r];
+    EXPECT_NEAR(table.measures[r].qmd_cm, row.qmd_cm, 5e-3) << table.rows[r];
+    EXPECT_NEAR(table.measures[r].sdi, row.sdi, 0.05) << table.rows[r];
   }
   EXPECT_GT(table.total(table.rows.size() - 1).stemsPerHa, 100.0);  // the pines pass 10 cm
   // Every year's rows are the scenario's species in its order, with or without trees.

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "sim/ecology/stand_measures.hpp"
+#include "sim/image_io.hpp"
 #include "sim/run/run_format.hpp"
 #include "sim/run/simulation.hpp"
 #include "test_files.hpp"
@@ -210,6 +211,19 @@ TEST(StandTable, WithinARegionTalliesItsTreesPerHectareOfItsCells) {
                        &DiameterClass::volume_m3PerHa})
     EXPECT_NEAR(west.total(all).*measure * west.area_ha + east.total(all).*measure * east.area_ha,
                 whole.total(all).*measure * whole.area_ha, 1e-9);
+  // The same cells as a mask (row 0 the north edge), the same table.
+  std::vector<float> westColumns(9 * 9, 0.0f);
+  for (int y = 0; y < 9; ++y)
+    for (int x = 0; x < 4; ++x) westColumns[static_cast<std::size_t>(y * 9 + x)] = 1.0f;
+  const auto maskFile = test::freshDirectory("stand_table_mask") / "west.exr";
+  writeFloatImage(maskFile, 9, 9, 1, westColumns);
+  RegionSpec mask;
+  mask.kind = RegionSpec::Kind::Mask;
+  mask.mask = maskFile;
+  const StandTable masked = standTablesOfRun(run, {40}, 5.0, mask).at(0);
+  EXPECT_EQ(masked.area_ha, west.area_ha);
+  EXPECT_EQ(masked.total(all).stemsPerHa, west.total(all).stemsPerHa);
+  EXPECT_EQ(masked.total(all).basalArea_m2PerHa, west.total(all).basalArea_m2PerHa);
   // A region off the map is refused at its key.
   RegionSpec off = regionOf(100.0, 200.0);
   off.where = SourceLocation("--region", 1, "polygon");

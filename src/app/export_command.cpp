@@ -29,12 +29,13 @@ struct ExportArgs {
   std::size_t maxTriangles = 0;
 };
 
-// The snapshot's plants at least --min-height tall.
+// The snapshot's plants at least --min-height tall, the others never held (a landscape's
+// saplings are most of its plants).
 TreeSnapshot snapshotToExport(const ExportArgs& args, const SceneSource& source, int year) {
-  TreeSnapshot snapshot = readSnapshot(*source.run, year);
-  std::erase_if(snapshot.trees,
-                [&](const TreeRow& tree) { return tree.height_m < args.minHeight_m; });
-  return snapshot;
+  TreeFilter tallEnough;
+  if (args.minHeight_m > 0.0)
+    tallEnough = [&](const TreeRow& tree) { return tree.height_m >= args.minHeight_m; };
+  return readSnapshot(*source.run, year, tallEnough);
 }
 
 // The trees as GeoJSON points in the terrain's coordinates, for GIS tools.

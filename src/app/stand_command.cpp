@@ -91,7 +91,7 @@ void addStandCommand(CLI::App& app) {
                       "rule gives it: 'polygon = [[x, y], ...]' in map metres, or a line or "
                       "mask, with buffer_m (docs/planning.md)");
   command->add_option("--out", args->out,
-                      "Also write the table as CSV (a line per species and class)");
+                      "Also write the tables as CSV (a line per year, species and class)");
   command->callback([args] { runStand(*args); });
 }
 

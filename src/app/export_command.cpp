@@ -29,32 +29,43 @@ struct ExportArgs {
   std::size_t maxTriangles = 0;
 };
 
-// The snapshot's plants at least --min-height tall, the others never held (a landscape's
-// saplings are most of its plants).
-TreeSnapshot snapshotToExport(const ExportArgs& args, const SceneSource& source, int year) {
-  TreeFilter tallEnough;
-  if (args.minHeight_m > 0.0)
-    tallEnough = [&](const TreeRow& tree) { return tree.height_m >= args.minHeight_m; };
-  return readSnapshot(*source.run, year, tallEnough);
+// The plants at least --min-height tall, the others never held (a landscape's saplings are
+// most of its plants).
+TreeFilter tallEnough(const ExportArgs& args) {
+  if (args.minHeight_m <= 0.0) return {};
+  return [minHeight_m = args.minHeight_m](const TreeRow& tree) {
+    return tree.height_m >= minHeight_m;
+  };
 }
 
-// The trees as GeoJSON points in the terrain's coordinates, for GIS tools.
-void exportTreesGeoJson(const ExportArgs& args, const SceneSource& source, int year) {
-  const TreeSnapshot snapshot = snapshotToExport(args, source, year);
+// The trees as GeoJSON points in the terrain's coordinates (GIS tools), or as the run's
+// CSV snapshot (a binary snapshot, docs/run_folder.md, for tools that read CSV): written a
+// batch of rows at a time as they are read, so a landscape's tens of millions of plants
+// are never held at once.
+void exportTreeRows(const ExportArgs& args, const SceneSource& source, int year, bool geojson) {
   const Grid& grid = source.terrain.grid;
-  writeTreesGeoJson(args.out, snapshot, grid);
-  std::cout << fmt::format(
-      "{}: year {}, {} trees as points in {}\n", args.out, year, snapshot.trees.size(),
-      grid.epsg != 0 ? fmt::format("EPSG:{}", grid.epsg) : std::string("the map's local metres"));
-}
-
-// The trees as the run's CSV snapshot (a binary snapshot, docs/run_folder.md, for tools
-// that read CSV).
-void exportTreesCsv(const ExportArgs& args, const SceneSource& source, int year) {
-  const TreeSnapshot snapshot = snapshotToExport(args, source, year);
-  writeTrees(args.out, snapshot, SnapshotFormat::Csv);
-  std::cout << fmt::format("{}: year {}, {} trees as CSV rows\n", args.out, year,
-                           snapshot.trees.size());
+  std::optional<TreesGeoJsonWriter> points;
+  std::optional<TreesCsvWriter> rows;
+  if (geojson)
+    points.emplace(args.out, grid, year);
+  else
+    rows.emplace(args.out);
+  std::size_t count = 0;
+  readSnapshotInBatches(*source.run, year, tallEnough(args),
+                        [&](std::span<const TreeRow> batch, const std::vector<std::string>& names) {
+                          if (points) points->write(batch, names);
+                          if (rows) rows->write(batch, names);
+                          count += batch.size();
+                        });
+  if (points) {
+    points->commit();
+    std::cout << fmt::format(
+        "{}: year {}, {} trees as points in {}\n", args.out, year, count,
+        grid.epsg != 0 ? fmt::format("EPSG:{}", grid.epsg) : std::string("the map's local metres"));
+  } else {
+    rows->commit();
+    std::cout << fmt::format("{}: year {}, {} trees as CSV rows\n", args.out, year, count);
+  }
 }
 
 void runExport(const ExportArgs& args) {
@@ -78,9 +89,8 @@ void runExport(const ExportArgs& args) {
   SceneSource source = openRunSource(args.run);
   const int year = args.year.value_or(source.defaultYear());
   source.requireSnapshot(year);
-  if (geojson) return exportTreesGeoJson(args, source, year);
-  if (csv) return exportTreesCsv(args, source, year);
-  const TreeSnapshot snapshot = snapshotToExport(args, source, year);
+  if (geojson || csv) return exportTreeRows(args, source, year, geojson);
+  const TreeSnapshot snapshot = readSnapshot(*source.run, year, tallEnough(args));
   source.buildLibrary(LibrarySettings::shaped(!args.noShaping));
   const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
   // Billboards are pictures of the trees: the renderer bakes them, headless.

@@ -49,4 +49,10 @@ TreeSnapshot readSnapshot(const RunFolder& run, int year, const TreeFilter& keep
   return snapshot;
 }
 
+void readSnapshotInBatches(const RunFolder& run, int year, const TreeFilter& keep,
+                           const TreeBatch& each) {
+  requireSnapshotYear(run, year);
+  readTreesInBatches(RunPaths{run.dir}.existingSnapshot(year), keep, each);
+}
+
 }  // namespace eco

@@ -31,4 +31,7 @@ void requireSnapshotYear(const RunFolder& run, int year);
 // The snapshot of `year` (only the rows `keep` keeps); an InputError lists the years there
 // are when it is not one.
 TreeSnapshot readSnapshot(const RunFolder& run, int year, const TreeFilter& keep = {});
+// The same a batch of rows at a time (readTreesInBatches), for writing it out.
+void readSnapshotInBatches(const RunFolder& run, int year, const TreeFilter& keep,
+                           const TreeBatch& each);
 }  // namespace eco

@@ -136,9 +136,9 @@ void appendCsvRow(std::string& text, const TreeRow& row, std::string_view specie
   text += '\n';
 }
 
-void writeCsv(AtomicFile& out, std::size_t count, const RowAt& rowAt,
-              const std::vector<std::string>& speciesNames) {
-  out.write(std::string(kTreesCsvHeader) + "\n");
+// The rows without the header.
+void writeCsvRows(AtomicFile& out, std::size_t count, const RowAt& rowAt,
+                  const std::vector<std::string>& speciesNames) {
   constexpr std::size_t kLongestRow = 120;  // bytes: a tree's row is about 107
   writeInBatches(
       count, kLongestRow,
@@ -147,6 +147,12 @@ void writeCsv(AtomicFile& out, std::size_t count, const RowAt& rowAt,
         appendCsvRow(text, row, speciesNames[static_cast<std::size_t>(row.species)]);
       },
       [&](std::string_view text) { out.write(text); });
+}
+
+void writeCsv(AtomicFile& out, std::size_t count, const RowAt& rowAt,
+              const std::vector<std::string>& speciesNames) {
+  out.write(std::string(kTreesCsvHeader) + "\n");
+  writeCsvRows(out, count, rowAt, speciesNames);
 }
 
 std::vector<std::string> speciesNamesOf(const Ecosystem& ecosystem) {
@@ -355,11 +361,30 @@ void writeTrees(const std::filesystem::path& file, const TreeSnapshot& snapshot,
   out.commit();
 }
 
-TreeSnapshot readTreesCsv(const std::filesystem::path& file, const TreeFilter& keep) {
-  // Filtered, the file is read a batch at a time and its rows are not all kept: neither
-  // its bytes nor its rows are ever held whole.
-  const MappedFile mapping =
-      mapped(file, keep ? MappedFile::Reading::InParts : MappedFile::Reading::Whole);
+namespace {
+
+// How a read goes: the rows it keeps, and whether each batch of them goes to `each` (then
+// dropped) instead of into the snapshot. Filtered or batch by batch, neither the file's
+// bytes nor its rows are ever held whole: the file is mapped in parts, each released once
+// its batch is done.
+struct ReadPlan {
+  const TreeFilter& keep;
+  const TreeBatch* each = nullptr;
+  bool inParts() const { return keep || each != nullptr; }
+  MappedFile::Reading reading() const {
+    return inParts() ? MappedFile::Reading::InParts : MappedFile::Reading::Whole;
+  }
+  // The batch's rows, from `start` on, handed on and dropped (batch by batch only).
+  void handOn(TreeSnapshot& snapshot, std::size_t start) const {
+    if (each == nullptr) return;
+    (*each)(std::span<const TreeRow>(snapshot.trees).subspan(start), snapshot.speciesNames);
+    snapshot.trees.resize(start);
+  }
+};
+
+TreeSnapshot readCsv(const std::filesystem::path& file, const ReadPlan& plan) {
+  const TreeFilter& keep = plan.keep;
+  const MappedFile mapping = mapped(file, plan.reading());
   const std::string_view text = mapping.bytes();
   if (text.empty()) throw InputError({file.string(), 0, ""}, "the file is empty");
   const std::size_t headerEnd = std::min(text.find('\n'), text.size());
@@ -378,7 +403,7 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file, const TreeFilter& k
   // Unfiltered, the lines are counted first, for room for all of the rows.
   const std::string_view body = std::string_view(text).substr(std::min(text.size(), headerEnd + 1));
   TreeSnapshot snapshot;
-  if (!keep) snapshot.trees.reserve(lineCountOf(body));
+  if (!plan.inParts()) snapshot.trees.reserve(lineCountOf(body));
   constexpr std::size_t kChunkBytes = std::size_t{1} << 20, kChunksPerBatch = 64;
   std::vector<TreeChunk> chunks;
   std::vector<char> filled;
@@ -430,20 +455,21 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file, const TreeFilter& k
         }
     }
     snapshot.trees.resize(kept);
-    if (keep) mapping.release(body.substr(batchStart, next - batchStart));
+    plan.handOn(snapshot, start);
+    if (plan.inParts()) mapping.release(body.substr(batchStart, next - batchStart));
   }
   if (keep) snapshot.trees.shrink_to_fit();  // unfiltered, it holds what it reserved
   return snapshot;
 }
 
-TreeSnapshot readTreesBinary(const std::filesystem::path& file, const TreeFilter& keep) {
+TreeSnapshot readBinary(const std::filesystem::path& file, const ReadPlan& plan) {
+  const TreeFilter& keep = plan.keep;
   auto refuse = [&](const std::string& why) { return InputError({file.string(), 0, ""}, why); };
-  // Filtered, the file is gone through in parts twice (its checksum, then its rows), each
-  // part released when it is done, and its rows are not all kept.
-  const MappedFile mapping =
-      mapped(file, keep ? MappedFile::Reading::InParts : MappedFile::Reading::Whole);
+  // In parts, the file is gone through twice (its checksum, then its rows), each part
+  // released when it is done.
+  const MappedFile mapping = mapped(file, plan.reading());
   PartDone release;
-  if (keep) release = [&](std::string_view part) { mapping.release(part); };
+  if (plan.inParts()) release = [&](std::string_view part) { mapping.release(part); };
   const std::string_view body = requireSealed(
       mapping.bytes(), kBinaryMagic, kBinaryVersion, file,
       {.notOurs = "not a binary trees file of ecoforest",
@@ -476,7 +502,7 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file, const TreeFilter
   };
   // A batch of rows at a time, decoded at the end of the snapshot's as they are checked,
   // side by side, and the ones not kept dropped.
-  if (!keep) snapshot.trees.reserve(count);
+  if (!plan.inParts()) snapshot.trees.reserve(count);
   constexpr std::uint64_t kRowsPerBatch = std::uint64_t{1} << 20;
   for (std::uint64_t first = 0; first < count; first += kRowsPerBatch) {
     const auto rows = static_cast<std::size_t>(std::min(kRowsPerBatch, count - first));
@@ -496,14 +522,44 @@ TreeSnapshot readTreesBinary(const std::filesystem::path& file, const TreeFilter
           std::remove_if(snapshot.trees.begin() + static_cast<std::ptrdiff_t>(start),
                          snapshot.trees.end(), [&](const TreeRow& tree) { return !keep(tree); }),
           snapshot.trees.end());
+    plan.handOn(snapshot, start);
   }
   if (keep) snapshot.trees.shrink_to_fit();
   return snapshot;
 }
 
+TreeSnapshot readByExtension(const std::filesystem::path& file, const ReadPlan& plan) {
+  return snapshotFormatOf(file) == SnapshotFormat::Binary ? readBinary(file, plan)
+                                                          : readCsv(file, plan);
+}
+
+}  // namespace
+
+TreesCsvWriter::TreesCsvWriter(const std::filesystem::path& file) : out_(file) {
+  out_.write(std::string(kTreesCsvHeader) + "\n");
+}
+
+void TreesCsvWriter::write(std::span<const TreeRow> rows,
+                           const std::vector<std::string>& speciesNames) {
+  writeCsvRows(
+      out_, rows.size(), [&](std::size_t i) { return rows[i]; }, speciesNames);
+}
+
+TreeSnapshot readTreesCsv(const std::filesystem::path& file, const TreeFilter& keep) {
+  return readCsv(file, {keep});
+}
+
+TreeSnapshot readTreesBinary(const std::filesystem::path& file, const TreeFilter& keep) {
+  return readBinary(file, {keep});
+}
+
 TreeSnapshot readTrees(const std::filesystem::path& file, const TreeFilter& keep) {
-  return snapshotFormatOf(file) == SnapshotFormat::Binary ? readTreesBinary(file, keep)
-                                                          : readTreesCsv(file, keep);
+  return readByExtension(file, {keep});
+}
+
+void readTreesInBatches(const std::filesystem::path& file, const TreeFilter& keep,
+                        const TreeBatch& each) {
+  readByExtension(file, {keep, &each});
 }
 
 }  // namespace eco

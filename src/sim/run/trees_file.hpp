@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,9 +59,20 @@ void writeTrees(const std::filesystem::path& file, const Ecosystem& ecosystem, c
 // The same into `out`, which the caller commits (a run, in the background).
 void writeTrees(AtomicFile& out, const Ecosystem& ecosystem, const Plants& plants,
                 SnapshotFormat format);
-// A snapshot read back, in either format (`export` writes a binary snapshot as CSV).
+// A snapshot read back, in either format.
 void writeTrees(const std::filesystem::path& file, const TreeSnapshot& snapshot,
                 SnapshotFormat format);
+// A CSV snapshot written a batch of rows at a time (`export` writes a binary snapshot read
+// in batches as CSV): the header, then each batch's rows, whose species number the names.
+class TreesCsvWriter {
+ public:
+  explicit TreesCsvWriter(const std::filesystem::path& file);
+  void write(std::span<const TreeRow> rows, const std::vector<std::string>& speciesNames);
+  void commit() { out_.commit(); }
+
+ private:
+  AtomicFile out_;
+};
 
 // The rows a reader keeps, asked of each row in the file's order (its species numbered as
 // in the snapshot); none keeps every row. A stand table needs a landscape's trees of 10
@@ -76,5 +88,14 @@ TreeSnapshot readTreesCsv(const std::filesystem::path& file, const TreeFilter& k
 TreeSnapshot readTreesBinary(const std::filesystem::path& file, const TreeFilter& keep = {});
 // By the file's extension.
 TreeSnapshot readTrees(const std::filesystem::path& file, const TreeFilter& keep = {});
+
+// Each batch of a file's rows (those `keep` keeps, in the file's order) as it is read, with
+// the species names so far, which its rows' species number: a reader that writes them out
+// (`export`) never holds the file or its rows whole. The same checks, faults and numbers as
+// readTrees.
+using TreeBatch =
+    std::function<void(std::span<const TreeRow> rows, const std::vector<std::string>& species)>;
+void readTreesInBatches(const std::filesystem::path& file, const TreeFilter& keep,
+                        const TreeBatch& each);
 
 }  // namespace eco

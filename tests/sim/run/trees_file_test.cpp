@@ -249,6 +249,26 @@ TEST_F(OneHectare, ALargeSnapshotIsWrittenAndReadInBatchesInOrder) {
     EXPECT_EQ(ids, expected);
     EXPECT_EQ(kept.speciesNames, snapshot.speciesNames);
     EXPECT_EQ(kept.trees.capacity(), kept.trees.size());
+    // Batch by batch, in order: the same rows, more than one batch of them.
+    std::vector<std::uint64_t> batched;
+    int batches = 0;
+    readTreesInBatches(file, keep,
+                       [&](std::span<const TreeRow> rows, const std::vector<std::string>& names) {
+                         ++batches;
+                         EXPECT_EQ(names, snapshot.speciesNames);
+                         for (const TreeRow& tree : rows) batched.push_back(tree.id);
+                       });
+    EXPECT_EQ(batched, expected);
+    EXPECT_GE(batches, 2);
+    // And written out batch by batch as CSV: the CSV snapshot's bytes (written first).
+    const auto copy = folder / "copy.csv";
+    TreesCsvWriter writer(copy);
+    readTreesInBatches(file, {},
+                       [&](std::span<const TreeRow> rows, const std::vector<std::string>& names) {
+                         writer.write(rows, names);
+                       });
+    writer.commit();
+    EXPECT_TRUE(test::readFile(copy) == test::readFile(folder / "year_0001.csv"));
   }
   // A bad row in the CSV reader's second batch is reported at its line, kept or not.
   const auto file = folder / "year_0001.csv";

@@ -46,6 +46,24 @@ TEST(TreesGeoJson, OnePointPerTreeInTheGridsCoordinatesWithItsRow) {
   EXPECT_EQ(json["features"][1]["properties"]["species"], "pine \"sylvestris\"");  // escaped
 }
 
+// Written in batches (export's), a later batch naming a new species: the bytes of the
+// whole written at once, and valid JSON with or without features.
+TEST(TreesGeoJson, BatchesWriteTheBytesOfTheWhole) {
+  const auto dir = test::freshDirectory("trees_geojson_batches");
+  const Grid g{10, 10, 8.0, 8.0};
+  const TreeSnapshot trees = twoTrees();
+  writeTreesGeoJson(dir / "whole.geojson", trees, g);
+  TreesGeoJsonWriter writer(dir / "batches.geojson", g, trees.year);
+  writer.write(std::span(trees.trees).first(1), {trees.speciesNames[0]});
+  writer.write({}, {trees.speciesNames[0]});
+  writer.write(std::span(trees.trees).subspan(1), trees.speciesNames);
+  writer.commit();
+  EXPECT_EQ(test::readFile(dir / "batches.geojson"), test::readFile(dir / "whole.geojson"));
+  TreesGeoJsonWriter none(dir / "none.geojson", g, trees.year);
+  none.commit();
+  EXPECT_TRUE(nlohmann::json::parse(test::readFile(dir / "none.geojson"))["features"].empty());
+}
+
 TEST(TreesGeoJson, LocalMetresNameNoSystem) {
   const auto dir = test::freshDirectory("trees_geojson_local");
   writeTreesGeoJson(dir / "t.geojson", twoTrees(), Grid{10, 10, 10.0, 10.0});

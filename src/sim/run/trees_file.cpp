@@ -400,7 +400,7 @@ TreeSnapshot readCsv(const std::filesystem::path& file, const ReadPlan& plan) {
   // tens of millions), a batch of stretches at a time, each tree put at its line's place
   // at the end of the snapshot's rows and the ones not kept dropped: the trees, their
   // species' order and the first fault reported are those of reading the lines in order.
-  // Unfiltered, the lines are counted first, for room for all of the rows.
+  // Read whole, the lines are counted first, for room for all of the rows.
   const std::string_view body = std::string_view(text).substr(std::min(text.size(), headerEnd + 1));
   TreeSnapshot snapshot;
   if (!plan.inParts()) snapshot.trees.reserve(lineCountOf(body));
@@ -458,7 +458,7 @@ TreeSnapshot readCsv(const std::filesystem::path& file, const ReadPlan& plan) {
     plan.handOn(snapshot, start);
     if (plan.inParts()) mapping.release(body.substr(batchStart, next - batchStart));
   }
-  if (keep) snapshot.trees.shrink_to_fit();  // unfiltered, it holds what it reserved
+  if (keep) snapshot.trees.shrink_to_fit();  // read whole, it holds what it reserved
   return snapshot;
 }
 

@@ -10,6 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "sim/image_io.hpp"
+#include "sim/plan/plan_spec.hpp"
 #include "sim/run/charts.hpp"
 #include "sim/run/comparison.hpp"
 #include "sim/run/simulation.hpp"
@@ -22,6 +23,7 @@ struct CompareArgs {
   std::vector<std::string> runs;
   std::string out;
   std::vector<int> years;
+  std::string region;  // TOML keys of a plan's region
   bool noStills = false;
   ViewOptions view;
 };
@@ -52,20 +54,25 @@ const Charted kCharts[] = {
 // Diameter classes of the compared stand tables, cm.
 constexpr double kCompareClassWidth_cm = 5.0;
 
-// Each run's stand table in each year every run has a snapshot of: a CSV of them all
-// (stand_tables.csv, the run's name first on each line) and a chart of the stems per class
-// for each year.
+// Each run's stand table in each year every run has a snapshot of, of the whole map or
+// within a region: a CSV of them all (stand_tables.csv, the run's name first on each line),
+// a chart of the stems per class for each year, and each run's species' and stand's
+// measures in each year (stand_measures.csv).
 void writeDiameterDistributions(const std::vector<RunFolder>& folders,
                                 const std::vector<std::string>& names,
-                                const std::vector<int>& years, const std::filesystem::path& out) {
+                                const std::vector<int>& years,
+                                const std::optional<RegionSpec>& region,
+                                const std::filesystem::path& out) {
   // tables[run][k]: the map and species files of each run read once for all its years.
   std::vector<std::vector<StandTable>> tables;
   for (const RunFolder& folder : folders)
-    tables.push_back(standTablesOfRun(folder, years, kCompareClassWidth_cm));
+    tables.push_back(standTablesOfRun(folder, years, kCompareClassWidth_cm, region));
   std::string csv = fmt::format("run,{}\n", kStandTableCsvHeader);
+  std::string measures =
+      "run,year,species,stems_per_ha,basal_area_m2_per_ha,qmd_cm,sdi,volume_m3_per_ha\n";
   for (std::size_t k = 0; k < years.size(); ++k) {
-    LineChart chart{fmt::format("Diameter distribution in year {} (classes of {:g} cm)", years[k],
-                                kCompareClassWidth_cm),
+    LineChart chart{fmt::format("Diameter distribution in year {}{} (classes of {:g} cm)", years[k],
+                                region ? " within the region" : "", kCompareClassWidth_cm),
                     "dbh, cm (class middle)",
                     "stems/ha",
                     {},
@@ -73,6 +80,12 @@ void writeDiameterDistributions(const std::vector<RunFolder>& folders,
     for (std::size_t i = 0; i < folders.size(); ++i) {
       const StandTable& table = tables[i][k];
       csv += standTableCsvLines(table, names[i] + ",");
+      for (std::size_t r = 0; r < table.rows.size(); ++r) {
+        const StandMeasures& m = table.measures[r];
+        measures += fmt::format("{},{},{},{:.2f},{:.4f},{:.2f},{:.1f},{:.3f}\n", names[i],
+                                table.year, table.rows[r], m.stemsPerHa, m.basalArea_m2PerHa,
+                                m.qmd_cm, m.sdi, m.volume_m3PerHa);
+      }
       ChartSeries& series = chart.series.emplace_back(ChartSeries{names[i], {}});
       const std::size_t stand = table.rows.size() - 1;
       for (std::size_t c = 0; c < table.classCount(); ++c)
@@ -81,9 +94,12 @@ void writeDiameterDistributions(const std::vector<RunFolder>& folders,
     }
     writeRgb8Image(out / fmt::format("diameters_year_{:04d}.png", years[k]), drawLineChart(chart));
   }
-  AtomicFile file(out / "stand_tables.csv");
-  file.write(csv);
-  file.commit();
+  for (const auto& [name, text] :
+       {std::pair{"stand_tables.csv", &csv}, std::pair{"stand_measures.csv", &measures}}) {
+    AtomicFile file(out / name);
+    file.write(*text);
+    file.commit();
+  }
 }
 
 // Each run by its scenario's name, or its folder's where two runs share a scenario name.
@@ -101,6 +117,9 @@ void runCompare(const CompareArgs& args) {
     throw InputError({"compare", 0, ""}, "name at least two run folders to compare");
   std::vector<RunFolder> folders;
   for (const std::string& run : args.runs) folders.push_back(openRunArgument(run));
+  std::optional<RegionSpec> region;
+  if (!args.region.empty())
+    region = parseRegionOption(args.region, "--region", std::filesystem::current_path());
   const std::vector<std::string> names = namesOf(folders);
   std::vector<ComparedRun> runs;
   for (std::size_t i = 0; i < folders.size(); ++i)
@@ -139,11 +158,12 @@ void runCompare(const CompareArgs& args) {
     }
     writeRgb8Image(out / c.file, drawLineChart(chart));
   }
-  writeDiameterDistributions(folders, names, snapshotYears, out);
+  writeDiameterDistributions(folders, names, snapshotYears, region, out);
   std::cout << fmt::format(
-      "compare: {} runs at years {}: {}/compare.csv, compare.md, {} charts, stand_tables.csv and "
-      "{} diameter distributions\n",
-      runs.size(), fmt::join(years, ", "), out.string(), std::size(kCharts), snapshotYears.size());
+      "compare: {} runs at years {}: {}/compare.csv, compare.md, {} charts, stand_tables.csv, "
+      "stand_measures.csv and {} diameter distributions{}\n",
+      runs.size(), fmt::join(years, ", "), out.string(), std::size(kCharts), snapshotYears.size(),
+      region ? " within the region" : "");
   if (args.noStills || snapshotYears.empty()) return;
   const std::vector<int>& stillYears = snapshotYears;
   // One still per run and year; runs whose species are the same files share one tree
@@ -196,6 +216,10 @@ void addCompareCommand(CLI::App& app) {
                    "Years to compare, e.g. 30,60,100 (default: those of 30, 60, 100 every run "
                    "reaches)")
       ->delimiter(',');
+  command->add_option("--region", args->region,
+                      "Stand tables, measures and diameter distributions within a region, "
+                      "given as a plan's rule gives it: 'polygon = [[x, y], ...]' in map "
+                      "metres, or a line or mask, with buffer_m (docs/planning.md)");
   command->add_flag("--no-stills", args->noStills, "Write the table and charts only");
   addFrameOptions(*command, args->view);
   addCameraOptions(*command, args->view);

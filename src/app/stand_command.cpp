@@ -9,7 +9,6 @@
 #include "app/scene_source.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/toml_reader.hpp"
 #include "sim/plan/plan_spec.hpp"
 #include "sim/run/stand_table.hpp"
 
@@ -25,28 +24,13 @@ struct StandArgs {
   std::string out;
 };
 
-// `--region 'polygon = [[0, 0], [400, 0], [400, 300]]'`: the keys a plan's rule gives its
-// region with (docs/planning.md, "Regions"), a mask relative to the working folder.
-RegionSpec regionArgument(const std::string& text) {
-  const std::string name = "--region";
-  const TomlDocument document = TomlDocument::parse(text, name);
-  TomlTable table = document.root();
-  const RegionSpec region =
-      parseRegion(table, std::filesystem::current_path(), false, SourceLocation(name));
-  table.finish();
-  if (region.kind == RegionSpec::Kind::WholeMap)
-    throw InputError(SourceLocation(name),
-                     "give the region as a plan does: polygon = [[x, y], ...], line = [[x, y], "
-                     "...] with buffer_m, or mask = \"FILE.png\" (docs/planning.md)");
-  return region;
-}
-
 void runStand(const StandArgs& args) {
   const std::optional<std::filesystem::path> out =
       args.out.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.out);
   if (out) requireOutputFolder(*out);
   std::optional<RegionSpec> region;
-  if (!args.region.empty()) region = regionArgument(args.region);
+  if (!args.region.empty())
+    region = parseRegionOption(args.region, "--region", std::filesystem::current_path());
   const RunFolder run = openRunArgument(args.run);
   if (run.snapshotYears.empty())
     throw InputError({run.dir, 0, "trees"}, "the run has no tree snapshot yet");

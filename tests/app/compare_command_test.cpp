@@ -106,6 +106,38 @@ TEST(CompareCommand, WritesTheTableChartsAndStillsOfTheRuns) {
     planted30 += line.starts_with("app_compare_planted,30,all,") ? 1 : 0;
   }
   EXPECT_GE(planted30, 1);  // its pines of 30 years pass 10 cm
+  // Each run's species' and stand's measures in each year: 2 runs x 3 rows x 2 years.
+  const std::string measures = eco::test::readFile(out / "stand_measures.csv");
+  EXPECT_TRUE(measures.starts_with("run,year,species,stems_per_ha,basal_area_m2_per_ha,qmd_cm,"))
+      << measures;
+  EXPECT_EQ(std::count(measures.begin(), measures.end(), '\n'), 1 + 2 * 3 * 2) << measures;
+}
+
+// Within a region (the west half of the 170 m square): the stand tables and measures of the
+// trees standing there, per hectare of its cells; the table and charts of stats.csv stay the
+// whole map's.
+TEST(CompareCommand, ComparesTheStandsWithinARegion) {
+  const auto& [natural, planted] = twoRuns();
+  const auto folder = eco::test::freshDirectory("app_compare_region");
+  auto measuresOf = [&](const std::string& name, const std::string& region) {
+    const auto out = folder / name;
+    CommandResult r =
+        ecoforest(fmt::format("compare {} {} --out {} --years 30 --no-stills {}", natural.string(),
+                              planted.string(), out.string(), region));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return eco::test::readFile(out / "stand_measures.csv");
+  };
+  const std::string whole = measuresOf("whole", "");
+  const std::string west =
+      measuresOf("west", "--region 'polygon = [[-10, -10], [80, -10], [80, 170], [-10, 170]]'");
+  EXPECT_EQ(std::count(west.begin(), west.end(), '\n'), 1 + 2 * 3) << west;
+  EXPECT_NE(west, whole);  // the natural run's seeds come from the west: its west half differs
+  CommandResult bad =
+      ecoforest(fmt::format("compare {} {} --out {} --region 'polygon = [[0, 0]]'",
+                            natural.string(), planted.string(), (folder / "bad").string()));
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--region:1: polygon"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(folder / "bad"));
 }
 
 TEST(CompareCommand, BadArgumentsAreExitTwo) {

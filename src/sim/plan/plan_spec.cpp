@@ -198,6 +198,19 @@ RegionSpec parseRegion(TomlTable& table, const std::filesystem::path& folder, bo
   return region;
 }
 
+RegionSpec parseRegionOption(std::string_view text, const std::string& option,
+                             const std::filesystem::path& folder) {
+  const TomlDocument document = TomlDocument::parse(text, option);
+  TomlTable table = document.root();
+  const RegionSpec region = parseRegion(table, folder, false, SourceLocation(option));
+  table.finish();
+  if (region.kind == RegionSpec::Kind::WholeMap)
+    throw InputError(SourceLocation(option),
+                     "give the region as a plan does: polygon = [[x, y], ...], line = [[x, y], "
+                     "...] with buffer_m, or mask = \"FILE.png\" (docs/planning.md)");
+  return region;
+}
+
 std::vector<std::string> Planting::speciesNames() const {
   std::vector<std::string> names;
   for (const std::vector<SpeciesShare>* list : {&mix, &rows})

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -120,6 +121,11 @@ struct Plan {
 // whole map). Also a region a command is given (`stand --region`).
 RegionSpec parseRegion(TomlTable& table, const std::filesystem::path& folder, bool borderAllowed,
                        const SourceLocation& rule);
+// A region given on a command line as those keys (`--region 'polygon = [[0, 0], [400, 0],
+// [400, 300]]'`), a mask relative to `folder`; InputErrors name `option`, the line and the
+// key, and a text that gives no shape.
+RegionSpec parseRegionOption(std::string_view text, const std::string& option,
+                             const std::filesystem::path& folder);
 
 // Reads the scenario's [[planting]], [[seed_source]], [[exclusion]] and [[thinning]] tables
 // (paths relative to the scenario's folder); errors name the file, line and key.

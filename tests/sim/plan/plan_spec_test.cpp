@@ -87,6 +87,26 @@ species = ["pine"]
   EXPECT_EQ(t.species, std::vector<std::string>{"pine"});
 }
 
+// A region on a command line: the keys of a plan's rule, errors at the option's name.
+TEST(PlanSpec, ARegionOptionReadsAsARulesRegion) {
+  const RegionSpec polygon = parseRegionOption(
+      "polygon = [[0, 0], [400, 0], [400, 300]]\nbuffer_m = 5", "--region", "/work");
+  EXPECT_EQ(polygon.kind, RegionSpec::Kind::Polygon);
+  ASSERT_EQ(polygon.points.size(), 3u);
+  EXPECT_EQ(polygon.points[1], glm::dvec2(400.0, 0.0));
+  EXPECT_EQ(polygon.buffer_m, 5.0);
+  const RegionSpec mask = parseRegionOption("mask = \"block.png\"", "--region", "/work");
+  EXPECT_EQ(mask.mask, std::filesystem::path("/work/block.png"));
+  for (const char* bad : {"", "colour = 3", "polygon = [[0, 0], [1, 1]]", "polygon = ["}) {
+    try {
+      parseRegionOption(bad, "--region", "/work");
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().file, "--region") << bad;
+    }
+  }
+}
+
 TEST(PlanSpec, ThinningYearsRepeatUntilTheLastYear) {
   Thinning t;
   t.fromYear = 20;

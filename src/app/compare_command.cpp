@@ -68,8 +68,7 @@ void writeDiameterDistributions(const std::vector<RunFolder>& folders,
   for (const RunFolder& folder : folders)
     tables.push_back(standTablesOfRun(folder, years, kCompareClassWidth_cm, region));
   std::string csv = fmt::format("run,{}\n", kStandTableCsvHeader);
-  std::string measures =
-      "run,year,species,stems_per_ha,basal_area_m2_per_ha,qmd_cm,sdi,volume_m3_per_ha\n";
+  std::string measures = fmt::format("run,{}\n", kStandMeasuresCsvHeader);
   for (std::size_t k = 0; k < years.size(); ++k) {
     LineChart chart{fmt::format("Diameter distribution in year {}{} (classes of {:g} cm)", years[k],
                                 region ? " within the region" : "", kCompareClassWidth_cm),
@@ -80,12 +79,7 @@ void writeDiameterDistributions(const std::vector<RunFolder>& folders,
     for (std::size_t i = 0; i < folders.size(); ++i) {
       const StandTable& table = tables[i][k];
       csv += standTableCsvLines(table, names[i] + ",");
-      for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        const StandMeasures& m = table.measures[r];
-        measures += fmt::format("{},{},{},{:.2f},{:.4f},{:.2f},{:.1f},{:.3f}\n", names[i],
-                                table.year, table.rows[r], m.stemsPerHa, m.basalArea_m2PerHa,
-                                m.qmd_cm, m.sdi, m.volume_m3PerHa);
-      }
+      measures += standMeasuresCsvLines(table, names[i] + ",");
       ChartSeries& series = chart.series.emplace_back(ChartSeries{names[i], {}});
       const std::size_t stand = table.rows.size() - 1;
       for (std::size_t c = 0; c < table.classCount(); ++c)
@@ -165,10 +159,9 @@ void runCompare(const CompareArgs& args) {
       runs.size(), fmt::join(years, ", "), out.string(), std::size(kCharts), snapshotYears.size(),
       region ? " within the region" : "");
   if (args.noStills || snapshotYears.empty()) return;
-  const std::vector<int>& stillYears = snapshotYears;
   // One still per run and year; runs whose species are the same files share one tree
   // library, built once (it is the slow and large part).
-  std::vector<std::vector<Image>> stills(stillYears.size());
+  std::vector<std::vector<Image>> stills(snapshotYears.size());
   std::unique_ptr<TreeLibrary> library;
   std::uint64_t librarySpecies = 0;
   for (std::size_t i = 0; i < folders.size(); ++i) {
@@ -186,16 +179,17 @@ void runCompare(const CompareArgs& args) {
     const Camera camera = cameraFrom(args.view, source.terrain);
     std::optional<Field> overlay;
     if (!args.view.overlay.empty()) overlay = source.overlay(args.view.overlay);
-    for (std::size_t k = 0; k < stillYears.size(); ++k)
+    for (std::size_t k = 0; k < snapshotYears.size(); ++k)
       stills[k].push_back(
-          drawStill(source, source.forestOf(stillYears[k], 0), camera, args.view, overlay));
+          drawStill(source, source.forestOf(snapshotYears[k], 0), camera, args.view, overlay));
     library = std::move(source.library);
   }
-  for (std::size_t k = 0; k < stillYears.size(); ++k) {
+  for (std::size_t k = 0; k < snapshotYears.size(); ++k) {
     std::vector<std::string> captions;
     for (const std::string& name : names)
-      captions.push_back(fmt::format("{}, year {}", name, stillYears[k]));
-    const std::filesystem::path file = out / fmt::format("stills_year_{:04d}.png", stillYears[k]);
+      captions.push_back(fmt::format("{}, year {}", name, snapshotYears[k]));
+    const std::filesystem::path file =
+        out / fmt::format("stills_year_{:04d}.png", snapshotYears[k]);
     writeRgb8Image(file, sideBySide(stills[k], captions));
     std::cout << fmt::format("compare: {}\n", file.string()) << std::flush;
   }

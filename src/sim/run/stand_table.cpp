@@ -178,6 +178,17 @@ std::string standTableCsvLines(const StandTable& table, std::string_view prefix)
   return text;
 }
 
+std::string standMeasuresCsvLines(const StandTable& table, std::string_view prefix) {
+  std::string text;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const StandMeasures& m = table.measures[r];
+    text += fmt::format("{}{},{},{:.2f},{:.4f},{:.2f},{:.1f},{:.3f}\n", prefix, table.year,
+                        table.rows[r], m.stemsPerHa, m.basalArea_m2PerHa, m.qmd_cm, m.sdi,
+                        m.volume_m3PerHa);
+  }
+  return text;
+}
+
 std::string standTableText(const StandTable& table) {
   const std::size_t species = table.rows.size() - 1;
   std::string text = fmt::format(

@@ -68,6 +68,11 @@ inline constexpr const char* kStandTableCsvHeader =
 std::string standTableCsv(const std::vector<StandTable>& tables);
 // The same lines without the header, each after `prefix` (compare's run name and a comma).
 std::string standTableCsvLines(const StandTable& table, std::string_view prefix = "");
+// Each row's measures (StandTable::measures) as a CSV line, after `prefix`, under this
+// header (compare's stand_measures.csv, with the run's name first).
+inline constexpr const char* kStandMeasuresCsvHeader =
+    "year,species,stems_per_ha,basal_area_m2_per_ha,qmd_cm,sdi,volume_m3_per_ha";
+std::string standMeasuresCsvLines(const StandTable& table, std::string_view prefix = "");
 // For a terminal: a line per class, each species' stems and the stand's measures, and the
 // totals last.
 std::string standTableText(const StandTable& table);

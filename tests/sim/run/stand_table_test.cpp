@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
@@ -135,6 +136,16 @@ TEST(StandTable, WritesALinePerRowAndClassAndATableForReading) {
   EXPECT_NE(text.find("year 150, 2.00 ha"), std::string::npos) << text;
   EXPECT_NE(text.find("30-40"), std::string::npos) << text;
   EXPECT_NE(text.find("total"), std::string::npos) << text;
+  // The measures: a line per row, the stand's last (two trees on 2 ha: 1 stem a hectare).
+  EXPECT_EQ(standMeasuresCsvLines(table, "r,"),
+            fmt::format("r,150,beech,0.50,{:.4f},12.00,{:.1f},{:.3f}\n"
+                        "r,150,pine,0.50,{:.4f},31.00,{:.1f},{:.3f}\n"
+                        "r,150,all,1.00,{:.4f},{:.2f},{:.1f},{:.3f}\n",
+                        table.measures[0].basalArea_m2PerHa, table.measures[0].sdi,
+                        table.measures[0].volume_m3PerHa, table.measures[1].basalArea_m2PerHa,
+                        table.measures[1].sdi, table.measures[1].volume_m3PerHa,
+                        table.measures[2].basalArea_m2PerHa, table.measures[2].qmd_cm,
+                        table.measures[2].sdi, table.measures[2].volume_m3PerHa));
 }
 
 // The planted plot (test_scenarios.hpp) grown once for the tests of a run here.

@@ -15,7 +15,7 @@ int SceneSource::defaultYear() const {
 
 Forest SceneSource::forestOf(int year, std::size_t demoTrees) const {
   if (!library) return {};
-  if (run) return forestFromSnapshot(readSnapshot(*run, year), *library, run->dir.string());
+  if (run) return forestFromRun(*run, year, *library);
   return demoForest(terrain, *library, demoTrees, scenario.seed);
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <map>
 #include <memory>
 
 #include <fmt/format.h>
@@ -13,6 +12,7 @@
 #include "app/view_panel.hpp"
 #include "render/gl/window.hpp"
 #include "render/scene/camera_controller.hpp"
+#include "render/scene/forest_cache.hpp"
 #include "render/scene/lod_budget.hpp"
 #include "sim/image_io.hpp"
 
@@ -59,23 +59,6 @@ int shadowMapSizeAt(double resolution) {
   return std::max(128, static_cast<int>(std::lround(full * resolution / 128.0)) * 128);
 }
 
-// The snapshots of a run, each read once when first shown.
-class SnapshotForests {
- public:
-  SnapshotForests(const SceneSource& source, std::size_t demoTrees)
-      : source_(source), demoTrees_(demoTrees) {}
-  const Forest& of(int year) {
-    auto it = loaded_.find(year);
-    if (it == loaded_.end()) it = loaded_.emplace(year, source_.forestOf(year, demoTrees_)).first;
-    return it->second;
-  }
-
- private:
-  const SceneSource& source_;
-  std::size_t demoTrees_;
-  std::map<int, Forest> loaded_;
-};
-
 void runView(const ViewArgs& args) {
   SceneSource source = openSceneSource(args.source);
   if (args.year) source.requireSnapshot(*args.year);
@@ -109,15 +92,24 @@ void runView(const ViewArgs& args) {
   std::optional<LodBudget> budget;
   if (args.targetFps > 0.0 && args.view.forceLevel < 0)
     budget.emplace(options.lod.switchPixels, 1000.0 / args.targetFps);
-  SnapshotForests snapshots(source, args.demoTrees);
-  auto shownForest = [&] {
-    return source.library ? visibleTrees(snapshots.of(state.years[state.yearIndex]),
-                                         *source.library, state.shown)
-                          : Forest{};
+  ForestCache snapshots([&](int year) { return source.forestOf(year, args.demoTrees); },
+                        defaultForestCacheBudget());
+  // The shown year's forest itself, or a copy without the species switched off.
+  const Forest none;
+  Forest someSpecies;
+  const Forest* forest = &none;
+  auto showForest = [&] {
+    someSpecies = {};
+    forest = &none;
+    if (!source.library) return;
+    forest = &snapshots.of(state.years[state.yearIndex]);
+    if (std::ranges::find(state.shown, 0) == state.shown.end()) return;
+    someSpecies = visibleTrees(*forest, *source.library, state.shown);
+    forest = &someSpecies;
   };
-  Forest forest = shownForest();
-  renderer->setForestFloor(forest);
-  CameraController controller(cameraFrom(args.view, source.terrain, &forest, source.library.get()),
+  showForest();
+  renderer->setForestFloor(*forest);
+  CameraController controller(cameraFrom(args.view, source.terrain, forest, source.library.get()),
                               args.view.view == "ground");
   RenderTarget target;
   FrameStats stats;
@@ -132,7 +124,7 @@ void runView(const ViewArgs& args) {
           RenderTarget::create(size.width, size.height, 0, args.view.antialias);
       RenderOptions fullOptions = options;
       fullOptions.shadowMapSize = RenderOptions{}.shadowMapSize;
-      renderer->render(&forest, controller.camera(), fullOptions, full);
+      renderer->render(forest, controller.camera(), fullOptions, full);
       saveScreenshot(full, args.screenshot);
     }
     tookScreenshot = true;
@@ -173,8 +165,8 @@ void runView(const ViewArgs& args) {
         renderer->terrain().clearOverlay();
     }
     if (yearStepped || changed.year || changed.species) {
-      forest = shownForest();
-      renderer->setForestFloor(forest);
+      showForest();
+      renderer->setForestFloor(*forest);
     }
 
     const FrameSize size = window.framebufferSize();
@@ -182,7 +174,7 @@ void runView(const ViewArgs& args) {
       const FrameSize drawn = atResolution(size, budget ? budget->resolution() : 1.0);
       if (target.width != drawn.width || target.height != drawn.height)
         target = RenderTarget::create(drawn.width, drawn.height, 0, args.view.antialias);
-      stats = renderer->render(&forest, controller.camera(), options, target);
+      stats = renderer->render(forest, controller.camera(), options, target);
     }
     if (screenshot) saveFullScreenshot(size);
     window.present(target);

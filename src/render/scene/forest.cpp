@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include <tbb/parallel_for.h>
 #include <glm/common.hpp>
@@ -25,6 +26,12 @@ void Forest::reserve(std::size_t n) {
   presence.reserve(n);
   blendType.reserve(n);
   blendWeight.reserve(n);
+}
+
+std::size_t Forest::memoryBytes() const {
+  auto bytes = [](const auto& array) { return array.capacity() * sizeof(array[0]); };
+  return bytes(type) + bytes(position) + bytes(yaw) + bytes(scaleXZ) + bytes(scaleY) + bytes(tint) +
+         bytes(phase) + bytes(lean) + bytes(presence) + bytes(blendType) + bytes(blendWeight);
 }
 
 void Forest::append(const Forest& from, std::size_t i) {
@@ -91,14 +98,62 @@ void Forest::place(std::size_t i, const TreeLibrary& library, int typeIndex, glm
   // lean, presence and the blend keep resize's values: upright, whole, one type.
 }
 
+namespace {
+
+// Each type of `types` and `blends` (a blend's -1 none) once, in ascending order: a mark a
+// type, as a landscape's forest holds a hundred million trees of a few hundred types.
+std::vector<int> typesIn(std::span<const std::int32_t> types,
+                         std::span<const std::int32_t> blends) {
+  std::int32_t most = -1;
+  for (const std::int32_t t : types) most = std::max(most, t);
+  for (const std::int32_t t : blends) most = std::max(most, t);
+  std::vector<char> drawn(static_cast<std::size_t>(most + 1), 0);
+  for (const std::int32_t t : types) drawn[static_cast<std::size_t>(t)] = 1;
+  for (const std::int32_t t : blends)
+    if (t >= 0) drawn[static_cast<std::size_t>(t)] = 1;
+  std::vector<int> listed;
+  for (std::size_t t = 0; t < drawn.size(); ++t)
+    if (drawn[t]) listed.push_back(static_cast<int>(t));
+  return listed;
+}
+
+int librarySpeciesNamed(const std::string& name, const TreeLibrary& library,
+                        const std::string& where) {
+  const auto& all = library.species();
+  auto found =
+      std::find_if(all.begin(), all.end(), [&](const Species& s) { return s.name == name; });
+  if (found == all.end())
+    throw InputError({where, 0, "species"},
+                     "the trees name species '" + name + "', which the scenario does not have");
+  return static_cast<int>(found - all.begin());
+}
+
+// Snapshot rows drawn into the forest's places from `start` on, each tree on its own, side
+// by side: its type and placement, then, with the types built, its lean (which reads the
+// built types' responses).
+void placeRows(Forest& forest, std::size_t start, std::span<const TreeRow> rows,
+               const std::vector<int>& librarySpecies, const TreeLibrary& library) {
+  tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t i) {
+    const TreeRow& tree = rows[i];
+    const int species = librarySpecies[tree.species];
+    const int type =
+        library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species),
+                        siteShapingOf(tree, library).clearBole);
+    forest.place(start + i, library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m),
+                 tree.height_m, tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
+  });
+  library.build(typesIn(std::span(forest.type).subspan(start, rows.size()),
+                        std::span(forest.blendType).subspan(start, rows.size())));
+  tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t i) {
+    forest.lean[start + i] =
+        drawnLean(library, forest.type[start + i], siteShapingOf(rows[i], library));
+  });
+}
+
+}  // namespace
+
 std::vector<int> typesOf(const Forest& forest) {
-  std::vector<int> types(forest.type.begin(), forest.type.end());
-  for (const std::int32_t blend : forest.blendType)
-    if (blend >= 0) types.push_back(blend);
-  std::ranges::sort(types);
-  const auto repeated = std::ranges::unique(types);
-  types.erase(repeated.begin(), repeated.end());
-  return types;
+  return typesIn(forest.type, forest.blendType);
 }
 
 void buildTypesOf(const Forest& forest, const TreeLibrary& library) {
@@ -108,38 +163,33 @@ void buildTypesOf(const Forest& forest, const TreeLibrary& library) {
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
                                   const std::string& where) {
   std::vector<int> librarySpecies;
-  for (const std::string& name : snapshot.speciesNames) {
-    const auto& all = library.species();
-    auto found =
-        std::find_if(all.begin(), all.end(), [&](const Species& s) { return s.name == name; });
-    if (found == all.end())
-      throw InputError({where, 0, "species"},
-                       "the trees name species '" + name + "', which the scenario does not have");
-    librarySpecies.push_back(static_cast<int>(found - all.begin()));
-  }
+  for (const std::string& name : snapshot.speciesNames)
+    librarySpecies.push_back(librarySpeciesNamed(name, library, where));
   return librarySpecies;
 }
 
 Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
                           const std::string& where) {
-  const std::vector<int> librarySpecies = librarySpeciesOf(snapshot, library, where);
-  // Each tree on its own, side by side (a landscape's snapshot holds millions).
   Forest forest;
   forest.resize(snapshot.trees.size());
-  tbb::parallel_for(std::size_t{0}, snapshot.trees.size(), [&](std::size_t i) {
-    const TreeRow& tree = snapshot.trees[i];
-    const int species = librarySpecies[tree.species];
-    const int type =
-        library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species),
-                        siteShapingOf(tree, library).clearBole);
-    forest.place(i, library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m),
-                 tree.height_m, tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
-  });
-  // The leans read the built types' responses.
-  buildTypesOf(forest, library);
-  tbb::parallel_for(std::size_t{0}, snapshot.trees.size(), [&](std::size_t i) {
-    forest.lean[i] = drawnLean(library, forest.type[i], siteShapingOf(snapshot.trees[i], library));
-  });
+  placeRows(forest, 0, snapshot.trees, librarySpeciesOf(snapshot, library, where), library);
+  return forest;
+}
+
+Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library) {
+  Forest forest;
+  forest.reserve(snapshotRowsAtMost(run, year));  // no array grows past its rows
+  std::vector<int> librarySpecies;
+  readSnapshotInBatches(
+      run, year, {},
+      [&](std::span<const TreeRow> rows, const std::vector<std::string>& speciesNames) {
+        // The batch's rows number the species named so far.
+        for (std::size_t s = librarySpecies.size(); s < speciesNames.size(); ++s)
+          librarySpecies.push_back(librarySpeciesNamed(speciesNames[s], library, run.dir.string()));
+        const std::size_t start = forest.size();
+        forest.resize(start + rows.size());
+        placeRows(forest, start, rows, librarySpecies, library);
+      });
   return forest;
 }
 

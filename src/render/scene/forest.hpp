@@ -35,6 +35,8 @@ struct Forest {
   std::vector<float> blendWeight;
 
   std::size_t size() const { return type.size(); }
+  // The bytes its arrays hold, room reserved included.
+  std::size_t memoryBytes() const;
   void reserve(std::size_t n);
   // Appends tree i of `from`, every array alike (a subset of a forest: species shown).
   void append(const Forest& from, std::size_t i);
@@ -67,6 +69,10 @@ std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrar
 // each tree is drawn by its crown class and leans as its site says.
 Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
                           const std::string& where);
+// The same forest from a run's snapshot of `year`, built a batch of rows at a time as the
+// file is read (readSnapshotInBatches): a landscape's hundred million plants hold their 64
+// bytes each of the forest, never the rows' 88 besides.
+Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library);
 
 // The model's shaping of a snapshot's tree as `library` draws it: its light and wind turned
 // into the tree frame (east, south), and the share of its height below the crown base;

@@ -116,9 +116,9 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
     RenderOptions options = settings.render;
     if (settings.kind == TimelapseKind::Wind) {
       options.wind.time += frame * settings.windRadiansPerSecond / settings.fps;
-      if (frame == 0) {
-        forest =
-            forestFromSnapshot(snapshots.at(static_cast<int>(year)), library, run.dir.string());
+      if (frame == 0) {  // one year's trees, built as the snapshot is read (year 0 bare)
+        if (const int shown = static_cast<int>(year); shown > 0)
+          forest = forestFromRun(run, shown, library);
         clearance.emplace(forest, library);
       }
     } else {

@@ -55,4 +55,9 @@ void readSnapshotInBatches(const RunFolder& run, int year, const TreeFilter& kee
   readTreesInBatches(RunPaths{run.dir}.existingSnapshot(year), keep, each);
 }
 
+std::size_t snapshotRowsAtMost(const RunFolder& run, int year) {
+  requireSnapshotYear(run, year);
+  return treeRowsAtMost(RunPaths{run.dir}.existingSnapshot(year));
+}
+
 }  // namespace eco

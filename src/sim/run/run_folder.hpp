@@ -3,6 +3,7 @@
 // exporters read runs only here.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -34,4 +35,6 @@ TreeSnapshot readSnapshot(const RunFolder& run, int year, const TreeFilter& keep
 // The same a batch of rows at a time (readTreesInBatches), for writing it out.
 void readSnapshotInBatches(const RunFolder& run, int year, const TreeFilter& keep,
                            const TreeBatch& each);
+// Room for a snapshot read a batch at a time: at least its rows (treeRowsAtMost).
+std::size_t snapshotRowsAtMost(const RunFolder& run, int year);
 }  // namespace eco

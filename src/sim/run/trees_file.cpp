@@ -562,4 +562,18 @@ void readTreesInBatches(const std::filesystem::path& file, const TreeFilter& kee
   readByExtension(file, {keep, &each});
 }
 
+std::size_t treeRowsAtMost(const std::filesystem::path& file) {
+  const MappedFile mapping = mapped(file, MappedFile::Reading::InParts);
+  const std::string_view bytes = mapping.bytes();
+  if (snapshotFormatOf(file) == SnapshotFormat::Binary) return bytes.size() / kRecordBytes;
+  constexpr std::size_t kPartBytes = std::size_t{64} << 20;
+  std::size_t lines = 0;  // the header's among them: each part's last may be cut in two
+  for (std::size_t at = 0; at < bytes.size(); at += kPartBytes) {
+    const std::string_view part = bytes.substr(at, kPartBytes);
+    lines += lineCountOf(part);
+    mapping.release(part);
+  }
+  return lines;
+}
+
 }  // namespace eco

@@ -98,4 +98,9 @@ using TreeBatch =
 void readTreesInBatches(const std::filesystem::path& file, const TreeFilter& keep,
                         const TreeBatch& each);
 
+// At least as many as the rows the file holds, never more than its size allows: room for a
+// reader that keeps every row a batch at a time (a binary file's length over a record's,
+// a CSV file's lines, counted a part of the file at a time). Nothing is checked here.
+std::size_t treeRowsAtMost(const std::filesystem::path& file);
+
 }  // namespace eco

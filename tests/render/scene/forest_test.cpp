@@ -1,5 +1,8 @@
 #include "render/scene/forest.hpp"
 
+#include <cmath>
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
@@ -142,6 +145,88 @@ TEST(Forest, AnUnknownSpeciesIsAnInputError) {
   snapshot.speciesNames = {"baobab"};
   snapshot.trees.push_back({.species = 0, .height_m = 3.0f});
   EXPECT_THROW(forestFromSnapshot(snapshot, test::smallLibrary(), "run"), InputError);
+}
+
+// Every array of two forests alike, tree by tree.
+void expectSameForest(const Forest& a, const Forest& b) {
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(a.type, b.type);
+  EXPECT_EQ(a.position, b.position);
+  EXPECT_EQ(a.yaw, b.yaw);
+  EXPECT_EQ(a.scaleXZ, b.scaleXZ);
+  EXPECT_EQ(a.scaleY, b.scaleY);
+  EXPECT_EQ(a.tint, b.tint);
+  EXPECT_EQ(a.phase, b.phase);
+  EXPECT_EQ(a.lean, b.lean);
+  EXPECT_EQ(a.presence, b.presence);
+  EXPECT_EQ(a.blendType, b.blendType);
+  EXPECT_EQ(a.blendWeight, b.blendWeight);
+}
+
+// A run folder holding `snapshot` as its year 1, in `format`.
+RunFolder runHolding(const std::string& name, const TreeSnapshot& snapshot, SnapshotFormat format) {
+  RunFolder run;
+  run.dir = test::freshDirectory(name);
+  std::filesystem::create_directories(run.dir / "trees");
+  writeTrees(RunPaths{run.dir}.snapshot(1, format), snapshot, format);
+  run.snapshotYears = {1};
+  return run;
+}
+
+TEST(Forest, ARunsSnapshotBuiltBatchByBatchIsTheForestOfItsRowsRead) {
+  // More rows than a batch of the binary reader (2^20), of every height, light and crown
+  // base, so that the batches meet and each draws its own types and leans.
+  const TreeLibrary& library = test::shapedLibrary();
+  TreeSnapshot snapshot;
+  snapshot.speciesNames = {"beech"};
+  const std::size_t n = (std::size_t{1} << 20) + 5000;
+  snapshot.trees.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float height = 0.2f + static_cast<float>(i % 301) * 0.1f;
+    const double angle = 0.001 * static_cast<double>(i);
+    snapshot.trees[i] = {
+        .id = i + 1,
+        .east_m = static_cast<double>(i % 1000),
+        .north_m = static_cast<double>(i / 1000),
+        .ground_m = 300,
+        .age_years = 10,
+        .height_m = height,
+        .crownRadius_m = 0.2f * height,
+        .crownBase_m = static_cast<float>(i % 7) * 0.1f * height,
+        .vigor = static_cast<float>(i % 11) / 10.0f,
+        .variantSeed = static_cast<std::uint32_t>(i * 2654435761u),
+        .site = {.light = {0.5 * std::cos(angle), 0.5 * std::sin(angle)}, .wind = {0.2, 0.0}}};
+  }
+  const RunFolder run = runHolding("forest_from_run", snapshot, SnapshotFormat::Binary);
+  EXPECT_GE(snapshotRowsAtMost(run, 1), n);
+  const Forest batched = forestFromRun(run, 1, library);
+  expectSameForest(batched, forestFromSnapshot(readSnapshot(run, 1), library, "run"));
+  EXPECT_EQ(batched.type.capacity(), snapshotRowsAtMost(run, 1));  // reserved once
+  EXPECT_GT(typesOf(batched).size(), 1u);
+}
+
+TEST(Forest, ARunsCsvSnapshotNamesItsSpeciesAsItsRowsComeAndAnUnknownOneIsAnInputError) {
+  const TreeLibrary& library = test::smallLibrary();
+  TreeSnapshot snapshot;
+  snapshot.speciesNames = {"maple", "beech"};
+  for (std::uint64_t id = 1; id <= 40; ++id)
+    snapshot.trees.push_back({.id = id,
+                              .species = id > 20 ? 1 : 0,
+                              .east_m = 3.0 * static_cast<double>(id),
+                              .height_m = 0.5f * static_cast<float>(id),
+                              .vigor = 0.7f,
+                              .variantSeed = static_cast<std::uint32_t>(id)});
+  const RunFolder run = runHolding("forest_from_run_csv", snapshot, SnapshotFormat::Csv);
+  expectSameForest(forestFromRun(run, 1, library),
+                   forestFromSnapshot(readSnapshot(run, 1), library, "run"));
+  snapshot.speciesNames[1] = "baobab";
+  const RunFolder foreign = runHolding("forest_from_run_foreign", snapshot, SnapshotFormat::Csv);
+  try {
+    forestFromRun(foreign, 1, library);
+    ADD_FAILURE() << "a species the library lacks was drawn";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("baobab"), std::string::npos);
+  }
 }
 
 TEST(Forest, TheDemoPlantingIsDeterministicAndOnTheGround) {

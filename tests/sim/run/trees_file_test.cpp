@@ -235,6 +235,9 @@ TEST_F(OneHectare, ALargeSnapshotIsWrittenAndReadInBatchesInOrder) {
     }
     const TreeSnapshot snapshot = readTrees(file);
     ASSERT_EQ(snapshot.trees.size(), n);
+    // Room for the rows: no fewer, and at most the header and a line cut between parts more.
+    EXPECT_GE(treeRowsAtMost(file), n);
+    EXPECT_LE(treeRowsAtMost(file), n + 2);
     for (std::size_t i = 0; i < n; ++i) {
       ASSERT_EQ(snapshot.trees[i].id, i + 1);
       ASSERT_EQ(snapshot.trees[i].age_years, static_cast<int>(i % 97));

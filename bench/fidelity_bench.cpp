@@ -19,7 +19,8 @@
 //                       [REFERENCE_MIN_PIXELS = 8] [OUT_DIR = fidelity] [PLANTED_TREES = 10000]
 //                       [VIEWS = low,ground,300m]
 // (a scenario: the planted scene only, on its terrain)
-//        fidelity_bench --compare A.png B.png   (the same measures of two saved pictures)
+//        fidelity_bench --compare A.png B.png   (the same measures of two saved pictures; A
+//        may be a finer picture of B's view, k times its size, averaged down to it first)
 // --reuse-references (anywhere): read the references already saved in OUT_DIR instead of
 // drawing them again (they take minutes; the qualities seconds), e.g. while tuning a level.
 // --antialias N|auto (anywhere): every picture, references included, with N samples a
@@ -215,7 +216,14 @@ int main(int argc, char** argv) {
   }
   argc = static_cast<int>(args.size());
   if (argc == 4 && args[1] == "--compare") {  // two saved pictures
-    const eco::Image a = eco::readColorImage(args[2]), b = eco::readColorImage(args[3]);
+    eco::Image a = eco::readColorImage(args[2]);
+    const eco::Image b = eco::readColorImage(args[3]);
+    // A finer picture of the same view (A k times B's size) is averaged down to B's first.
+    if (const int k = a.width / std::max(b.width, 1);
+        k > 1 && a.width == k * b.width && a.height == k * b.height) {
+      a = eco::downsampled(a, k);
+      std::printf("A averaged down %dx to B's size\n", k);
+    }
     const eco::Image aSmall = eco::downsampled(a, 4), bSmall = eco::downsampled(b, 4);
     std::printf("mean diff %.2f (4x: %.2f)   SSIM %.3f (4x: %.3f)\n",
                 eco::meanAbsoluteDifference(a, b), eco::meanAbsoluteDifference(aSmall, bSmall),

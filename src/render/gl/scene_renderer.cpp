@@ -162,7 +162,12 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   glDepthMask(GL_TRUE);
   glEnable(GL_DEPTH_TEST);
   const Frustum frustum = Frustum::fromMatrix(viewProj);
-  stats.terrainTriangles = terrain_.draw(frustum, false);
+  // The trees under LodSettings::minPixels are not drawn (unless a level is forced on every
+  // tree): the ground shows their crowns.
+  const float unresolvedPerMetre =
+      options.lod.forcedLevel >= 0 ? 0.0f
+                                   : options.lod.minPixels / camera.pixelsPerRadian(target.height);
+  stats.terrainTriangles = terrain_.draw(frustum, false, unresolvedPerMetre);
   endPass(RenderPass::SkyAndTerrain);
   stats.groundTufts = groundCover_.draw(camera.position, frustum, options.groundCover);
   endPass(RenderPass::GroundCover);
@@ -178,8 +183,10 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
 
 void SceneRenderer::setForestFloor(const Forest& forest) {
   if (!forest_) return;
-  Field cover = canopyCover(forest, forest_->library(), terrainData_.grid);
+  const CanopyFloor floor = canopyFloor(forest, forest_->library(), terrainData_.grid);
+  Field cover = floor.cover();
   terrain_.setCanopyCover(cover);
+  terrain_.setCanopyFloor(floor);
   groundCover_.cover().setCanopyCover(std::move(cover));
 }
 

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "render/scene/camera.hpp"
 #include "sim/conditions/condition_maps.hpp"
@@ -119,6 +120,28 @@ void TerrainRenderer::setCanopyCover(const Field& cover) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
 }
 
+void TerrainRenderer::setCanopyFloor(const CanopyFloor& floor) {
+  static_assert(kCanopyHeightTops_m.size() == 8, "two RGBA textures of running sums");
+  // Half floats, filtered between cell centres: crown areas in cell areas and linear colours.
+  const std::size_t cells = floor.crownsBelow.size();
+  std::vector<glm::vec4> low(cells), high(cells), colour(cells);
+  for (std::size_t c = 0; c < cells; ++c) {
+    const auto& below = floor.crownsBelow[c];
+    low[c] = glm::vec4(below[0], below[1], below[2], below[3]);
+    high[c] = glm::vec4(below[4], below[5], below[6], below[7]);
+    colour[c] = glm::vec4(floor.leafColor[c], 1.0f);
+  }
+  auto upload = [&](const std::vector<glm::vec4>& texels) {
+    GlName texture = makeTextureStorage(GL_RGBA16F, grid_.width, grid_.height);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, grid_.width, grid_.height, GL_RGBA, GL_FLOAT,
+                        texels.data());
+    return texture;
+  };
+  crownsBelowLow_ = upload(low);
+  crownsBelowHigh_ = upload(high);
+  crownColor_ = upload(colour);
+}
+
 void TerrainRenderer::setMoisture(const Field& moisture) {
   // Half floats (F to a hundredth), filtered between cell centres; an outside cell (NaN) is fresh.
   std::vector<float> values(moisture.size());
@@ -129,7 +152,8 @@ void TerrainRenderer::setMoisture(const Field& moisture) {
                       values.data());
 }
 
-std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass) const {
+std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass,
+                                  float unresolvedPerMetre) const {
   counts_.clear();
   offsets_.clear();
   std::size_t triangles = 0;
@@ -148,6 +172,13 @@ std::size_t TerrainRenderer::draw(const Frustum& frustum, bool shadowPass) const
   if (canopyCover_) glBindTextureUnit(6, canopyCover_.id());
   program.set("uHasMoisture", moisture_ ? 1 : 0);
   if (moisture_) glBindTextureUnit(8, moisture_.id());
+  const bool unresolved = crownColor_ && unresolvedPerMetre > 0.0f;
+  program.set("uUnresolvedPerMetre", unresolved ? unresolvedPerMetre : 0.0f);
+  if (unresolved) {
+    glBindTextureUnit(10, crownsBelowLow_.id());
+    glBindTextureUnit(11, crownsBelowHigh_.id());
+    glBindTextureUnit(12, crownColor_.id());
+  }
   glBindVertexArray(vertexArray_.id());
   glMultiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(),
                       static_cast<GLsizei>(counts_.size()));

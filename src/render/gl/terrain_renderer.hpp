@@ -11,6 +11,7 @@
 #include "render/gl/gl_objects.hpp"
 #include "render/gl/shader.hpp"
 #include "render/scene/culling.hpp"
+#include "render/scene/forest_floor.hpp"
 #include "sim/grid.hpp"
 #include "sim/terrain.hpp"
 
@@ -27,13 +28,19 @@ class TerrainRenderer {
   // The share of each cell under crowns (forest_floor.hpp): leaf litter and moss there,
   // grass in the open. Without it the ground is open everywhere.
   void setCanopyCover(const Field& cover);
+  // The crowns of each cell by the trees' heights and their colour (forest_floor.hpp): the
+  // ground shows the crowns of the trees too small to draw at its distance (draw()'s
+  // `unresolvedPerMetre`). Without it the ground shows none.
+  void setCanopyFloor(const CanopyFloor& floor);
   // The ground's moisture (Ellenberg F, sim's moistureOf): dry meadows brown toward straw,
   // wet ones are lusher. Without it the ground is fresh (F 5) everywhere.
   void setMoisture(const Field& moisture);
   bool hasOverlay() const { return static_cast<bool>(overlay_); }
 
-  // Draws the chunks in the frustum; returns the triangles drawn.
-  std::size_t draw(const Frustum& frustum, bool shadowPass) const;
+  // Draws the chunks in the frustum; returns the triangles drawn. A tree shorter than
+  // `unresolvedPerMetre` times its distance is not drawn (smaller than LodSettings's
+  // minPixels): the ground there shows its crown (setCanopyFloor). 0: none.
+  std::size_t draw(const Frustum& frustum, bool shadowPass, float unresolvedPerMetre = 0.0f) const;
   std::size_t triangleCount() const { return indexCount_ / 3; }
 
   static constexpr int kChunkCells = 32;  // grid squares per chunk side
@@ -43,6 +50,8 @@ class TerrainRenderer {
   float lowest_m_ = 0.0f, highest_m_ = 0.0f;
   Program program_, shadowProgram_;
   GlName vertices_, indices_, vertexArray_, overlay_, canopyCover_, moisture_;
+  // kCanopyHeightTops_m's first four and last four running sums of crowns, and their colour.
+  GlName crownsBelowLow_, crownsBelowHigh_, crownColor_;
   GLsizei indexCount_ = 0;
   struct Chunk {
     std::size_t firstIndex = 0;

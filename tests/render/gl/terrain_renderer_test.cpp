@@ -1,6 +1,9 @@
 #include "render/gl/terrain_renderer.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -103,6 +106,52 @@ TEST(TerrainRenderer, GroundUnderCrownsIsLeafLitterAndOpenGroundGrass) {
   for (int y = 8; y < 56; ++y)
     for (int x = 4; x < 24; ++x) variance += std::pow(image.get(x, y).g - open.g, 2.0);
   EXPECT_GT(std::sqrt(variance / (20 * 48)), 0.01);
+}
+
+TEST(TerrainRenderer, TheCrownsOfTreesTooSmallToDrawCoverTheGroundInTheirColour) {
+  test::useHeadlessGl();
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  SceneRenderer renderer(terrain, 46.0, nullptr);
+  const Image plain = renderFromAbove(renderer, 64);
+  // Blue crowns, three cell areas of them in every cell: of trees under 4 m in the east half,
+  // of trees of 16-32 m in the west.
+  CanopyFloor floor;
+  floor.crownsBelow.resize(terrain.grid.cellCount());
+  floor.leafColor.assign(terrain.grid.cellCount(), glm::vec3(0.0f, 0.0f, 0.2f));
+  for (int y = 0; y < 33; ++y)
+    for (int x = 0; x < 33; ++x) {
+      auto& below = floor.crownsBelow[terrain.grid.index(x, y)];
+      for (std::size_t b = x >= 17 ? 2 : 5; b < below.size(); ++b) below[b] = 3.0f;
+    }
+  renderer.terrain().setCanopyFloor(floor);
+  // From 800 m up, a tree is a pixel of this 64-pixel frame at 6.7 m: the short trees are
+  // not drawn and their crowns cover the east half (95 % of it); the tall ones would be
+  // drawn, so the west half is the ground as it was, to the bit.
+  const Image far = renderFromAbove(renderer, 64);
+  // The ground spans pixels 8-56 of the frame (320 m of 429).
+  for (int y = 12; y < 52; ++y) {
+    for (int x = 12; x < 28; ++x) ASSERT_EQ(far.get(x, y), plain.get(x, y));
+    for (int x = 36; x < 52; ++x) {
+      const glm::vec4 c = far.get(x, y);
+      ASSERT_GT(c.b, 2.0f * std::max(c.r, c.g));
+    }
+  }
+  // From 150 m up a pixel spans 1.3 m: the short trees are drawn, the ground shows none.
+  Camera camera;
+  camera.position = worldFromMap(160, 160, 250);
+  camera.pitch_deg = -90.0f;
+  camera.fovY_deg = 30.0f;
+  RenderOptions options;
+  options.sun = {172.0, 12.0};
+  options.fogDensity = 0.0f;
+  const RenderTarget target = RenderTarget::create(64, 64);
+  renderer.render(nullptr, camera, options, target);
+  const Image nearWith = readPixels(64, 64);
+  renderer.terrain().setCanopyFloor(
+      CanopyFloor{std::vector<std::array<float, 8>>(terrain.grid.cellCount()),
+                  std::vector<glm::vec3>(terrain.grid.cellCount())});
+  renderer.render(nullptr, camera, options, target);
+  EXPECT_EQ(test::compareImages(nearWith, readPixels(64, 64)).max, 0);
 }
 
 TEST(TerrainRenderer, DryMeadowsBrownTowardStrawAndWetOnesAreDarkerGreen) {

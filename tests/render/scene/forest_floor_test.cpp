@@ -69,5 +69,46 @@ TEST(CanopyCover, AWideCrownIsSpreadOverTheCellsItCoversAndDenserStandsCoverMore
   for (float c : denser) EXPECT_LE(c, 1.0f);
 }
 
+TEST(CanopyFloor, ACellKeepsItsCrownsByTheTreesHeightsAndTheirMeanLeafColour) {
+  const TreeLibrary& library = test::smallLibrary();  // beech, maple
+  const Terrain terrain = test::flatTerrain(9, 10.0);
+  Forest forest;
+  // A 3 m beech and a 20 m maple by the centre of the cell at (40, 40) m, crowns within it;
+  // the maple pale (its tint).
+  const int beech = library.typeIndex(0, 0, 1), maple = library.typeIndex(1, 0, 1);
+  forest.add(library, beech, glm::vec3(worldFromMap(41.0, 39.0, 100.0)), 3.0f, 1.0f, 1.0f, 1);
+  forest.add(library, maple, glm::vec3(worldFromMap(39.0, 41.0, 100.0)), 20.0f, 2.0f, 1.0f, 2);
+  forest.tint[1] = glm::vec3(1.0f, 1.0f, 0.5f);
+  const CanopyFloor floor = canopyFloor(forest, library, terrain.grid);
+  auto crownOf = [&](std::size_t i) {
+    const float radius = library.type(forest.type[i]).crownRadius_m * forest.scaleXZ[i];
+    return std::numbers::pi * radius * radius / 100.0;  // in cell areas
+  };
+  const std::size_t cell = terrain.grid.index(4, terrain.grid.height - 1 - 4);
+  const auto& below = floor.crownsBelow[cell];
+  // Tops 1, 2, 4, 8, 16, 32, 64, 128 m: the beech from 4 m on, the maple from 32.
+  for (std::size_t b = 0; b < 2; ++b) EXPECT_EQ(below[b], 0.0f);
+  for (std::size_t b = 2; b < 5; ++b) EXPECT_NEAR(below[b], crownOf(0), 1e-6);
+  for (std::size_t b = 5; b < 8; ++b) EXPECT_NEAR(below[b], crownOf(0) + crownOf(1), 1e-6);
+  EXPECT_NEAR(floor.cover()[cell], 1.0 - std::exp(-(crownOf(0) + crownOf(1))), 1e-6);
+  // The colour: the species' leaf colours made linear, times each tree's tint, weighted by
+  // crown area.
+  auto linear = [](glm::vec3 c) {
+    auto one = [](float v) {
+      return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+    };
+    return glm::vec3(one(c.r), one(c.g), one(c.b));
+  };
+  const glm::vec3 beechLeaves = linear(library.species()[0].appearance.leafColor) * forest.tint[0];
+  const glm::vec3 mapleLeaves =
+      linear(library.species()[1].appearance.leafColor) * glm::vec3(1.0f, 1.0f, 0.5f);
+  const auto w = static_cast<float>(crownOf(0) / (crownOf(0) + crownOf(1)));
+  const glm::vec3 expected = w * beechLeaves + (1.0f - w) * mapleLeaves;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(floor.leafColor[cell][c], expected[c], 1e-5f);
+  // A cell without crowns is black and bare.
+  EXPECT_EQ(floor.leafColor[0], glm::vec3(0.0f));
+  EXPECT_EQ(floor.crownsBelow[0].back(), 0.0f);
+}
+
 }  // namespace
 }  // namespace eco

@@ -15,9 +15,9 @@
 namespace eco {
 namespace {
 
-Image renderFromAbove(SceneRenderer& renderer, int size) {
+Image renderFromAbove(SceneRenderer& renderer, int size, double altitude_m = 900.0) {
   Camera camera;
-  camera.position = worldFromMap(160, 160, 900);
+  camera.position = worldFromMap(160, 160, altitude_m);
   camera.pitch_deg = -90.0f;
   camera.fovY_deg = 30.0f;
   RenderOptions options;
@@ -137,21 +137,11 @@ TEST(TerrainRenderer, TheCrownsOfTreesTooSmallToDrawCoverTheGroundInTheirColour)
     }
   }
   // From 150 m up a pixel spans 1.3 m: the short trees are drawn, the ground shows none.
-  Camera camera;
-  camera.position = worldFromMap(160, 160, 250);
-  camera.pitch_deg = -90.0f;
-  camera.fovY_deg = 30.0f;
-  RenderOptions options;
-  options.sun = {172.0, 12.0};
-  options.fogDensity = 0.0f;
-  const RenderTarget target = RenderTarget::create(64, 64);
-  renderer.render(nullptr, camera, options, target);
-  const Image nearWith = readPixels(64, 64);
+  const Image nearWith = renderFromAbove(renderer, 64, 250.0);
   renderer.terrain().setCanopyFloor(
       CanopyFloor{std::vector<std::array<float, 8>>(terrain.grid.cellCount()),
                   std::vector<glm::vec3>(terrain.grid.cellCount())});
-  renderer.render(nullptr, camera, options, target);
-  EXPECT_EQ(test::compareImages(nearWith, readPixels(64, 64)).max, 0);
+  EXPECT_EQ(test::compareImages(nearWith, renderFromAbove(renderer, 64, 250.0)).max, 0);
 }
 
 TEST(TerrainRenderer, DryMeadowsBrownTowardStrawAndWetOnesAreDarkerGreen) {

@@ -141,6 +141,7 @@ void runView(const ViewArgs& args) {
     if (budget && frame > 2 && stats.forest.setupMs() == 0.0 && !tookScreenshot) {
       budget->update(lastFrame_ms);
       options.lod.switchPixels = budget->switchPixels();
+      options.lod.minPixels = budget->minPixels();
       options.shadowMapSize = shadowMapSizeAt(budget->resolution());
     }
     tookScreenshot = false;

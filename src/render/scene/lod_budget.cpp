@@ -51,6 +51,10 @@ void LodBudget::update(double frame_ms) {
   if (ratio < 1.0) levelsSpent_ = false;
 }
 
+float LodBudget::minPixels() const {
+  return std::clamp(static_cast<float>(std::sqrt(scale_)), 1.0f, kMostMinPixels);
+}
+
 std::array<float, 3> LodBudget::switchPixels() const {
   std::array<float, 3> sizes{};
   for (int level = 0; level < 3; ++level) sizes[level] = static_cast<float>(base_[level] * scale_);

@@ -5,7 +5,8 @@
 // are over the target, the frame is drawn at a lower resolution and magnified (dynamic
 // resolution, as game engines hold their frame rate), its shadow maps with it, and so it is
 // where coarser levels stopped paying: a frame that a coarsening left within the tolerance
-// of the one before (a scene of impostors, which every level draws alike). Below the target
+// of the one before (a scene of impostors, which every level draws alike). Coarser, the
+// smallest trees are left to the ground as well (minPixels()). Below the target
 // the resolution comes back first, before the detail. Apart from any window or OpenGL, so
 // that it can be tested with a model of a frame's cost.
 #pragma once
@@ -23,6 +24,11 @@ class LodBudget {
   void update(double frame_ms);
 
   std::array<float, 3> switchPixels() const;
+  // The trees under this many pixels are not drawn (LodSettings::minPixels) and the ground
+  // shows their crowns (forest_floor.hpp): 1 up to the base sizes, then the square root of
+  // the scale (the distance at which a tree is dropped moves with the switching distances'
+  // square root, as a frame's cost does), up to kMostMinPixels at the coarsest.
+  float minPixels() const;
   double scale() const { return scale_; }
   // The share of the window's width and height the frame is drawn at, kMinResolution..1.
   double resolution() const { return resolution_; }
@@ -41,6 +47,10 @@ class LodBudget {
   // level is 64 times farther in (a balanced 600-pixel LOD0 switch becomes 38,400 pixels:
   // nothing but impostors).
   static constexpr double kMinScale = 1.0 / 16.0, kMaxScale = 64.0;
+  // Measured on the valley run's `low` view at balanced (960 x 540, docs/rendering.md "`view`
+  // holds a frame-time target"): the trees under 8 pixels left to the ground change the
+  // picture by 0.4 of 255 (a million sprites fewer), under 16 by 3.4, the far canopy flat.
+  static constexpr float kMostMinPixels = 8.0f;
   // A quarter of the width and height: 320 x 180 pixels of a 1280 x 720 window, a sixteenth
   // of the fragments, still a picture one can steer by.
   static constexpr double kMinResolution = 0.25;

@@ -44,6 +44,25 @@ TEST(LodBudget, ASlowSceneIsCoarsenedUntilItHoldsTheTargetWithinTwentyPercent) {
   EXPECT_FLOAT_EQ(budget.switchPixels()[2], 100.0f * static_cast<float>(budget.scale()));
 }
 
+TEST(LodBudget, CoarserTheSmallestTreesAreLeftToTheGroundUpToEightPixels) {
+  // A GPU refining past the base sizes draws every tree of a pixel and more.
+  LodBudget fast({600.0f, 150.0f, 150.0f}, 1000.0 / 30.0);
+  run(fast, frameCost(1.0, 4.0), 40, 1);
+  ASSERT_LT(fast.scale(), 1.0);
+  EXPECT_EQ(fast.minPixels(), 1.0f);
+  // llvmpipe coarsening: the square root of the scale, while it is under 64.
+  LodBudget slow({600.0f, 150.0f, 150.0f}, 1000.0 / 30.0);
+  run(slow, frameCost(10.0, 400.0), 40, 1);
+  ASSERT_GT(slow.scale(), 3.0);
+  ASSERT_LT(slow.scale(), LodBudget::kMaxScale);
+  EXPECT_FLOAT_EQ(slow.minPixels(), static_cast<float>(std::sqrt(slow.scale())));
+  // At the coarsest, 8 pixels.
+  LodBudget coarsest({600.0f, 150.0f, 150.0f}, 1000.0 / 30.0);
+  run(coarsest, frameCost(500.0, 400.0), 40, 1);
+  ASSERT_EQ(coarsest.scale(), LodBudget::kMaxScale);
+  EXPECT_EQ(coarsest.minPixels(), LodBudget::kMostMinPixels);
+}
+
 TEST(LodBudget, AFastSceneShowsFullDetailFartherOut) {
   LodBudget budget({600.0f, 220.0f, 100.0f}, 1000.0 / 30.0);
   const auto times = run(budget, frameCost(1.0, 4.0), 40, 20);  // a GPU: 5 ms at the base

@@ -110,6 +110,9 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
   years.insert(years.end(), run.snapshotYears.begin(), run.snapshotYears.end());
   Forest forest;
   std::optional<TreeClearance> clearance;  // of `forest`, made again whenever it changes
+  // The snapshots around the frames' years, their trees paired once for all their frames.
+  std::optional<GrowthInterval> interval;
+  int intervalEnd = -1;  // the later snapshot's year of `interval`
   for (int frame = 0; frame < frames; ++frame) {
     auto phase = Clock::now();
     const double year = settings.yearOfFrame(frame);
@@ -125,9 +128,14 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
       // The snapshots around the year (the last pair at the end of the run).
       std::size_t after = 1;
       while (after + 1 < years.size() && years[after] < year) ++after;
-      snapshots.forgetBefore(years[after - 1]);
-      forest = forestBetween(snapshots.at(years[after - 1]), snapshots.at(years[after]), year,
-                             library, run.dir.string());
+      if (years[after] != intervalEnd) {
+        interval.reset();  // before the snapshots it pairs may go
+        snapshots.forgetBefore(years[after - 1]);
+        interval.emplace(snapshots.at(years[after - 1]), snapshots.at(years[after]), library,
+                         run.dir.string());
+        intervalEnd = years[after];
+      }
+      forest = interval->forestAt(year);
       clearance.emplace(forest, library);
     }
     timings.instances_s += secondsSince(phase);

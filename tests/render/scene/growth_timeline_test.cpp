@@ -115,5 +115,48 @@ TEST(GrowthTimeline, TreesBetweenAgeClassesBlendTheTwo) {
   }
 }
 
+TEST(GrowthTimeline, AnIntervalPairedOnceGivesEachFrameTheForestOfItsYear) {
+  // Many trees, a third dying, a third new: the frames of one interval, made in any order,
+  // are the forests made afresh for their years, tree by tree.
+  Pair p;
+  p.before.year = 10;
+  p.after.year = 20;
+  p.before.speciesNames = {"maple", "beech"};
+  p.after.speciesNames = {"beech", "maple"};
+  for (std::uint64_t id = 1; id <= 3000; ++id) {
+    const TreeRow tree{.id = id,
+                       .species = static_cast<int>(id % 2),
+                       .east_m = static_cast<double>(id % 60) * 5.0,
+                       .north_m = static_cast<double>(id / 60) * 5.0,
+                       .ground_m = 100,
+                       .age_years = static_cast<int>(id % 25),
+                       .height_m = 0.5f + static_cast<float>(id % 40),
+                       .crownRadius_m = 0.2f + static_cast<float>(id % 7),
+                       .vigor = 0.5f,
+                       .variantSeed = static_cast<std::uint32_t>(id * 7)};
+    if (id % 3 != 0) p.before.trees.push_back(tree);
+    if (id % 3 != 1) {
+      TreeRow later = tree;
+      later.species = 1 - tree.species;  // the later snapshot numbers its species otherwise
+      later.height_m += 2.0f;
+      p.after.trees.push_back(later);
+    }
+  }
+  const GrowthInterval interval(p.before, p.after, library(), "run");
+  for (const double year : {20.0, 10.0, 13.5, 16.0, 19.9}) {
+    const Forest frame = interval.forestAt(year);
+    const Forest fresh = forestBetween(p.before, p.after, year, library(), "run");
+    ASSERT_EQ(frame.size(), fresh.size());
+    EXPECT_EQ(frame.type, fresh.type);
+    EXPECT_EQ(frame.position, fresh.position);
+    EXPECT_EQ(frame.scaleY, fresh.scaleY);
+    EXPECT_EQ(frame.presence, fresh.presence);
+    EXPECT_EQ(frame.blendType, fresh.blendType);
+    EXPECT_EQ(frame.lean, fresh.lean);
+  }
+  // At the end the dead are gone: the later snapshot's trees, each once.
+  EXPECT_EQ(interval.forestAt(20.0).size(), p.after.trees.size());
+}
+
 }  // namespace
 }  // namespace eco

@@ -1,11 +1,13 @@
 #include "render/scene/growth_timeline.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <numeric>
-#include <unordered_map>
+#include <utility>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <glm/common.hpp>
 
 #include "core/error.hpp"
@@ -22,16 +24,26 @@ GrowthInterval::GrowthInterval(const TreeSnapshot& before, const TreeSnapshot& a
       speciesAfter_(librarySpeciesOf(after, library, where)) {
   ECO_ASSERT(after.trees.size() <= std::numeric_limits<std::uint32_t>::max(),
              "more trees than 32-bit rows index");
-  std::unordered_map<std::uint64_t, std::size_t> afterById;
-  afterById.reserve(after.trees.size());
-  for (std::size_t i = 0; i < after.trees.size(); ++i) afterById.emplace(after.trees[i].id, i);
+  // The later trees' ids in order, each with its row, searched for each earlier tree's,
+  // side by side (a landscape's hundred million: 16 bytes each, where a hash map takes 40).
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> afterById(after.trees.size());
+  tbb::parallel_for(std::size_t{0}, after.trees.size(), [&](std::size_t i) {
+    afterById[i] = {after.trees[i].id, static_cast<std::uint32_t>(i)};
+  });
+  tbb::parallel_sort(afterById.begin(), afterById.end());
   std::vector<char> matched(after.trees.size(), 0);
   laterOf_.resize(before.trees.size());
-  for (std::size_t i = 0; i < before.trees.size(); ++i) {
-    const auto found = afterById.find(before.trees[i].id);
-    laterOf_[i] = found == afterById.end() ? -1 : static_cast<std::int64_t>(found->second);
-    if (found != afterById.end()) matched[found->second] = 1;
-  }
+  tbb::parallel_for(std::size_t{0}, before.trees.size(), [&](std::size_t i) {
+    const std::uint64_t id = before.trees[i].id;
+    const auto found = std::lower_bound(afterById.begin(), afterById.end(),
+                                        std::pair<std::uint64_t, std::uint32_t>{id, 0});
+    laterOf_[i] = found != afterById.end() && found->first == id
+                      ? static_cast<std::int64_t>(found->second)
+                      : -1;
+    // Atomic: a crafted file may repeat an id, so that two earlier trees find one row.
+    if (laterOf_[i] >= 0)
+      std::atomic_ref(matched[found->second]).store(1, std::memory_order_relaxed);
+  });
   for (std::size_t i = 0; i < after.trees.size(); ++i)
     if (!matched[i]) newcomers_.push_back(static_cast<std::uint32_t>(i));
 }
@@ -55,14 +67,20 @@ Forest GrowthInterval::forestAt(double year) const {
 
   Forest forest;
   forest.resize(place.back());
-  // The site's shaping, as the later snapshot has it where there is one (a tree's site
-  // changes little in a few years; its form follows the later).
-  std::vector<SiteShaping> sites(forest.size());
-  auto put = [&](std::size_t slot, const TreeRow& tree, const TreeRow& shapedAs, int species,
-                 float height, float crown, float vigor, float presence) {
-    const SiteShaping& site = sites[slot] = siteShapingOf(shapedAs, library_);
+  // The site's shaping of tree k, as the later snapshot has it where there is one (a tree's
+  // site changes little in a few years; its form follows the later).
+  auto siteOf = [&](std::size_t k) {
+    const TreeRow& shapedAs = k >= earlier ? after_.trees[newcomers_[k - earlier]]
+                              : laterOf_[k] < 0
+                                  ? before_.trees[k]
+                                  : after_.trees[static_cast<std::size_t>(laterOf_[k])];
+    return siteShapingOf(shapedAs, library_);
+  };
+  auto put = [&](std::size_t k, const TreeRow& tree, int species, float height, float crown,
+                 float vigor, float presence) {
+    const std::size_t slot = place[k];
     const TreeLibrary::Blend blend = library_.blendFor(
-        species, tree.variantSeed, height, library_.maxHeight_m(species), site.clearBole);
+        species, tree.variantSeed, height, library_.maxHeight_m(species), siteOf(k).clearBole);
     forest.place(slot, library_, blend.type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m),
                  height, crown, vigor, tree.variantSeed ^ tree.id);
     forest.blendType[slot] = blend.blendType;
@@ -71,16 +89,15 @@ Forest GrowthInterval::forestAt(double year) const {
   };
   tbb::parallel_for(std::size_t{0}, earlier + newcomers_.size(), [&](std::size_t k) {
     if (place[k + 1] == place[k]) return;  // not shown
-    const std::size_t slot = place[k];
     if (k < earlier) {
       const TreeRow& tree = before_.trees[k];
       const int species = speciesBefore_[tree.species];
       if (laterOf_[k] < 0) {  // died in between: fades out over the interval
-        put(slot, tree, tree, species, tree.height_m, tree.crownRadius_m, tree.vigor, 1.0f - f);
+        put(k, tree, species, tree.height_m, tree.crownRadius_m, tree.vigor, 1.0f - f);
         return;
       }
       const TreeRow& later = after_.trees[static_cast<std::size_t>(laterOf_[k])];
-      put(slot, tree, later, species, glm::mix(tree.height_m, later.height_m, f),
+      put(k, tree, species, glm::mix(tree.height_m, later.height_m, f),
           glm::mix(tree.crownRadius_m, later.crownRadius_m, f),
           glm::mix(tree.vigor, later.vigor, f), 1.0f);
       return;
@@ -93,14 +110,15 @@ Forest GrowthInterval::forestAt(double year) const {
     const double growing = after_.year - from;
     const float g = growing > 0.0 ? static_cast<float>((year - from) / growing) : 1.0f;
     const float seedling = std::min(library_.seedlingHeight_m(species), tree.height_m);
-    put(slot, tree, tree, species, glm::mix(seedling, tree.height_m, g),
+    put(k, tree, species, glm::mix(seedling, tree.height_m, g),
         glm::mix(0.0f, tree.crownRadius_m, g), tree.vigor,
         static_cast<float>(std::clamp(year - from, 0.0, 1.0)));
   });
   // The leans read the built types' responses.
   buildTypesOf(forest, library_);
-  tbb::parallel_for(std::size_t{0}, forest.size(), [&](std::size_t i) {
-    forest.lean[i] = drawnLean(library_, forest.type[i], sites[i]);
+  tbb::parallel_for(std::size_t{0}, earlier + newcomers_.size(), [&](std::size_t k) {
+    if (place[k + 1] == place[k]) return;
+    forest.lean[place[k]] = drawnLean(library_, forest.type[place[k]], siteOf(k));
   });
   return forest;
 }

@@ -147,22 +147,6 @@ TEST(Forest, AnUnknownSpeciesIsAnInputError) {
   EXPECT_THROW(forestFromSnapshot(snapshot, test::smallLibrary(), "run"), InputError);
 }
 
-// Every array of two forests alike, tree by tree.
-void expectSameForest(const Forest& a, const Forest& b) {
-  ASSERT_EQ(a.size(), b.size());
-  EXPECT_EQ(a.type, b.type);
-  EXPECT_EQ(a.position, b.position);
-  EXPECT_EQ(a.yaw, b.yaw);
-  EXPECT_EQ(a.scaleXZ, b.scaleXZ);
-  EXPECT_EQ(a.scaleY, b.scaleY);
-  EXPECT_EQ(a.tint, b.tint);
-  EXPECT_EQ(a.phase, b.phase);
-  EXPECT_EQ(a.lean, b.lean);
-  EXPECT_EQ(a.presence, b.presence);
-  EXPECT_EQ(a.blendType, b.blendType);
-  EXPECT_EQ(a.blendWeight, b.blendWeight);
-}
-
 // A run folder holding `snapshot` as its year 1, in `format`.
 RunFolder runHolding(const std::string& name, const TreeSnapshot& snapshot, SnapshotFormat format) {
   RunFolder run;
@@ -200,7 +184,7 @@ TEST(Forest, ARunsSnapshotBuiltBatchByBatchIsTheForestOfItsRowsRead) {
   const RunFolder run = runHolding("forest_from_run", snapshot, SnapshotFormat::Binary);
   EXPECT_GE(snapshotRowsAtMost(run, 1), n);
   const Forest batched = forestFromRun(run, 1, library);
-  expectSameForest(batched, forestFromSnapshot(readSnapshot(run, 1), library, "run"));
+  test::expectSameForest(batched, forestFromSnapshot(readSnapshot(run, 1), library, "run"));
   EXPECT_EQ(batched.type.capacity(), snapshotRowsAtMost(run, 1));  // reserved once
   EXPECT_GT(typesOf(batched).size(), 1u);
 }
@@ -217,8 +201,8 @@ TEST(Forest, ARunsCsvSnapshotNamesItsSpeciesAsItsRowsComeAndAnUnknownOneIsAnInpu
                               .vigor = 0.7f,
                               .variantSeed = static_cast<std::uint32_t>(id)});
   const RunFolder run = runHolding("forest_from_run_csv", snapshot, SnapshotFormat::Csv);
-  expectSameForest(forestFromRun(run, 1, library),
-                   forestFromSnapshot(readSnapshot(run, 1), library, "run"));
+  test::expectSameForest(forestFromRun(run, 1, library),
+                         forestFromSnapshot(readSnapshot(run, 1), library, "run"));
   snapshot.speciesNames[1] = "baobab";
   const RunFolder foreign = runHolding("forest_from_run_foreign", snapshot, SnapshotFormat::Csv);
   try {

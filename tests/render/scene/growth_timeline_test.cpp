@@ -144,15 +144,8 @@ TEST(GrowthTimeline, AnIntervalPairedOnceGivesEachFrameTheForestOfItsYear) {
   }
   const GrowthInterval interval(p.before, p.after, library(), "run");
   for (const double year : {20.0, 10.0, 13.5, 16.0, 19.9}) {
-    const Forest frame = interval.forestAt(year);
-    const Forest fresh = forestBetween(p.before, p.after, year, library(), "run");
-    ASSERT_EQ(frame.size(), fresh.size());
-    EXPECT_EQ(frame.type, fresh.type);
-    EXPECT_EQ(frame.position, fresh.position);
-    EXPECT_EQ(frame.scaleY, fresh.scaleY);
-    EXPECT_EQ(frame.presence, fresh.presence);
-    EXPECT_EQ(frame.blendType, fresh.blendType);
-    EXPECT_EQ(frame.lean, fresh.lean);
+    test::expectSameForest(interval.forestAt(year),
+                           forestBetween(p.before, p.after, year, library(), "run"));
   }
   // At the end the dead are gone: the later snapshot's trees, each once.
   EXPECT_EQ(interval.forestAt(20.0).size(), p.after.trees.size());

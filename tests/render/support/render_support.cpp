@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/gtx/norm.hpp>
 
@@ -146,6 +147,21 @@ bool updatingReferences() {
 
 std::filesystem::path referenceFile(const std::string& name) {
   return std::filesystem::path(ECOFOREST_REFERENCE_DIR) / name;
+}
+
+void expectSameForest(const Forest& a, const Forest& b) {
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(a.type, b.type);
+  EXPECT_EQ(a.position, b.position);
+  EXPECT_EQ(a.yaw, b.yaw);
+  EXPECT_EQ(a.scaleXZ, b.scaleXZ);
+  EXPECT_EQ(a.scaleY, b.scaleY);
+  EXPECT_EQ(a.tint, b.tint);
+  EXPECT_EQ(a.phase, b.phase);
+  EXPECT_EQ(a.lean, b.lean);
+  EXPECT_EQ(a.presence, b.presence);
+  EXPECT_EQ(a.blendType, b.blendType);
+  EXPECT_EQ(a.blendWeight, b.blendWeight);
 }
 
 }  // namespace eco::test

@@ -62,6 +62,9 @@ glm::vec3 meanColor(const Image& image);
 // The largest mean absolute difference (per channel, 0..255) over any block x block tile.
 double maxBlockDifference(const Image& a, const Image& b, int block);
 
+// Expects every array of two forests alike, tree by tree (gtest failures).
+void expectSameForest(const Forest& a, const Forest& b);
+
 // Reads and writes reference PNGs in tests/render/reference/. Set ECOFOREST_UPDATE_REFERENCES=1
 // to rewrite them from the current output.
 Image readPng(const std::filesystem::path& file);

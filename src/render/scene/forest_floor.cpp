@@ -80,8 +80,4 @@ CanopyFloor canopyFloor(const Forest& forest, const TreeLibrary& library, const 
   return floor;
 }
 
-Field canopyCover(const Forest& forest, const TreeLibrary& library, const Grid& grid) {
-  return canopyFloor(forest, library, grid).cover();
-}
-
 }  // namespace eco

@@ -37,7 +37,5 @@ struct CanopyFloor {
 };
 
 CanopyFloor canopyFloor(const Forest& forest, const TreeLibrary& library, const Grid& grid);
-// canopyFloor(...).cover().
-Field canopyCover(const Forest& forest, const TreeLibrary& library, const Grid& grid);
 
 }  // namespace eco

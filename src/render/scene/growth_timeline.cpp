@@ -123,9 +123,4 @@ Forest GrowthInterval::forestAt(double year) const {
   return forest;
 }
 
-Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, double year,
-                     const TreeLibrary& library, const std::string& where) {
-  return GrowthInterval(before, after, library, where).forestAt(year);
-}
-
 }  // namespace eco

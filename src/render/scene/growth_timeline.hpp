@@ -38,8 +38,4 @@ class GrowthInterval {
   std::vector<std::uint32_t> newcomers_;  // the later snapshot's rows not in the earlier
 };
 
-// GrowthInterval(before, after, library, where).forestAt(year).
-Forest forestBetween(const TreeSnapshot& before, const TreeSnapshot& after, double year,
-                     const TreeLibrary& library, const std::string& where);
-
 }  // namespace eco

@@ -25,7 +25,7 @@ void plant(Forest& forest, const TreeLibrary& library, double east, double north
 
 TEST(CanopyCover, BareGroundHasNone) {
   const Terrain terrain = test::flatTerrain(9, 10.0);
-  const Field cover = canopyCover(Forest{}, test::smallLibrary(), terrain.grid);
+  const Field cover = canopyFloor(Forest{}, test::smallLibrary(), terrain.grid).cover();
   for (float c : cover) EXPECT_EQ(c, 0.0f);
 }
 
@@ -34,7 +34,7 @@ TEST(CanopyCover, ACrownSmallerThanACellGoesToItsStemsCell) {
   const Terrain terrain = test::flatTerrain(9, 10.0);
   Forest forest;
   plant(forest, library, 41.0, 38.0, 3.0f);  // in the cell centred at (40, 40) m
-  const Field cover = canopyCover(forest, library, terrain.grid);
+  const Field cover = canopyFloor(forest, library, terrain.grid).cover();
   const Grid& g = terrain.grid;
   const float radius = library.type(forest.type[0]).crownRadius_m * forest.scaleXZ[0];
   const double expected = 1.0 - std::exp(-std::numbers::pi * radius * radius / 100.0);
@@ -51,7 +51,7 @@ TEST(CanopyCover, AWideCrownIsSpreadOverTheCellsItCoversAndDenserStandsCoverMore
   const Terrain terrain = test::flatTerrain(21, 5.0);
   Forest one;
   plant(one, library, 50.0, 50.0, 9.0f);
-  const Field cover = canopyCover(one, library, terrain.grid);
+  const Field cover = canopyFloor(one, library, terrain.grid).cover();
   ASSERT_NEAR(library.type(one.type[0]).crownRadius_m * one.scaleXZ[0], 9.0f, 1e-3f);
   // The 3 x 3 cells whose centres lie within 9 m (the next ones are 10 m away), alike.
   int covered = 0;
@@ -63,7 +63,7 @@ TEST(CanopyCover, AWideCrownIsSpreadOverTheCellsItCoversAndDenserStandsCoverMore
   // The cover never exceeds 1, and more crowns over the same ground cover more of it.
   Forest dense = one;
   for (int k = 0; k < 5; ++k) plant(dense, library, 48.0 + k, 51.0, 9.0f);
-  const Field denser = canopyCover(dense, library, terrain.grid);
+  const Field denser = canopyFloor(dense, library, terrain.grid).cover();
   const std::size_t centre = terrain.grid.index(10, 10);
   EXPECT_GT(denser[centre], cover[centre]);
   for (float c : denser) EXPECT_LE(c, 1.0f);

@@ -71,12 +71,12 @@ float heightOf(const Forest& f, std::size_t i) {
 
 TEST(GrowthTimeline, MatchesTheSnapshotsAtTheirYears) {
   const Pair p = pair();
-  const Forest start = forestBetween(p.before, p.after, 10.0, library(), "run");
+  const Forest start = GrowthInterval(p.before, p.after, library(), "run").forestAt(10.0);
   ASSERT_EQ(start.size(), 2u);  // tree 3 has not established yet
   EXPECT_NEAR(heightOf(start, 0), 4.0f, 1e-4f);
   EXPECT_NEAR(heightOf(start, 1), 9.0f, 1e-4f);
   EXPECT_FLOAT_EQ(start.presence[1], 1.0f);
-  const Forest end = forestBetween(p.before, p.after, 20.0, library(), "run");
+  const Forest end = GrowthInterval(p.before, p.after, library(), "run").forestAt(20.0);
   ASSERT_EQ(end.size(), 2u);  // tree 2 is gone, tree 3 is there
   EXPECT_NEAR(heightOf(end, 0), 8.0f, 1e-4f);
   EXPECT_NEAR(heightOf(end, 1), 1.0f, 1e-4f);
@@ -87,7 +87,7 @@ TEST(GrowthTimeline, SurvivorsGrowContinuouslyTheDeadFadeAndNewTreesAppearInThei
   const Pair p = pair();
   float previousHeight = 0.0f, previousPresence = 2.0f;
   for (double year = 10.0; year < 20.0; year += 0.25) {
-    const Forest f = forestBetween(p.before, p.after, year, library(), "run");
+    const Forest f = GrowthInterval(p.before, p.after, library(), "run").forestAt(year);
     EXPECT_GT(heightOf(f, 0), previousHeight) << year;  // tree 1 grows every step
     previousHeight = heightOf(f, 0);
     EXPECT_LT(f.presence[1], previousPresence) << year;  // tree 2 fades every step
@@ -95,7 +95,7 @@ TEST(GrowthTimeline, SurvivorsGrowContinuouslyTheDeadFadeAndNewTreesAppearInThei
     previousPresence = f.presence[1];
     EXPECT_EQ(f.size(), year < 16.0 ? 2u : 3u) << year;  // tree 3 established in year 16
   }
-  const Forest appearing = forestBetween(p.before, p.after, 16.5, library(), "run");
+  const Forest appearing = GrowthInterval(p.before, p.after, library(), "run").forestAt(16.5);
   EXPECT_NEAR(appearing.presence[2], 0.5f, 1e-5f);
   EXPECT_LT(heightOf(appearing, 2), 0.5f);  // a seedling still
 }
@@ -104,7 +104,7 @@ TEST(GrowthTimeline, TreesBetweenAgeClassesBlendTheTwo) {
   const Pair p = pair();
   const TreeLibrary& lib = library();
   for (double year = 10.0; year <= 20.0; year += 1.0) {
-    const Forest f = forestBetween(p.before, p.after, year, lib, "run");
+    const Forest f = GrowthInterval(p.before, p.after, lib, "run").forestAt(year);
     for (std::size_t i = 0; i < f.size(); ++i) {
       EXPECT_GE(f.blendWeight[i], 0.0f);
       EXPECT_LE(f.blendWeight[i], 1.0f);
@@ -145,7 +145,7 @@ TEST(GrowthTimeline, AnIntervalPairedOnceGivesEachFrameTheForestOfItsYear) {
   const GrowthInterval interval(p.before, p.after, library(), "run");
   for (const double year : {20.0, 10.0, 13.5, 16.0, 19.9}) {
     test::expectSameForest(interval.forestAt(year),
-                           forestBetween(p.before, p.after, year, library(), "run"));
+                           GrowthInterval(p.before, p.after, library(), "run").forestAt(year));
   }
   // At the end the dead are gone: the later snapshot's trees, each once.
   EXPECT_EQ(interval.forestAt(20.0).size(), p.after.trees.size());

@@ -162,10 +162,13 @@ void buildTypesOf(const Forest& forest, const TreeLibrary& library) {
 
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
                                   const std::string& where) {
-  std::vector<int> librarySpecies;
-  for (const std::string& name : snapshot.speciesNames)
-    librarySpecies.push_back(librarySpeciesNamed(name, library, where));
-  return librarySpecies;
+  return SpeciesNumbering(library, where).of(snapshot.speciesNames);
+}
+
+const std::vector<int>& SpeciesNumbering::of(const std::vector<std::string>& names) {
+  for (std::size_t s = numbered_.size(); s < names.size(); ++s)
+    numbered_.push_back(librarySpeciesNamed(names[s], library_, where_));
+  return numbered_;
 }
 
 Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& library,
@@ -179,16 +182,13 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
 Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library) {
   Forest forest;
   forest.reserve(snapshotRowsAtMost(run, year));  // no array grows past its rows
-  std::vector<int> librarySpecies;
+  SpeciesNumbering librarySpecies(library, run.dir.string());
   readSnapshotInBatches(
       run, year, {},
       [&](std::span<const TreeRow> rows, const std::vector<std::string>& speciesNames) {
-        // The batch's rows number the species named so far.
-        for (std::size_t s = librarySpecies.size(); s < speciesNames.size(); ++s)
-          librarySpecies.push_back(librarySpeciesNamed(speciesNames[s], library, run.dir.string()));
         const std::size_t start = forest.size();
         forest.resize(start + rows.size());
-        placeRows(forest, start, rows, librarySpecies, library);
+        placeRows(forest, start, rows, librarySpecies.of(speciesNames), library);
       });
   return forest;
 }
@@ -203,7 +203,11 @@ SiteShaping siteShapingOf(const TreeRow& tree, const TreeLibrary& library) {
 }
 
 glm::vec2 drawnLean(const TreeLibrary& library, int type, const SiteShaping& site) {
-  return library.type(type).leanResponse.basesFor(glm::vec2(shapingLean(site)));
+  return drawnLean(library, type, glm::vec2(shapingLean(site)));
+}
+
+glm::vec2 drawnLean(const TreeLibrary& library, int type, glm::vec2 siteLean) {
+  return library.type(type).leanResponse.basesFor(siteLean);
 }
 
 Forest demoForest(const Terrain& terrain, const TreeLibrary& library, std::size_t count,

@@ -63,6 +63,20 @@ void buildTypesOf(const Forest& forest, const TreeLibrary& library);
 // (at `where`) names a species the library does not have.
 std::vector<int> librarySpeciesOf(const TreeSnapshot& snapshot, const TreeLibrary& library,
                                   const std::string& where);
+// The same for a snapshot read a batch of rows at a time (TreeBatch), whose batches name
+// more species as their rows come: each new name is looked up once.
+class SpeciesNumbering {
+ public:
+  SpeciesNumbering(const TreeLibrary& library, std::string where)
+      : library_(library), where_(std::move(where)) {}
+  // The library's species of each of `names` (the batch's species names so far).
+  const std::vector<int>& of(const std::vector<std::string>& names);
+
+ private:
+  const TreeLibrary& library_;
+  std::string where_;
+  std::vector<int> numbered_;
+};
 
 // Every plant of a snapshot; species are matched to the library by name. An InputError
 // names a species the library does not have. In a library with shaping (LibrarySettings),
@@ -80,6 +94,8 @@ Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library)
 SiteShaping siteShapingOf(const TreeRow& tree, const TreeLibrary& library);
 // The lean of a tree of `type` on `site` as the shaders draw it (Forest::lean).
 glm::vec2 drawnLean(const TreeLibrary& library, int type, const SiteShaping& site);
+// The same from the site's lean (shapingLean) kept as floats: a tree's lean for any type.
+glm::vec2 drawnLean(const TreeLibrary& library, int type, glm::vec2 siteLean);
 
 // `count` trees spread uniformly over the terrain with species drawn evenly and heights from
 // seedlings to mature (the terrain-with-trees view of a scenario without a run).

@@ -4,8 +4,10 @@
 #include <atomic>
 #include <limits>
 #include <numeric>
+#include <span>
 #include <utility>
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 #include <glm/common.hpp>
@@ -15,110 +17,175 @@
 
 namespace eco {
 
-GrowthInterval::GrowthInterval(const TreeSnapshot& before, const TreeSnapshot& after,
+SnapshotRows SnapshotRows::of(const TreeSnapshot& snapshot) {
+  return {snapshot.year, snapshot.trees.size(),
+          [&snapshot](const TreeBatch& each) { each(snapshot.trees, snapshot.speciesNames); }};
+}
+
+SnapshotRows SnapshotRows::of(const RunFolder& run, int year) {
+  if (year == 0) return {0, 0, [](const TreeBatch&) {}};
+  return {year, snapshotRowsAtMost(run, year),
+          [&run, year](const TreeBatch& each) { readSnapshotInBatches(run, year, {}, each); }};
+}
+
+void GrowthInterval::keep(std::size_t k, const TreeRow& tree, int species) {
+  position_[k] = worldFromMap(tree.east_m, tree.north_m, tree.ground_m);
+  individual_[k] = tree.variantSeed ^ tree.id;
+  variantSeed_[k] = tree.variantSeed;
+  species_[k] = static_cast<std::int16_t>(species);
+  height_[k] = glm::vec2(tree.height_m);
+  crownRadius_[k] = glm::vec2(tree.crownRadius_m);
+  vigor_[k] = glm::vec2(tree.vigor);
+  keepLater(k, tree);
+}
+
+void GrowthInterval::keepLater(std::size_t k, const TreeRow& later) {
+  height_[k].y = later.height_m;
+  crownRadius_[k].y = later.crownRadius_m;
+  vigor_[k].y = later.vigor;
+  const SiteShaping site = siteShapingOf(later, library_);
+  siteLean_[k] = glm::vec2(shapingLean(site));
+  clearBole_[k] = static_cast<float>(site.clearBole);  // a float's quotient: exact
+}
+
+GrowthInterval::GrowthInterval(const SnapshotRows& before, const SnapshotRows& after,
                                const TreeLibrary& library, const std::string& where)
-    : before_(before),
-      after_(after),
-      library_(library),
-      speciesBefore_(librarySpeciesOf(before, library, where)),
-      speciesAfter_(librarySpeciesOf(after, library, where)) {
-  ECO_ASSERT(after.trees.size() <= std::numeric_limits<std::uint32_t>::max(),
-             "more trees than 32-bit rows index");
-  // The later trees' ids in order, each with its row, searched for each earlier tree's,
-  // side by side (a landscape's hundred million: 16 bytes each, where a hash map takes 40).
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> afterById(after.trees.size());
-  tbb::parallel_for(std::size_t{0}, after.trees.size(), [&](std::size_t i) {
-    afterById[i] = {after.trees[i].id, static_cast<std::uint32_t>(i)};
+    : fromYear_(before.year), toYear_(after.year), library_(library) {
+  // Room for every tree of both at most: room a newcomer does not take is never touched.
+  const std::size_t room = before.rowsAtMost + after.rowsAtMost;
+  auto resize = [&](std::size_t n) {
+    for (auto* column : {&height_, &crownRadius_, &vigor_, &siteLean_}) column->resize(n);
+    position_.resize(n);
+    individual_.resize(n);
+    variantSeed_.resize(n);
+    species_.resize(n);
+    clearBole_.resize(n);
+  };
+  for (auto* column : {&height_, &crownRadius_, &vigor_, &siteLean_}) column->reserve(room);
+  position_.reserve(room);
+  individual_.reserve(room);
+  variantSeed_.reserve(room);
+  species_.reserve(room);
+  clearBole_.reserve(room);
+
+  // The earlier trees with their ids, which are sorted to be searched for the later trees'
+  // (16 bytes a tree while the later snapshot is read, where a hash map takes 40).
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> earlierById;
+  earlierById.reserve(before.rowsAtMost);
+  SpeciesNumbering earlierSpecies(library, where);
+  before.read([&](std::span<const TreeRow> rows, const std::vector<std::string>& names) {
+    const std::vector<int>& species = earlierSpecies.of(names);
+    const std::size_t start = size();
+    ECO_ASSERT(start + rows.size() <= std::numeric_limits<std::uint32_t>::max(),
+               "more trees than 32-bit places index");
+    resize(start + rows.size());
+    earlierById.resize(start + rows.size());
+    tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t i) {
+      keep(start + i, rows[i], species[rows[i].species]);
+      earlierById[start + i] = {rows[i].id, static_cast<std::uint32_t>(start + i)};
+    });
   });
-  tbb::parallel_sort(afterById.begin(), afterById.end());
-  std::vector<char> matched(after.trees.size(), 0);
-  laterOf_.resize(before.trees.size());
-  tbb::parallel_for(std::size_t{0}, before.trees.size(), [&](std::size_t i) {
-    const std::uint64_t id = before.trees[i].id;
-    const auto found = std::lower_bound(afterById.begin(), afterById.end(),
-                                        std::pair<std::uint64_t, std::uint32_t>{id, 0});
-    laterOf_[i] = found != afterById.end() && found->first == id
-                      ? static_cast<std::int64_t>(found->second)
-                      : -1;
-    // Atomic: a crafted file may repeat an id, so that two earlier trees find one row.
-    if (laterOf_[i] >= 0)
-      std::atomic_ref(matched[found->second]).store(1, std::memory_order_relaxed);
+  earlier_ = size();
+  tbb::parallel_sort(earlierById.begin(), earlierById.end());
+  lives_.assign(earlier_, 0);
+
+  // Each later tree is an earlier one's later state or a newcomer, kept in its order.
+  SpeciesNumbering laterSpecies(library, where);
+  constexpr std::uint32_t kNewcomer = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> earlierOf, newcomerPlace;
+  std::atomic<std::uint64_t> repeatedId{0};  // the least id two later trees share with one
+  after.read([&](std::span<const TreeRow> rows, const std::vector<std::string>& names) {
+    const std::vector<int>& species = laterSpecies.of(names);
+    earlierOf.resize(rows.size());
+    newcomerPlace.assign(rows.size() + 1, 0);
+    tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t i) {
+      const std::uint64_t id = rows[i].id;
+      const auto found = std::lower_bound(earlierById.begin(), earlierById.end(),
+                                          std::pair<std::uint64_t, std::uint32_t>{id, 0});
+      earlierOf[i] = found != earlierById.end() && found->first == id ? found->second : kNewcomer;
+      newcomerPlace[i + 1] = earlierOf[i] == kNewcomer;
+    });
+    std::partial_sum(newcomerPlace.begin(), newcomerPlace.end(), newcomerPlace.begin());
+    const std::size_t start = size();
+    ECO_ASSERT(start + newcomerPlace.back() <= std::numeric_limits<std::uint32_t>::max(),
+               "more trees than 32-bit places index");
+    resize(start + newcomerPlace.back());
+    established_.resize(size() - earlier_);
+    tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t i) {
+      const TreeRow& tree = rows[i];
+      if (earlierOf[i] == kNewcomer) {
+        const std::size_t k = start + newcomerPlace[i];
+        keep(k, tree, species[tree.species]);
+        // Established in the year its age counts from (not before the earlier snapshot).
+        established_[k - earlier_] =
+            static_cast<float>(std::max(toYear_ - tree.age_years, fromYear_));
+        return;
+      }
+      // A crafted file may repeat an id: two later trees would be one earlier tree's.
+      if (std::atomic_ref(lives_[earlierOf[i]]).exchange(1, std::memory_order_relaxed) != 0) {
+        std::uint64_t least = repeatedId.load(std::memory_order_relaxed);
+        while ((least == 0 || tree.id < least) &&
+               !repeatedId.compare_exchange_weak(least, tree.id, std::memory_order_relaxed)) {
+        }
+        return;
+      }
+      keepLater(earlierOf[i], tree);
+    });
   });
-  for (std::size_t i = 0; i < after.trees.size(); ++i)
-    if (!matched[i]) newcomers_.push_back(static_cast<std::uint32_t>(i));
+  if (const std::uint64_t id = repeatedId.load(); id != 0)
+    throw InputError({where, 0, ""},
+                     fmt::format("the snapshot of year {} holds tree id {} twice", toYear_, id));
 }
 
 Forest GrowthInterval::forestAt(double year) const {
-  const double span = std::max(after_.year - before_.year, 1);
-  const float f = static_cast<float>(std::clamp((year - before_.year) / span, 0.0, 1.0));
-  // A newcomer established in the year its age counts from (not before the earlier snapshot).
-  auto established = [&](const TreeRow& tree) {
-    return std::max<double>(after_.year - tree.age_years, before_.year);
-  };
+  const double span = std::max(toYear_ - fromYear_, 1);
+  const float f = static_cast<float>(std::clamp((year - fromYear_) / span, 0.0, 1.0));
   // The places of the trees shown: every earlier tree but those dead by the end, and the
   // newcomers established by `year`, each in its order.
-  const std::size_t earlier = before_.trees.size();
-  std::vector<std::size_t> place(earlier + newcomers_.size() + 1, 0);
-  tbb::parallel_for(std::size_t{0}, earlier + newcomers_.size(), [&](std::size_t k) {
-    place[k + 1] = k < earlier ? (laterOf_[k] >= 0 || f < 1.0f)
-                               : year >= established(after_.trees[newcomers_[k - earlier]]);
+  const std::size_t n = size();
+  std::vector<std::uint32_t> place(n + 1, 0);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
+    place[k + 1] = k < earlier_ ? (lives_[k] != 0 || f < 1.0f) : year >= established_[k - earlier_];
   });
   std::partial_sum(place.begin(), place.end(), place.begin());
 
   Forest forest;
   forest.resize(place.back());
-  // The site's shaping of tree k, as the later snapshot has it where there is one (a tree's
-  // site changes little in a few years; its form follows the later).
-  auto siteOf = [&](std::size_t k) {
-    const TreeRow& shapedAs = k >= earlier ? after_.trees[newcomers_[k - earlier]]
-                              : laterOf_[k] < 0
-                                  ? before_.trees[k]
-                                  : after_.trees[static_cast<std::size_t>(laterOf_[k])];
-    return siteShapingOf(shapedAs, library_);
-  };
-  auto put = [&](std::size_t k, const TreeRow& tree, int species, float height, float crown,
-                 float vigor, float presence) {
+  auto put = [&](std::size_t k, float height, float crown, float vigor, float presence) {
     const std::size_t slot = place[k];
     const TreeLibrary::Blend blend = library_.blendFor(
-        species, tree.variantSeed, height, library_.maxHeight_m(species), siteOf(k).clearBole);
-    forest.place(slot, library_, blend.type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m),
-                 height, crown, vigor, tree.variantSeed ^ tree.id);
+        species_[k], variantSeed_[k], height, library_.maxHeight_m(species_[k]), clearBole_[k]);
+    forest.place(slot, library_, blend.type, position_[k], height, crown, vigor, individual_[k]);
     forest.blendType[slot] = blend.blendType;
     forest.blendWeight[slot] = blend.blendWeight;
     forest.presence[slot] = presence;
   };
-  tbb::parallel_for(std::size_t{0}, earlier + newcomers_.size(), [&](std::size_t k) {
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
     if (place[k + 1] == place[k]) return;  // not shown
-    if (k < earlier) {
-      const TreeRow& tree = before_.trees[k];
-      const int species = speciesBefore_[tree.species];
-      if (laterOf_[k] < 0) {  // died in between: fades out over the interval
-        put(k, tree, species, tree.height_m, tree.crownRadius_m, tree.vigor, 1.0f - f);
+    if (k < earlier_) {
+      if (lives_[k] == 0) {  // died in between: fades out over the interval
+        put(k, height_[k].x, crownRadius_[k].x, vigor_[k].x, 1.0f - f);
         return;
       }
-      const TreeRow& later = after_.trees[static_cast<std::size_t>(laterOf_[k])];
-      put(k, tree, species, glm::mix(tree.height_m, later.height_m, f),
-          glm::mix(tree.crownRadius_m, later.crownRadius_m, f),
-          glm::mix(tree.vigor, later.vigor, f), 1.0f);
+      put(k, glm::mix(height_[k].x, height_[k].y, f),
+          glm::mix(crownRadius_[k].x, crownRadius_[k].y, f), glm::mix(vigor_[k].x, vigor_[k].y, f),
+          1.0f);
       return;
     }
     // Established in between; it appears over its first year and grows from a seedling to
     // its height in the later snapshot.
-    const TreeRow& tree = after_.trees[newcomers_[k - earlier]];
-    const int species = speciesAfter_[tree.species];
-    const double from = established(tree);
-    const double growing = after_.year - from;
+    const double from = established_[k - earlier_];
+    const double growing = toYear_ - from;
     const float g = growing > 0.0 ? static_cast<float>((year - from) / growing) : 1.0f;
-    const float seedling = std::min(library_.seedlingHeight_m(species), tree.height_m);
-    put(k, tree, species, glm::mix(seedling, tree.height_m, g),
-        glm::mix(0.0f, tree.crownRadius_m, g), tree.vigor,
+    const float seedling = std::min(library_.seedlingHeight_m(species_[k]), height_[k].y);
+    put(k, glm::mix(seedling, height_[k].y, g), glm::mix(0.0f, crownRadius_[k].y, g), vigor_[k].y,
         static_cast<float>(std::clamp(year - from, 0.0, 1.0)));
   });
   // The leans read the built types' responses.
   buildTypesOf(forest, library_);
-  tbb::parallel_for(std::size_t{0}, earlier + newcomers_.size(), [&](std::size_t k) {
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
     if (place[k + 1] == place[k]) return;
-    forest.lean[place[k]] = drawnLean(library_, forest.type[place[k]], siteOf(k));
+    forest.lean[place[k]] = drawnLean(library_, forest.type[place[k]], siteLean_[k]);
   });
   return forest;
 }

@@ -6,8 +6,12 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "render/scene/forest.hpp"
 #include "render/scene/tree_library.hpp"
@@ -15,27 +19,57 @@
 
 namespace eco {
 
-// Two snapshots and how their trees pair up (by id), matched once: each frame of the
-// interval is then made from the pairs, its trees side by side. The snapshots and the
-// library are the caller's and must outlive it; `where` names the run for errors about
-// species.
+// A snapshot's rows as GrowthInterval reads them: in memory already (which must outlive the
+// reading), or read from a run's file a batch of rows at a time, never whole.
+struct SnapshotRows {
+  int year = 0;
+  std::size_t rowsAtMost = 0;                  // room for them
+  std::function<void(const TreeBatch&)> read;  // hands each batch on, in the file's order
+  static SnapshotRows of(const TreeSnapshot& snapshot);
+  static SnapshotRows of(const RunFolder& run, int year);  // year 0: the bare landscape
+};
+
+// Two snapshots' trees paired by id once, each frame of the interval then made from the
+// pairs side by side. Only what a frame draws is kept of each tree (about 63 bytes), once
+// whether it lives in both snapshots or one: a landscape's interval of 105 and 66 million
+// plants would hold 15 GB as the snapshots' rows. The library is the caller's and must
+// outlive it.
 class GrowthInterval {
  public:
-  GrowthInterval(const TreeSnapshot& before, const TreeSnapshot& after, const TreeLibrary& library,
+  // `where` names the snapshots in errors about species or ids.
+  GrowthInterval(const SnapshotRows& before, const SnapshotRows& after, const TreeLibrary& library,
                  const std::string& where);
+  GrowthInterval(const TreeSnapshot& before, const TreeSnapshot& after, const TreeLibrary& library,
+                 const std::string& where)
+      : GrowthInterval(SnapshotRows::of(before), SnapshotRows::of(after), library, where) {}
 
-  // The forest at `year`, between before.year and after.year (inclusive): the trees of the
+  // The forest at `year`, between the two snapshots' years (inclusive): the trees of the
   // earlier snapshot in its order (those that die fading out), then the newcomers in the
   // later one's order from their year of establishment.
   Forest forestAt(double year) const;
+  // The trees it keeps: every earlier one and each newcomer.
+  std::size_t size() const { return position_.size(); }
 
  private:
-  const TreeSnapshot& before_;
-  const TreeSnapshot& after_;
+  void keep(std::size_t k, const TreeRow& tree, int species);
+  void keepLater(std::size_t k, const TreeRow& later);
+
+  int fromYear_ = 0, toYear_ = 0;
   const TreeLibrary& library_;
-  std::vector<int> speciesBefore_, speciesAfter_;  // the library's species of each's names
-  std::vector<std::int64_t> laterOf_;     // each earlier tree's row in the later one, or -1
-  std::vector<std::uint32_t> newcomers_;  // the later snapshot's rows not in the earlier
+  std::size_t earlier_ = 0;  // the earlier snapshot's trees come first, then the newcomers
+  // Each tree as the earlier snapshot has it (a newcomer as the later one does).
+  std::vector<glm::vec3> position_;
+  std::vector<std::uint64_t> individual_;  // its variant seed ^ id: the instance's draws
+  std::vector<std::uint32_t> variantSeed_;
+  std::vector<std::int16_t> species_;  // the library's
+  // (earlier, later) of the trees in both; a newcomer's later in y, a dying tree's in x.
+  std::vector<glm::vec2> height_, crownRadius_, vigor_;
+  // The site's lean (shapingLean) and clear bole, as the later snapshot has them where there
+  // is one: a tree's site changes little in a few years, and its form follows the later.
+  std::vector<glm::vec2> siteLean_;
+  std::vector<float> clearBole_;
+  std::vector<std::uint8_t> lives_;  // each earlier tree: is it in the later snapshot?
+  std::vector<float> established_;   // each newcomer: the year it appears
 };
 
 }  // namespace eco

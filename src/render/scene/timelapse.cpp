@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <optional>
 
 #include <OpenImageIO/imagebuf.h>
@@ -11,6 +10,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "render/scene/growth_timeline.hpp"
 #include "render/scene/tree_clearance.hpp"
 
@@ -23,28 +23,11 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Snapshots of a run, read once each; year 0 is the bare landscape before the first.
-class SnapshotCache {
- public:
-  explicit SnapshotCache(const RunFolder& run) : run_(run) {}
-  // The snapshot of a year. References stay valid until forgetBefore() drops that year.
-  const TreeSnapshot& at(int year) {
-    auto it = cache_.find(year);
-    if (it != cache_.end()) return it->second;
-    TreeSnapshot snapshot;
-    if (year == 0)
-      snapshot.year = 0;
-    else
-      snapshot = readSnapshot(run_, year);
-    return cache_.emplace(year, std::move(snapshot)).first->second;
-  }
-  // Frames move forward through the years: snapshots before `year` are not needed again.
-  void forgetBefore(int year) { cache_.erase(cache_.begin(), cache_.lower_bound(year)); }
-
- private:
-  const RunFolder& run_;
-  std::map<int, TreeSnapshot> cache_;
-};
+// Whether a snapshot's rows, read whole, would take at most a quarter of the memory the
+// machine has available: a valley's few hundred megabytes do, a landscape's gigabytes not.
+bool fitsWhole(const RunFolder& run, int year) {
+  return snapshotRowsAtMost(run, year) * sizeof(TreeRow) <= availableMemoryBytes().value_or(0) / 4;
+}
 
 }  // namespace
 
@@ -105,14 +88,16 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
   const auto start = Clock::now();
   TimelapseTimings timings;
   const int frames = settings.frameCount();
-  SnapshotCache snapshots(run);
-  std::vector<int> years{0};
+  std::vector<int> years{0};  // year 0: the bare landscape before the first snapshot
   years.insert(years.end(), run.snapshotYears.begin(), run.snapshotYears.end());
   Forest forest;
   std::optional<TreeClearance> clearance;  // of `forest`, made again whenever it changes
   // The snapshots around the frames' years, their trees paired once for all their frames.
   std::optional<GrowthInterval> interval;
   int intervalEnd = -1;  // the later snapshot's year of `interval`
+  // The later snapshot of an interval is the earlier one of the next: kept where it fits
+  // whole, read again a batch at a time where it does not.
+  std::optional<TreeSnapshot> kept;
   for (int frame = 0; frame < frames; ++frame) {
     auto phase = Clock::now();
     const double year = settings.yearOfFrame(frame);
@@ -128,12 +113,20 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
       // The snapshots around the year (the last pair at the end of the run).
       std::size_t after = 1;
       while (after + 1 < years.size() && years[after] < year) ++after;
+      // A landscape's frame holds gigabytes: the last one goes before the next is made.
+      clearance.reset();
+      forest = Forest();
       if (years[after] != intervalEnd) {
-        interval.reset();  // before the snapshots it pairs may go
-        snapshots.forgetBefore(years[after - 1]);
-        interval.emplace(snapshots.at(years[after - 1]), snapshots.at(years[after]), library,
-                         run.dir.string());
-        intervalEnd = years[after];
+        interval.reset();
+        const int from = years[after - 1], to = years[after];
+        std::optional<TreeSnapshot> later;
+        if (fitsWhole(run, to)) later = readSnapshot(run, to);
+        interval.emplace(
+            kept && kept->year == from ? SnapshotRows::of(*kept) : SnapshotRows::of(run, from),
+            later ? SnapshotRows::of(*later) : SnapshotRows::of(run, to), library,
+            run.dir.string());
+        kept = std::move(later);
+        intervalEnd = to;
       }
       forest = interval->forestAt(year);
       clearance.emplace(forest, library);

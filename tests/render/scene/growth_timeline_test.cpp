@@ -1,7 +1,10 @@
 #include "render/scene/growth_timeline.hpp"
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "render_support.hpp"
 
 namespace eco {
@@ -149,6 +152,91 @@ TEST(GrowthTimeline, AnIntervalPairedOnceGivesEachFrameTheForestOfItsYear) {
   }
   // At the end the dead are gone: the later snapshot's trees, each once.
   EXPECT_EQ(interval.forestAt(20.0).size(), p.after.trees.size());
+}
+
+// A run folder holding each snapshot as the year it names, in `format`.
+RunFolder runHolding(const std::string& name, const std::vector<const TreeSnapshot*>& snapshots,
+                     SnapshotFormat format) {
+  RunFolder run;
+  run.dir = test::freshDirectory(name);
+  std::filesystem::create_directories(run.dir / "trees");
+  for (const TreeSnapshot* snapshot : snapshots) {
+    writeTrees(RunPaths{run.dir}.snapshot(snapshot->year, format), *snapshot, format);
+    run.snapshotYears.push_back(snapshot->year);
+  }
+  return run;
+}
+
+TEST(GrowthTimeline, SnapshotsReadBatchByBatchGiveTheFramesOfTheSnapshotsReadWhole) {
+  // More rows than a batch of the binary reader (2^20) in each, of every height, light and
+  // crown base, a fifth dying and a sixth new, so that the batches meet among the pairs.
+  const TreeLibrary& library = test::shapedLibrary();
+  Pair p;
+  p.before.year = 40;
+  p.after.year = 50;
+  p.before.speciesNames = p.after.speciesNames = {"beech"};
+  const std::uint64_t n = 1400000;  // 1.17 million earlier, 1.12 million later
+  std::size_t newcomers = 0;
+  for (std::uint64_t id = 1; id <= n; ++id) {
+    const float height = 0.2f + static_cast<float>(id % 301) * 0.1f;
+    const double angle = 0.001 * static_cast<double>(id);
+    const TreeRow tree{
+        .id = id,
+        .east_m = static_cast<double>(id % 1000),
+        .north_m = static_cast<double>(id / 1000),
+        .ground_m = 300,
+        .age_years = static_cast<int>(id % 30),
+        .height_m = height,
+        .crownRadius_m = 0.2f * height,
+        .crownBase_m = static_cast<float>(id % 7) * 0.1f * height,
+        .vigor = static_cast<float>(id % 11) / 10.0f,
+        .variantSeed = static_cast<std::uint32_t>(id * 2654435761u),
+        .site = {.light = {0.5 * std::cos(angle), 0.5 * std::sin(angle)}, .wind = {0.2, 0.0}}};
+    if (id % 6 != 0) p.before.trees.push_back(tree);
+    if (id % 5 != 0) {
+      newcomers += id % 6 == 0;
+      TreeRow later = tree;
+      later.height_m = std::min(later.height_m * 1.3f, 40.0f);
+      later.crownBase_m = 0.5f * later.height_m;
+      later.site.light = -tree.site.light;
+      p.after.trees.push_back(later);
+    }
+  }
+  const RunFolder run =
+      runHolding("growth_interval_batches", {&p.before, &p.after}, SnapshotFormat::Binary);
+  const GrowthInterval whole(p.before, p.after, library, "run");
+  const GrowthInterval batched(SnapshotRows::of(run, 40), SnapshotRows::of(run, 50), library,
+                               "run");
+  // Each tree kept once: the earlier snapshot's, then the later one's newcomers.
+  EXPECT_EQ(batched.size(), p.before.trees.size() + newcomers);
+  for (const double year : {40.0, 44.5, 50.0})
+    test::expectSameForest(batched.forestAt(year), whole.forestAt(year));
+}
+
+TEST(GrowthTimeline, FromTheBareLandscapeEveryTreeIsANewcomer) {
+  const Pair p = pair();
+  const RunFolder run = runHolding("growth_interval_bare", {&p.after}, SnapshotFormat::Csv);
+  const GrowthInterval interval(SnapshotRows::of(run, 0), SnapshotRows::of(run, 20), library(),
+                                "run");
+  EXPECT_EQ(interval.size(), 2u);
+  // Tree 3 (age 4) appears in year 16, tree 1 (age 20) in year 0.
+  EXPECT_EQ(interval.forestAt(0.0).size(), 1u);
+  EXPECT_EQ(interval.forestAt(15.9).size(), 1u);
+  EXPECT_EQ(interval.forestAt(16.0).size(), 2u);
+}
+
+TEST(GrowthTimeline, ALaterSnapshotHoldingAnEarlierTreesIdTwiceIsAnInputError) {
+  Pair p = pair();
+  p.after.trees.push_back(p.after.trees[1]);  // tree 1 again
+  p.after.trees.back().east_m = 70;
+  try {
+    GrowthInterval(p.before, p.after, library(), "run");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the snapshot of year 20 holds tree id 1 twice"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

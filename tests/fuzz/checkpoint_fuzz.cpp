@@ -23,9 +23,12 @@ void readAndCheck(const std::filesystem::path& file) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes = eco::fuzz::asText(data, size);
   readAndCheck(eco::fuzz::inputFile(bytes, "checkpoint.bin"));
-  std::string sealed(bytes);
-  const std::uint64_t checksum = eco::blockChecksum(sealed);
-  sealed.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
-  readAndCheck(eco::fuzz::inputFile(sealed, "sealed.bin"));
+  // Sealed by each hash: the current version's and the older one still read.
+  for (const eco::BlockHash hash : {eco::BlockHash::Xxh3, eco::BlockHash::Fnv1a}) {
+    std::string sealed(bytes);
+    const std::uint64_t checksum = eco::blockChecksum(sealed, hash);
+    sealed.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
+    readAndCheck(eco::fuzz::inputFile(sealed, "sealed.bin"));
+  }
   return 0;
 }

@@ -30,7 +30,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     default: {
       std::string bytes(text);
       if (data[0] % 5 == 4) {
-        const std::uint64_t checksum = eco::blockChecksum(bytes);
+        // Sealed by the hash of version 1 (FNV-1a) or of version 2 (XXH3).
+        const std::uint64_t checksum = eco::blockChecksum(
+            bytes, data[0] % 10 == 4 ? eco::BlockHash::Fnv1a : eco::BlockHash::Xxh3);
         bytes.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
       }
       const auto file = eco::fuzz::inputFile(bytes, "year_0010.bin");

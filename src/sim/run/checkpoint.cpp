@@ -23,7 +23,10 @@ constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
 // 2: block checksum; 3: growth factor, stand measures; 4: 32-bit variant seeds;
 // 5: plants' origin, the plan's stats; 6: no ground, cell and variant seed columns (derived)
 // 7: ages, crown base, vigor, light and growth factor in 16 bits (Fixed16), poor years in 8
-constexpr std::uint32_t kFormatVersion = 7;
+// 8: XXH3 checksum (version 7, the same layout checksummed by FNV-1a, is still read)
+constexpr std::uint32_t kFormatVersion = 8;
+constexpr SealedVersion kReadableVersions[] = {{kFormatVersion, BlockHash::Xxh3},
+                                               {7, BlockHash::Fnv1a}};
 
 bool finiteAtLeast(float value, float least) {
   return std::isfinite(value) && value >= least;
@@ -144,7 +147,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, std::uint64_t expec
   const std::optional<MappedFile> mapping = MappedFile::open(file);
   if (!mapping) throw refuse("cannot open the checkpoint (was the run started in this folder?)");
   const std::string_view body = requireSealed(
-      mapping->bytes(), kMagic, kFormatVersion, file,
+      mapping->bytes(), kMagic, kReadableVersions, file,
       {.notOurs = "not an ecoforest checkpoint",
        .otherVersion = "checkpoint format from another version of ecoforest; start the run afresh",
        .corrupt = "checkpoint is corrupt (checksum mismatch)"});

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <xxhash.h>
 
 #include "core/error.hpp"
 #include "core/hash.hpp"
@@ -14,32 +15,37 @@ namespace {
 
 constexpr std::size_t kChecksumBlock = std::size_t{1} << 20;
 
-// FNV-1a of each block of `bytes`, in parallel, appended to `hashes`.
-void appendBlockHashes(std::string_view bytes, std::vector<std::uint64_t>& hashes) {
+std::uint64_t hashOf(std::string_view bytes, BlockHash hash) {
+  return hash == BlockHash::Xxh3 ? XXH3_64bits(bytes.data(), bytes.size()) : fnv1a64(bytes);
+}
+
+// The hash of each block of `bytes`, in parallel, appended to `hashes`.
+void appendBlockHashes(std::string_view bytes, BlockHash hash, std::vector<std::uint64_t>& hashes) {
   const std::size_t first = hashes.size();
   const std::size_t blocks = (bytes.size() + kChecksumBlock - 1) / kChecksumBlock;
   hashes.resize(first + blocks);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    hashes[first + b] = fnv1a64(bytes.substr(b * kChecksumBlock, kChecksumBlock));
+    hashes[first + b] = hashOf(bytes.substr(b * kChecksumBlock, kChecksumBlock), hash);
   });
 }
 
-std::uint64_t combineBlockHashes(const std::vector<std::uint64_t>& hashes) {
-  return fnv1a64(std::string_view(reinterpret_cast<const char*>(hashes.data()),
-                                  hashes.size() * sizeof(std::uint64_t)));
+std::uint64_t combineBlockHashes(const std::vector<std::uint64_t>& hashes, BlockHash hash) {
+  return hashOf(std::string_view(reinterpret_cast<const char*>(hashes.data()),
+                                 hashes.size() * sizeof(std::uint64_t)),
+                hash);
 }
 
 }  // namespace
 
-std::uint64_t blockChecksum(std::string_view bytes, const PartDone& hashed) {
+std::uint64_t blockChecksum(std::string_view bytes, BlockHash hash, const PartDone& hashed) {
   constexpr std::size_t kPart = 64 * kChecksumBlock;  // whole blocks: the same blocks' hashes
   std::vector<std::uint64_t> hashes;
   for (std::size_t at = 0; at < bytes.size(); at += kPart) {
     const std::string_view part = bytes.substr(at, kPart);
-    appendBlockHashes(part, hashes);
+    appendBlockHashes(part, hash, hashes);
     if (hashed) hashed(part);
   }
-  return combineBlockHashes(hashes);
+  return combineBlockHashes(hashes, hash);
 }
 
 void ChecksummedOutput::add(std::string_view bytes) {
@@ -66,7 +72,7 @@ BinaryWriter sealedHeader(std::string_view magic, std::uint32_t version) {
 std::uint64_t ChecksummedOutput::finish() {
   emit(pending_);
   pending_.clear();
-  const std::uint64_t checksum = combineBlockHashes(hashes_);
+  const std::uint64_t checksum = combineBlockHashes(hashes_, BlockHash::Xxh3);
   out_.write(std::string_view(reinterpret_cast<const char*>(&checksum), sizeof checksum));
   return checksum;
 }
@@ -74,24 +80,29 @@ std::uint64_t ChecksummedOutput::finish() {
 void ChecksummedOutput::emit(std::string_view bytes) {
   // Hashed while they are written: the system call's copy into the page cache takes one
   // core, the hashing the others.
-  tbb::parallel_invoke([&] { appendBlockHashes(bytes, hashes_); }, [&] { out_.write(bytes); });
+  tbb::parallel_invoke([&] { appendBlockHashes(bytes, BlockHash::Xxh3, hashes_); },
+                       [&] { out_.write(bytes); });
 }
 
-std::optional<std::string_view> checkedBody(std::string_view bytes, const PartDone& hashed) {
+std::optional<std::string_view> checkedBody(std::string_view bytes, BlockHash hash,
+                                            const PartDone& hashed) {
   if (bytes.size() < sizeof(std::uint64_t)) return std::nullopt;
   const std::string_view body = bytes.substr(0, bytes.size() - sizeof(std::uint64_t));
   std::uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + body.size(), sizeof stored);
-  if (stored != blockChecksum(body, hashed)) return std::nullopt;
+  if (stored != blockChecksum(body, hash, hashed)) return std::nullopt;
   return body;
 }
 
-SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint32_t version,
-                      const PartDone& hashed) {
+SealedFile openSealed(std::string_view bytes, std::string_view magic,
+                      std::span<const SealedVersion> readable, const PartDone& hashed) {
   BinaryReader header(bytes);
   if (header.getString() != magic || header.failed()) return {SealedFile::Fault::NotOurs, {}};
-  if (header.get<std::uint32_t>() != version) return {SealedFile::Fault::OtherVersion, {}};
-  const std::optional<std::string_view> body = checkedBody(bytes, hashed);
+  const auto number = header.get<std::uint32_t>();
+  const auto version = std::find_if(readable.begin(), readable.end(),
+                                    [&](const SealedVersion& v) { return v.number == number; });
+  if (header.failed() || version == readable.end()) return {SealedFile::Fault::OtherVersion, {}};
+  const std::optional<std::string_view> body = checkedBody(bytes, version->hash, hashed);
   // A forged checksum over bytes shorter than the header is no body either.
   const std::size_t headerBytes = bytes.size() - header.remaining();
   if (!body || headerBytes > body->size()) return {SealedFile::Fault::Corrupt, {}};
@@ -99,9 +110,10 @@ SealedFile openSealed(std::string_view bytes, std::string_view magic, std::uint3
 }
 
 std::string_view requireSealed(std::string_view bytes, std::string_view magic,
-                               std::uint32_t version, const std::filesystem::path& file,
-                               const SealedFileFaults& say, const PartDone& hashed) {
-  const SealedFile sealed = openSealed(bytes, magic, version, hashed);
+                               std::span<const SealedVersion> readable,
+                               const std::filesystem::path& file, const SealedFileFaults& say,
+                               const PartDone& hashed) {
+  const SealedFile sealed = openSealed(bytes, magic, readable, hashed);
   const std::string* why = nullptr;
   switch (sealed.fault) {
     case SealedFile::Fault::NotOurs:

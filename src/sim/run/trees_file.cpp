@@ -31,7 +31,10 @@ constexpr std::size_t kTreesColumns = 16, kTreesColumnsWithoutSite = 12;
 // The binary format: this header, then one fixed-size little-endian record per plant (the
 // layout of appendRecord), then the blockChecksum of everything before it.
 constexpr std::string_view kBinaryMagic = "ECOFOREST-TREES";
-constexpr std::uint32_t kBinaryVersion = 1;
+// 2: XXH3 checksum. Version 1, the same layout checksummed by FNV-1a, is still read.
+constexpr std::uint32_t kBinaryVersion = 2;
+constexpr SealedVersion kReadableVersions[] = {{kBinaryVersion, BlockHash::Xxh3},
+                                               {1, BlockHash::Fnv1a}};
 // id, species, east, north, ground, age, height, crown radius, crown base, dbh, vigor,
 // variant seed, the site's four components: the simulation's numbers exactly, so a binary
 // snapshot written out as CSV has the bytes of the CSV snapshot.
@@ -471,7 +474,7 @@ TreeSnapshot readBinary(const std::filesystem::path& file, const ReadPlan& plan)
   PartDone release;
   if (plan.inParts()) release = [&](std::string_view part) { mapping.release(part); };
   const std::string_view body = requireSealed(
-      mapping.bytes(), kBinaryMagic, kBinaryVersion, file,
+      mapping.bytes(), kBinaryMagic, kReadableVersions, file,
       {.notOurs = "not a binary trees file of ecoforest",
        .otherVersion =
            "a binary trees file of another version of ecoforest: run the scenario again",

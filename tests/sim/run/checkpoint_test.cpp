@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "sealed_support.hpp"
 #include "sim/run/checksummed_output.hpp"
 #include "test_files.hpp"
 
@@ -85,7 +86,8 @@ TEST(Checkpoint, AStateOfManyBlocksIsWrittenThroughWithItsChecksum) {
   // The stored checksum is that of the whole body, as if it had been made in memory.
   std::uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
-  EXPECT_EQ(stored, blockChecksum(std::string_view(bytes).substr(0, bytes.size() - 8)));
+  EXPECT_EQ(stored,
+            blockChecksum(std::string_view(bytes).substr(0, bytes.size() - 8), BlockHash::Xxh3));
   const Checkpoint back = readCheckpoint(file, 0x1234);
   EXPECT_EQ(back.state.plants.id, big.state.plants.id);
   EXPECT_EQ(back.state.plants.height_m, big.state.plants.height_m);
@@ -109,6 +111,22 @@ TEST(Checkpoint, RefusesCorruptTruncatedForeignAndMissingFiles) {
   test::writeFile(file, "PK\x03\x04 a zip file, not ours");
   EXPECT_NE(errorOf(file, 0x1234).find("not an ecoforest checkpoint"), std::string::npos);
   EXPECT_NE(errorOf(folder / "none.bin", 0x1234).find("cannot open"), std::string::npos);
+}
+
+// A checkpoint of format version 7 (the same layout, checksummed by FNV-1a) resumes as it
+// did; its bytes under version 8's hash are corrupt.
+TEST(Checkpoint, ACheckpointOfVersionSevenIsStillRead) {
+  const auto file = test::freshDirectory("checkpoint_v7") / "checkpoint.bin";
+  writeCheckpoint(file, sample());
+  const std::string bytes = test::readFile(file);
+  test::writeFile(file, test::resealed(bytes, "ECOFOREST-CHECKPOINT", 7, BlockHash::Fnv1a));
+  const Checkpoint back = readCheckpoint(file, 0x1234);
+  EXPECT_EQ(back.state.year, 17);
+  EXPECT_EQ(back.state.plants.id, sample().state.plants.id);
+  test::writeFile(file, test::resealed(bytes, "ECOFOREST-CHECKPOINT", 7, BlockHash::Xxh3));
+  EXPECT_NE(errorOf(file, 0x1234).find("corrupt"), std::string::npos);
+  test::writeFile(file, test::resealed(bytes, "ECOFOREST-CHECKPOINT", 6, BlockHash::Fnv1a));
+  EXPECT_NE(errorOf(file, 0x1234).find("another version"), std::string::npos);
 }
 
 const Grid kGrid{10, 10, 2.0, 2.0};

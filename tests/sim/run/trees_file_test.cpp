@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "ecosystem_support.hpp"
+#include "sealed_support.hpp"
 #include "sim/run/checksummed_output.hpp"
 #include "test_files.hpp"
 
@@ -346,6 +347,25 @@ TEST(TreesFile, ACorruptTruncatedOrForeignBinaryFileIsRefused) {
   EXPECT_NE(binaryFaultOf(file).find("not a binary trees file"), std::string::npos);
 }
 
+// A binary snapshot of version 1 (the same layout, checksummed by FNV-1a) reads as it did;
+// its bytes under version 2's hash are corrupt.
+TEST(TreesFile, ABinarySnapshotOfVersionOneIsStillRead) {
+  const auto file = test::freshDirectory("trees_file_binary_v1") / "year_0010.bin";
+  TreeSnapshot snapshot;
+  snapshot.speciesNames = {"beech"};
+  for (std::uint64_t id = 1; id <= 50; ++id)
+    snapshot.trees.push_back({.id = id, .east_m = 0.5 * static_cast<double>(id), .height_m = 2.0f});
+  writeTrees(file, snapshot, SnapshotFormat::Binary);
+  const std::string bytes = test::readFile(file);
+  test::writeFile(file, test::resealed(bytes, "ECOFOREST-TREES", 1, BlockHash::Fnv1a));
+  const TreeSnapshot back = readTrees(file);
+  ASSERT_EQ(back.trees.size(), 50u);
+  EXPECT_EQ(back.trees[49].id, 50u);
+  EXPECT_EQ(back.trees[49].east_m, 25.0);
+  test::writeFile(file, test::resealed(bytes, "ECOFOREST-TREES", 1, BlockHash::Xxh3));
+  EXPECT_NE(binaryFaultOf(file).find("checksum"), std::string::npos);
+}
+
 // Values a later command would turn into NaN transforms or huge meshes are refused at the
 // first row that has one, even in a file whose checksum holds (one made on purpose).
 TEST(TreesFile, BinaryValuesOutOfRangeAreRefusedAtTheFirstRow) {
@@ -395,7 +415,7 @@ TEST(TreesFile, ABinaryFileWithABadSpeciesNameOrLengthIsRefused) {
   const std::size_t countAt = body.size() - 66 - 8;  // one record of 66 bytes
   const std::uint64_t count = 3;
   std::memcpy(body.data() + countAt, &count, sizeof count);
-  const std::uint64_t checksum = blockChecksum(body);
+  const std::uint64_t checksum = blockChecksum(body, BlockHash::Xxh3);
   test::writeFile(file, body + std::string(reinterpret_cast<const char*>(&checksum), 8));
   EXPECT_NE(binaryFaultOf(file).find("length"), std::string::npos);
 }

@@ -71,12 +71,15 @@ void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles, int coarsest
       tree.level = coarsest;
       used += type.lods[coarsest].triangleCount();
     }
-  if (used > maxTriangles)
-    throw InputError({"export", 0, "--max-triangles"},
-                     fmt::format("the terrain and every tree {} already take {} triangles, "
-                                 "more than {}",
-                                 coarsest == kBillboardLevel ? "as a billboard" : "at LOD2", used,
-                                 maxTriangles));
+  if (used > maxTriangles) {
+    const bool billboards = coarsest == kBillboardLevel;
+    throw InputError(
+        {"export", 0, "--max-triangles"},
+        fmt::format("the terrain and every tree {} already take {} triangles, more than {}: "
+                    "leave the smaller plants out with --min-height{}",
+                    billboards ? "as a billboard" : "at LOD2", used, maxTriangles,
+                    billboards ? "" : ", or add --billboards (4 triangles a tree)"));
+  }
   std::sort(trees.begin(), trees.end(), [](const Choice& a, const Choice& b) {
     return a.tree->height_m != b.tree->height_m ? a.tree->height_m > b.tree->height_m
                                                 : a.tree->id < b.tree->id;

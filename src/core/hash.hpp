@@ -1,5 +1,6 @@
-// FNV-1a, a small non-cryptographic 64-bit hash: random-stream purposes, file fingerprints
-// and checkpoint checksums.
+// FNV-1a, a small non-cryptographic 64-bit hash: random-stream purposes, file fingerprints,
+// the impostor cache's checksums and those of the first checkpoint and snapshot formats
+// (the later ones are XXH3's, sim/run/checksummed_output.hpp).
 #pragma once
 
 #include <cstdint>

@@ -51,6 +51,7 @@ class GrowthInterval {
   std::size_t size() const { return position_.size(); }
 
  private:
+  // Tree k as `tree` has it, both its states alike; then its later state and site.
   void keep(std::size_t k, const TreeRow& tree, int species);
   void keepLater(std::size_t k, const TreeRow& later);
 

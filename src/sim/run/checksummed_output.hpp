@@ -1,8 +1,8 @@
 // ecoforest's binary files (checkpoint.bin, binary tree snapshots): a magic, a format
-// version, the body, then the checksum of everything before it, made by the hash its
-// version names. A writer makes the checksum
-// while the bytes go through to their file (a landscape's file is gigabytes, which would
-// otherwise be held in memory to be hashed); a reader checks the three before the body.
+// version, the body, then the checksum of everything before it by the hash of that version.
+// A writer makes the checksum while the bytes go through to their file (a landscape's file
+// is gigabytes, which would otherwise be held in memory to be hashed); a reader checks the
+// three before the body.
 #pragma once
 
 #include <cstdint>

@@ -147,41 +147,16 @@ TEST(Forest, AnUnknownSpeciesIsAnInputError) {
   EXPECT_THROW(forestFromSnapshot(snapshot, test::smallLibrary(), "run"), InputError);
 }
 
-// A run folder holding `snapshot` as its year 1, in `format`.
-RunFolder runHolding(const std::string& name, const TreeSnapshot& snapshot, SnapshotFormat format) {
-  RunFolder run;
-  run.dir = test::freshDirectory(name);
-  std::filesystem::create_directories(run.dir / "trees");
-  writeTrees(RunPaths{run.dir}.snapshot(1, format), snapshot, format);
-  run.snapshotYears = {1};
-  return run;
-}
-
 TEST(Forest, ARunsSnapshotBuiltBatchByBatchIsTheForestOfItsRowsRead) {
   // More rows than a batch of the binary reader (2^20), of every height, light and crown
   // base, so that the batches meet and each draws its own types and leans.
   const TreeLibrary& library = test::shapedLibrary();
   TreeSnapshot snapshot;
+  snapshot.year = 1;
   snapshot.speciesNames = {"beech"};
   const std::size_t n = (std::size_t{1} << 20) + 5000;
-  snapshot.trees.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const float height = 0.2f + static_cast<float>(i % 301) * 0.1f;
-    const double angle = 0.001 * static_cast<double>(i);
-    snapshot.trees[i] = {
-        .id = i + 1,
-        .east_m = static_cast<double>(i % 1000),
-        .north_m = static_cast<double>(i / 1000),
-        .ground_m = 300,
-        .age_years = 10,
-        .height_m = height,
-        .crownRadius_m = 0.2f * height,
-        .crownBase_m = static_cast<float>(i % 7) * 0.1f * height,
-        .vigor = static_cast<float>(i % 11) / 10.0f,
-        .variantSeed = static_cast<std::uint32_t>(i * 2654435761u),
-        .site = {.light = {0.5 * std::cos(angle), 0.5 * std::sin(angle)}, .wind = {0.2, 0.0}}};
-  }
-  const RunFolder run = runHolding("forest_from_run", snapshot, SnapshotFormat::Binary);
+  for (std::uint64_t id = 1; id <= n; ++id) snapshot.trees.push_back(test::variedTree(id));
+  const RunFolder run = test::runHolding("forest_from_run", {&snapshot}, SnapshotFormat::Binary);
   EXPECT_GE(snapshotRowsAtMost(run, 1), n);
   const Forest batched = forestFromRun(run, 1, library);
   test::expectSameForest(batched, forestFromSnapshot(readSnapshot(run, 1), library, "run"));
@@ -192,6 +167,7 @@ TEST(Forest, ARunsSnapshotBuiltBatchByBatchIsTheForestOfItsRowsRead) {
 TEST(Forest, ARunsCsvSnapshotNamesItsSpeciesAsItsRowsComeAndAnUnknownOneIsAnInputError) {
   const TreeLibrary& library = test::smallLibrary();
   TreeSnapshot snapshot;
+  snapshot.year = 1;
   snapshot.speciesNames = {"maple", "beech"};
   for (std::uint64_t id = 1; id <= 40; ++id)
     snapshot.trees.push_back({.id = id,
@@ -200,11 +176,12 @@ TEST(Forest, ARunsCsvSnapshotNamesItsSpeciesAsItsRowsComeAndAnUnknownOneIsAnInpu
                               .height_m = 0.5f * static_cast<float>(id),
                               .vigor = 0.7f,
                               .variantSeed = static_cast<std::uint32_t>(id)});
-  const RunFolder run = runHolding("forest_from_run_csv", snapshot, SnapshotFormat::Csv);
+  const RunFolder run = test::runHolding("forest_from_run_csv", {&snapshot}, SnapshotFormat::Csv);
   test::expectSameForest(forestFromRun(run, 1, library),
                          forestFromSnapshot(readSnapshot(run, 1), library, "run"));
   snapshot.speciesNames[1] = "baobab";
-  const RunFolder foreign = runHolding("forest_from_run_foreign", snapshot, SnapshotFormat::Csv);
+  const RunFolder foreign =
+      test::runHolding("forest_from_run_foreign", {&snapshot}, SnapshotFormat::Csv);
   try {
     forestFromRun(foreign, 1, library);
     ADD_FAILURE() << "a species the library lacks was drawn";

@@ -154,19 +154,6 @@ TEST(GrowthTimeline, AnIntervalPairedOnceGivesEachFrameTheForestOfItsYear) {
   EXPECT_EQ(interval.forestAt(20.0).size(), p.after.trees.size());
 }
 
-// A run folder holding each snapshot as the year it names, in `format`.
-RunFolder runHolding(const std::string& name, const std::vector<const TreeSnapshot*>& snapshots,
-                     SnapshotFormat format) {
-  RunFolder run;
-  run.dir = test::freshDirectory(name);
-  std::filesystem::create_directories(run.dir / "trees");
-  for (const TreeSnapshot* snapshot : snapshots) {
-    writeTrees(RunPaths{run.dir}.snapshot(snapshot->year, format), *snapshot, format);
-    run.snapshotYears.push_back(snapshot->year);
-  }
-  return run;
-}
-
 TEST(GrowthTimeline, SnapshotsReadBatchByBatchGiveTheFramesOfTheSnapshotsReadWhole) {
   // More rows than a batch of the binary reader (2^20) in each, of every height, light and
   // crown base, a fifth dying and a sixth new, so that the batches meet among the pairs.
@@ -178,20 +165,7 @@ TEST(GrowthTimeline, SnapshotsReadBatchByBatchGiveTheFramesOfTheSnapshotsReadWho
   const std::uint64_t n = 1400000;  // 1.17 million earlier, 1.12 million later
   std::size_t newcomers = 0;
   for (std::uint64_t id = 1; id <= n; ++id) {
-    const float height = 0.2f + static_cast<float>(id % 301) * 0.1f;
-    const double angle = 0.001 * static_cast<double>(id);
-    const TreeRow tree{
-        .id = id,
-        .east_m = static_cast<double>(id % 1000),
-        .north_m = static_cast<double>(id / 1000),
-        .ground_m = 300,
-        .age_years = static_cast<int>(id % 30),
-        .height_m = height,
-        .crownRadius_m = 0.2f * height,
-        .crownBase_m = static_cast<float>(id % 7) * 0.1f * height,
-        .vigor = static_cast<float>(id % 11) / 10.0f,
-        .variantSeed = static_cast<std::uint32_t>(id * 2654435761u),
-        .site = {.light = {0.5 * std::cos(angle), 0.5 * std::sin(angle)}, .wind = {0.2, 0.0}}};
+    const TreeRow tree = test::variedTree(id);
     if (id % 6 != 0) p.before.trees.push_back(tree);
     if (id % 5 != 0) {
       newcomers += id % 6 == 0;
@@ -203,7 +177,7 @@ TEST(GrowthTimeline, SnapshotsReadBatchByBatchGiveTheFramesOfTheSnapshotsReadWho
     }
   }
   const RunFolder run =
-      runHolding("growth_interval_batches", {&p.before, &p.after}, SnapshotFormat::Binary);
+      test::runHolding("growth_interval_batches", {&p.before, &p.after}, SnapshotFormat::Binary);
   const GrowthInterval whole(p.before, p.after, library, "run");
   const GrowthInterval batched(SnapshotRows::of(run, 40), SnapshotRows::of(run, 50), library,
                                "run");
@@ -215,7 +189,7 @@ TEST(GrowthTimeline, SnapshotsReadBatchByBatchGiveTheFramesOfTheSnapshotsReadWho
 
 TEST(GrowthTimeline, FromTheBareLandscapeEveryTreeIsANewcomer) {
   const Pair p = pair();
-  const RunFolder run = runHolding("growth_interval_bare", {&p.after}, SnapshotFormat::Csv);
+  const RunFolder run = test::runHolding("growth_interval_bare", {&p.after}, SnapshotFormat::Csv);
   const GrowthInterval interval(SnapshotRows::of(run, 0), SnapshotRows::of(run, 20), library(),
                                 "run");
   EXPECT_EQ(interval.size(), 2u);

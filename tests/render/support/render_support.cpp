@@ -1,6 +1,8 @@
 #include "render_support.hpp"
 
 #include "sim/image_io.hpp"
+#include "sim/run/run_format.hpp"
+#include "sim/run/trees_file.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -162,6 +164,34 @@ void expectSameForest(const Forest& a, const Forest& b) {
   EXPECT_EQ(a.presence, b.presence);
   EXPECT_EQ(a.blendType, b.blendType);
   EXPECT_EQ(a.blendWeight, b.blendWeight);
+}
+
+TreeRow variedTree(std::uint64_t id) {
+  const float height = 0.2f + static_cast<float>(id % 301) * 0.1f;
+  const double angle = 0.001 * static_cast<double>(id);
+  return {.id = id,
+          .east_m = static_cast<double>(id % 1000),
+          .north_m = static_cast<double>(id / 1000),
+          .ground_m = 300,
+          .age_years = static_cast<int>(id % 30),
+          .height_m = height,
+          .crownRadius_m = 0.2f * height,
+          .crownBase_m = static_cast<float>(id % 7) * 0.1f * height,
+          .vigor = static_cast<float>(id % 11) / 10.0f,
+          .variantSeed = static_cast<std::uint32_t>(id * 2654435761u),
+          .site = {.light = {0.5 * std::cos(angle), 0.5 * std::sin(angle)}, .wind = {0.2, 0.0}}};
+}
+
+RunFolder runHolding(const std::string& name, std::initializer_list<const TreeSnapshot*> snapshots,
+                     SnapshotFormat format) {
+  RunFolder run;
+  run.dir = freshDirectory(name);
+  std::filesystem::create_directories(run.dir / "trees");
+  for (const TreeSnapshot* snapshot : snapshots) {
+    writeTrees(RunPaths{run.dir}.snapshot(snapshot->year, format), *snapshot, format);
+    run.snapshotYears.push_back(snapshot->year);
+  }
+  return run;
 }
 
 }  // namespace eco::test

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <string>
 
@@ -64,6 +65,14 @@ double maxBlockDifference(const Image& a, const Image& b, int block);
 
 // Expects every array of two forests alike, tree by tree (gtest failures).
 void expectSameForest(const Forest& a, const Forest& b);
+
+// A snapshot's row `id` of a long run of rows of every height, crown base, vigor, age, light
+// direction and variant: rows across a reader's batches that draw many types and leans.
+TreeRow variedTree(std::uint64_t id);
+
+// A fresh run folder named `name` holding each snapshot as the year it names, in `format`.
+RunFolder runHolding(const std::string& name, std::initializer_list<const TreeSnapshot*> snapshots,
+                     SnapshotFormat format);
 
 // Reads and writes reference PNGs in tests/render/reference/. Set ECOFOREST_UPDATE_REFERENCES=1
 // to rewrite them from the current output.

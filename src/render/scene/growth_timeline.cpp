@@ -51,22 +51,23 @@ void GrowthInterval::keepLater(std::size_t k, const TreeRow& later) {
 GrowthInterval::GrowthInterval(const SnapshotRows& before, const SnapshotRows& after,
                                const TreeLibrary& library, const std::string& where)
     : fromYear_(before.year), toYear_(after.year), library_(library) {
+  // Every tree's column alike (lives_ and established_ are the earlier trees' and the
+  // newcomers' alone).
+  auto eachColumn = [&](const auto& apply) {
+    apply(position_);
+    apply(individual_);
+    apply(variantSeed_);
+    apply(species_);
+    apply(height_);
+    apply(crownRadius_);
+    apply(vigor_);
+    apply(siteLean_);
+    apply(clearBole_);
+  };
+  auto resize = [&](std::size_t n) { eachColumn([&](auto& column) { column.resize(n); }); };
   // Room for every tree of both at most: room a newcomer does not take is never touched.
   const std::size_t room = before.rowsAtMost + after.rowsAtMost;
-  auto resize = [&](std::size_t n) {
-    for (auto* column : {&height_, &crownRadius_, &vigor_, &siteLean_}) column->resize(n);
-    position_.resize(n);
-    individual_.resize(n);
-    variantSeed_.resize(n);
-    species_.resize(n);
-    clearBole_.resize(n);
-  };
-  for (auto* column : {&height_, &crownRadius_, &vigor_, &siteLean_}) column->reserve(room);
-  position_.reserve(room);
-  individual_.reserve(room);
-  variantSeed_.reserve(room);
-  species_.reserve(room);
-  clearBole_.reserve(room);
+  eachColumn([&](auto& column) { column.reserve(room); });
 
   // The earlier trees with their ids, which are sorted to be searched for the later trees'
   // (16 bytes a tree while the later snapshot is read, where a hash map takes 40).

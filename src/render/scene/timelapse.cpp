@@ -25,8 +25,8 @@ double secondsSince(Clock::time_point start) {
 
 // Whether a snapshot's rows, read whole, would take at most a quarter of the memory the
 // machine has available: a valley's few hundred megabytes do, a landscape's gigabytes not.
-bool fitsWhole(const RunFolder& run, int year) {
-  return snapshotRowsAtMost(run, year) * sizeof(TreeRow) <= availableMemoryBytes().value_or(0) / 4;
+bool fitsWhole(const SnapshotRows& rows) {
+  return rows.rowsAtMost * sizeof(TreeRow) <= availableMemoryBytes().value_or(0) / 4;
 }
 
 }  // namespace
@@ -119,12 +119,16 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
       if (years[after] != intervalEnd) {
         interval.reset();
         const int from = years[after - 1], to = years[after];
+        // Its rows counted once (a CSV file's lines are counted through the file).
+        SnapshotRows laterRows = SnapshotRows::of(run, to);
         std::optional<TreeSnapshot> later;
-        if (fitsWhole(run, to)) later = readSnapshot(run, to);
+        if (fitsWhole(laterRows)) {
+          later = readSnapshot(run, to);
+          laterRows = SnapshotRows::of(*later);
+        }
         interval.emplace(
             kept && kept->year == from ? SnapshotRows::of(*kept) : SnapshotRows::of(run, from),
-            later ? SnapshotRows::of(*later) : SnapshotRows::of(run, to), library,
-            run.dir.string());
+            laterRows, library, run.dir.string());
         kept = std::move(later);
         intervalEnd = to;
       }

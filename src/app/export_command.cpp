@@ -90,8 +90,10 @@ void runExport(const ExportArgs& args) {
   const int year = args.year.value_or(source.defaultYear());
   source.requireSnapshot(year);
   if (geojson || csv) return exportTreeRows(args, source, year, geojson);
-  const TreeSnapshot snapshot = readSnapshot(*source.run, year, tallEnough(args));
   source.buildLibrary(LibrarySettings::shaped(!args.noShaping));
+  requireBudgetReachable(source.terrain, *source.library, *source.run, year, tallEnough(args),
+                         options);
+  const TreeSnapshot snapshot = readSnapshot(*source.run, year, tallEnough(args));
   const Forest forest = forestFromSnapshot(snapshot, *source.library, source.run->dir.string());
   // Billboards are pictures of the trees: the renderer bakes them, headless.
   std::optional<Billboards> billboards;

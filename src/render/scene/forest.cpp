@@ -135,10 +135,7 @@ void placeRows(Forest& forest, std::size_t start, std::span<const TreeRow> rows,
                const std::vector<int>& librarySpecies, const TreeLibrary& library) {
   tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t i) {
     const TreeRow& tree = rows[i];
-    const int species = librarySpecies[tree.species];
-    const int type =
-        library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species),
-                        siteShapingOf(tree, library).clearBole);
+    const int type = drawnType(tree, librarySpecies[tree.species], library);
     forest.place(start + i, library, type, worldFromMap(tree.east_m, tree.north_m, tree.ground_m),
                  tree.height_m, tree.crownRadius_m, tree.vigor, tree.variantSeed ^ tree.id);
   });
@@ -151,6 +148,11 @@ void placeRows(Forest& forest, std::size_t start, std::span<const TreeRow> rows,
 }
 
 }  // namespace
+
+int drawnType(const TreeRow& tree, int species, const TreeLibrary& library) {
+  return library.typeFor(species, tree.variantSeed, tree.height_m, library.maxHeight_m(species),
+                         siteShapingOf(tree, library).clearBole);
+}
 
 std::vector<int> typesOf(const Forest& forest) {
   return typesIn(forest.type, forest.blendType);

@@ -88,6 +88,10 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
 // bytes each of the forest, never the rows' 88 besides.
 Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library);
 
+// The library type that draws a snapshot's tree of the library's species `species`: its
+// variant by its seed, its age class by its height, its crown class by its clear bole.
+int drawnType(const TreeRow& tree, int species, const TreeLibrary& library);
+
 // The model's shaping of a snapshot's tree as `library` draws it: its light and wind turned
 // into the tree frame (east, south), and the share of its height below the crown base;
 // neutral in a library without shaping.

@@ -53,6 +53,18 @@ TreeMesh treeMesh(const WindMesh& wind) {
   return mesh;
 }
 
+// An InputError unless the terrain and every tree at the coarsest level (`used` triangles)
+// fit the budget, saying how to make them fit.
+void requireWithinBudget(std::size_t used, std::size_t maxTriangles, bool billboards) {
+  if (used <= maxTriangles) return;
+  throw InputError(
+      {"export", 0, "--max-triangles"},
+      fmt::format("the terrain and every tree {} already take {} triangles, more than {}: "
+                  "leave the smaller plants out with --min-height{}",
+                  billboards ? "as a billboard" : "at LOD2", used, maxTriangles,
+                  billboards ? "" : ", or add --billboards (4 triangles a tree)"));
+}
+
 // Each tree's level under a triangle budget. Every tree starts at the coarsest level (the
 // billboard, or LOD2 without billboards); then level by level toward LOD0, the tallest
 // trees first, each tree of the previous pass moves one level finer while the budget
@@ -71,15 +83,7 @@ void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles, int coarsest
       tree.level = coarsest;
       used += type.lods[coarsest].triangleCount();
     }
-  if (used > maxTriangles) {
-    const bool billboards = coarsest == kBillboardLevel;
-    throw InputError(
-        {"export", 0, "--max-triangles"},
-        fmt::format("the terrain and every tree {} already take {} triangles, more than {}: "
-                    "leave the smaller plants out with --min-height{}",
-                    billboards ? "as a billboard" : "at LOD2", used, maxTriangles,
-                    billboards ? "" : ", or add --billboards (4 triangles a tree)"));
-  }
+  requireWithinBudget(used, maxTriangles, coarsest == kBillboardLevel);
   std::sort(trees.begin(), trees.end(), [](const Choice& a, const Choice& b) {
     return a.tree->height_m != b.tree->height_m ? a.tree->height_m > b.tree->height_m
                                                 : a.tree->id < b.tree->id;
@@ -206,6 +210,36 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
   if (options.maxTriangles > 0)
     chooseLevels(scene, options.maxTriangles, withBillboards ? kBillboardLevel : kLodCount - 1);
   return scene;
+}
+
+void requireBudgetReachable(const Terrain& terrain, const TreeLibrary& library,
+                            const RunFolder& run, int year, const TreeFilter& keep,
+                            const ForestGltfOptions& options) {
+  if (options.maxTriangles == 0) return;
+  // Each type's trees, counted as the rows are read: neither the rows nor a forest held.
+  std::vector<std::size_t> treesOfType(static_cast<std::size_t>(library.typeCount()), 0);
+  SpeciesNumbering librarySpecies(library, run.dir.string());
+  readSnapshotInBatches(
+      run, year, keep,
+      [&](std::span<const TreeRow> rows, const std::vector<std::string>& speciesNames) {
+        const std::vector<int>& species = librarySpecies.of(speciesNames);
+        for (const TreeRow& tree : rows)
+          ++treesOfType[static_cast<std::size_t>(drawnType(tree, species[tree.species], library))];
+      });
+  const bool billboards = options.billboards || options.lod == kBillboardLevel;
+  std::vector<int> types;
+  for (std::size_t t = 0; t < treesOfType.size(); ++t)
+    if (treesOfType[t] > 0) types.push_back(static_cast<int>(t));
+  library.build(types);  // side by side; the export draws them next
+  std::size_t used = terrainPart(terrain).triangleCount();
+  for (const int t : types) {
+    const TreeType& type = library.type(t);
+    const std::size_t each = billboards
+                                 ? billboardMesh(type, ImpostorSettings{}.frames).triangleCount()
+                                 : type.meshes.lods[kLodCount - 1].triangleCount();
+    used += treesOfType[static_cast<std::size_t>(t)] * each;
+  }
+  requireWithinBudget(used, options.maxTriangles, billboards);
 }
 
 ForestGltfSummary exportForest(const Terrain& terrain, const TreeLibrary& library,

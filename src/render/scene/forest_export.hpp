@@ -14,6 +14,7 @@
 #include "render/scene/forest.hpp"
 #include "render/scene/impostor.hpp"
 #include "render/scene/tree_library.hpp"
+#include "sim/run/run_folder.hpp"
 #include "sim/run/run_format.hpp"
 #include "sim/terrain.hpp"
 
@@ -38,6 +39,15 @@ ForestGltfScene forestGltfScene(const Terrain& terrain, const TreeLibrary& libra
                                 const Forest& forest, const std::vector<TreeRow>& rows,
                                 const ForestGltfOptions& options,
                                 const Billboards* billboards = nullptr);
+
+// An InputError, before any forest is built, where options.maxTriangles cannot hold the
+// terrain and every tree of the run's snapshot of `year` that `keep` keeps at the coarsest
+// level the budget starts from (a billboard, or LOD2 without billboards): the types' trees
+// are counted as the snapshot is read a batch of rows at a time, so a landscape is refused
+// in the time it takes to read it, holding none of it. Nothing to check without a budget.
+void requireBudgetReachable(const Terrain& terrain, const TreeLibrary& library,
+                            const RunFolder& run, int year, const TreeFilter& keep,
+                            const ForestGltfOptions& options);
 
 // forestGltfScene written to `file` (.glb, or .gltf with STEM.bin beside it).
 ForestGltfSummary exportForest(const Terrain& terrain, const TreeLibrary& library,

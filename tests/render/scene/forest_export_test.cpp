@@ -184,6 +184,53 @@ TEST(ForestGltf, ATriangleBudgetGoesToTheTallestTreesFirst) {
   }
 }
 
+// A budget is checked against a run's snapshot before any forest is built: the same count
+// as the scene's at the coarsest level, of the plants the filter keeps, with billboards too.
+TEST(ForestGltf, ABudgetIsCheckedAgainstTheSnapshotBeforeTheForestIsBuilt) {
+  const Terrain terrain = smallScene().terrain;
+  const TreeLibrary& library = test::smallLibrary();
+  TreeSnapshot snapshot;
+  snapshot.year = 7;
+  snapshot.speciesNames = {"maple", "beech"};
+  for (std::uint64_t id = 1; id <= 200; ++id) {
+    snapshot.trees.push_back(test::variedTree(id));
+    snapshot.trees.back().species = static_cast<int>(id % 2);
+  }
+  const RunFolder run =
+      test::runHolding("forest_gltf_budget_check", {&snapshot}, SnapshotFormat::Binary);
+  // The fewest triangles of the scene the export would build of the rows `keep` keeps.
+  auto fewest = [&](const TreeFilter& keep, bool billboards) {
+    const TreeSnapshot kept = readSnapshot(run, snapshot.year, keep);
+    const Forest forest = forestFromSnapshot(kept, library, "run");
+    const ForestGltfScene scene =
+        forestGltfScene(terrain, library, forest, kept.trees, {.lod = billboards ? 1 : 2});
+    std::size_t n = scene.terrain.triangleCount();
+    for (const ForestGltfType& t : scene.types)
+      n += t.trees.size() * (billboards ? billboardMesh(library.type(0), 8).triangleCount()
+                                        : t.lods[2].triangleCount());
+    return n;
+  };
+  const TreeFilter tall = [](const TreeRow& tree) { return tree.height_m >= 15.0f; };
+  for (const bool billboards : {false, true})
+    for (const TreeFilter& keep : {TreeFilter{}, tall}) {
+      const std::size_t least = fewest(keep, billboards);
+      const ForestGltfOptions enough{.billboards = billboards, .maxTriangles = least};
+      EXPECT_NO_THROW(requireBudgetReachable(terrain, library, run, snapshot.year, keep, enough));
+      ForestGltfOptions under = enough;
+      --under.maxTriangles;
+      try {
+        requireBudgetReachable(terrain, library, run, snapshot.year, keep, under);
+        ADD_FAILURE() << "a budget of " << under.maxTriangles << " was taken";
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(std::to_string(least) + " triangles"),
+                  std::string::npos)
+            << e.what();
+      }
+    }
+  EXPECT_LT(fewest(tall, false), fewest({}, false));  // the filter counts
+  EXPECT_NO_THROW(requireBudgetReachable(terrain, library, run, snapshot.year, {}, {}));
+}
+
 // Two crossed quads, each the square of the type's bounding sphere across its frame's axes,
 // facing its direction: east's frame on the left half of the picture, south's on the right.
 TEST(ForestGltf, ABillboardIsTwoQuadsFacingTheirFrames) {

@@ -421,15 +421,12 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const TreeType& type = library_.type(forest.type[i]);
-      const float sx = forest.scaleXZ[i], sy = forest.scaleY[i];
-      const float c = std::cos(forest.yaw[i]), s = std::sin(forest.yaw[i]);
-      const glm::vec3 local(type.bounds.x * sx, type.bounds.y * sy, type.bounds.z * sx);
-      const glm::vec3 centre = forest.position[i] + glm::vec3(c * local.x - s * local.z, local.y,
-                                                              s * local.x + c * local.z);
-      const float radius = type.bounds.w * std::max(sx, sy);
+      const glm::vec4 bounds = drawnBounds(forest, i, type);
+      const glm::vec3 centre(bounds);
+      const float radius = bounds.w;
       const float distance = glm::length(centre - camera.position);
       distances_[i] = distance;
-      const float height_m = type.height_m * sy;
+      const float height_m = type.height_m * forest.scaleY[i];
       const float pixels = projectedPixels(height_m, distance, pixelsPerRadian);
       const bool inView = frustum.intersectsSphere(centre, radius);
       if (inView) choices_[i] = chooseLevel(pixels, lod);

@@ -183,7 +183,11 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
 
 void SceneRenderer::setForestFloor(const Forest& forest) {
   if (!forest_) return;
-  const CanopyFloor floor = canopyFloor(forest, forest_->library(), terrainData_.grid);
+  setForestFloor(canopyFloor(forest, forest_->library(), terrainData_.grid));
+}
+
+void SceneRenderer::setForestFloor(const CanopyFloor& floor) {
+  if (!forest_) return;
   Field cover = floor.cover();
   terrain_.setCanopyCover(cover);
   terrain_.setCanopyFloor(floor);
@@ -198,10 +202,10 @@ void SceneRenderer::setGroundMoisture(Field moisture) {
 DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size, int samples) {
   auto target =
       std::make_shared<RenderTarget>(RenderTarget::create(size.width, size.height, 0, samples));
-  return [&renderer, target](const Forest& forest, const Camera& camera,
+  return [&renderer, target](const FrameTrees& trees, const Camera& camera,
                              const RenderOptions& options) {
-    renderer.setForestFloor(forest);  // each frame's trees: the floor grows with them
-    renderer.render(&forest, camera, options, *target);
+    renderer.setForestFloor(trees.floor);  // each frame's trees: the floor grows with them
+    renderer.render(&trees.shown, camera, options, *target);
     return readPixels(*target);
   };
 }

@@ -37,6 +37,8 @@ class SceneRenderer {
   // Lays the forest floor under these trees (leaf litter where crowns cover the ground,
   // forest_floor.hpp, and the ground cover's light); kept until called again.
   void setForestFloor(const Forest& forest);
+  // The same from a floor summed already (the crowns of a frame's trees, shown or not).
+  void setForestFloor(const CanopyFloor& floor);
   // The ground's moisture on Ellenberg's F scale (sim's moistureOf), which the meadow's colour
   // and the ground cover follow; without it the ground is fresh everywhere.
   void setGroundMoisture(Field moisture);

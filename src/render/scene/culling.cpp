@@ -62,9 +62,13 @@ std::array<float, 3> switchPixelsFor(RenderQuality quality) {
   return LodSettings{}.switchPixels;
 }
 
+bool tooSmallToDraw(float pixels, const LodSettings& s) {
+  return s.forcedLevel < 0 && pixels < s.minPixels;
+}
+
 LodChoice chooseLevel(float pixels, const LodSettings& s) {
   if (s.forcedLevel >= 0) return {static_cast<std::int8_t>(s.forcedLevel), -1, 0.0f};
-  if (pixels < s.minPixels) return {};
+  if (tooSmallToDraw(pixels, s)) return {};
   const int coarsest = s.impostors ? kLevelImpostor : 2;
   int level = 0;
   while (level < coarsest) {

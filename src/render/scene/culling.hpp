@@ -57,5 +57,8 @@ std::array<float, 3> switchPixelsFor(RenderQuality quality);
 // Height in pixels of an object of height `height_m` at `distance_m` (perspective).
 float projectedPixels(float height_m, float distance_m, float pixelsPerRadian);
 LodChoice chooseLevel(float pixels, const LodSettings& settings);
+// Whether a tree of `pixels` is neither drawn nor casts a shadow: under minPixels, where no
+// level is forced on every tree.
+bool tooSmallToDraw(float pixels, const LodSettings& settings);
 
 }  // namespace eco

@@ -154,6 +154,15 @@ int drawnType(const TreeRow& tree, int species, const TreeLibrary& library) {
                          siteShapingOf(tree, library).clearBole);
 }
 
+glm::vec4 drawnBounds(const Forest& forest, std::size_t i, const TreeType& type) {
+  const float sx = forest.scaleXZ[i], sy = forest.scaleY[i];
+  const float c = std::cos(forest.yaw[i]), s = std::sin(forest.yaw[i]);
+  const glm::vec3 local(type.bounds.x * sx, type.bounds.y * sy, type.bounds.z * sx);
+  const glm::vec3 centre =
+      forest.position[i] + glm::vec3(c * local.x - s * local.z, local.y, s * local.x + c * local.z);
+  return {centre, type.bounds.w * std::max(sx, sy)};
+}
+
 std::vector<int> typesOf(const Forest& forest) {
   return typesIn(forest.type, forest.blendType);
 }

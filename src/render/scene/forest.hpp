@@ -52,6 +52,10 @@ struct Forest {
              float height_m, float crownRadius_m, float vigor, std::uint64_t individual);
 };
 
+// The sphere around tree i as drawn: its type's bounds (TreeType::bounds) turned by its yaw,
+// scaled and placed; (centre, radius) in world metres.
+glm::vec4 drawnBounds(const Forest& forest, std::size_t i, const TreeType& type);
+
 // The library types a forest draws (each tree's type and the one it blends into), each once
 // in ascending order.
 std::vector<int> typesOf(const Forest& forest);

@@ -20,25 +20,30 @@ Field CanopyFloor::cover() const {
   return share;
 }
 
-CanopyFloor canopyFloor(const Forest& forest, const TreeLibrary& library, const Grid& grid) {
-  constexpr std::size_t kBands = kCanopyHeightTops_m.size();
-  std::vector<std::array<double, kBands>> area(grid.cellCount(), std::array<double, kBands>{});
-  std::vector<glm::dvec3> colour(grid.cellCount(), glm::dvec3(0.0));
-  std::vector<glm::vec3> leafColors;
+CanopyFloorSum::CanopyFloorSum(const TreeLibrary& library, const Grid& grid)
+    : library_(library),
+      grid_(grid),
+      area_(grid.cellCount(), std::array<double, kCanopyHeightTops_m.size()>{}),
+      colour_(grid.cellCount(), glm::dvec3(0.0)) {
   for (const Species& s : library.species()) {
     const glm::vec3 c = s.appearance.leafColor;
-    leafColors.emplace_back(linearFromSrgb(c.r), linearFromSrgb(c.g), linearFromSrgb(c.b));
+    leafColors_.emplace_back(linearFromSrgb(c.r), linearFromSrgb(c.g), linearFromSrgb(c.b));
   }
+}
+
+void CanopyFloorSum::add(const Forest& forest) {
+  constexpr std::size_t kBands = kCanopyHeightTops_m.size();
+  const Grid& grid = grid_;
   for (std::size_t i = 0; i < forest.size(); ++i) {
     const int type = forest.type[i];
-    const float radius = library.typeCrownRadius_m(type) * forest.scaleXZ[i];
+    const float radius = library_.typeCrownRadius_m(type) * forest.scaleXZ[i];
     const double crown = std::numbers::pi * radius * radius * forest.presence[i];
     if (crown <= 0.0) continue;
-    const float height = library.typeHeight_m(type) * forest.scaleY[i];
+    const float height = library_.typeHeight_m(type) * forest.scaleY[i];
     const auto band = static_cast<std::size_t>(std::min<std::ptrdiff_t>(
         std::ranges::upper_bound(kCanopyHeightTops_m, height) - kCanopyHeightTops_m.begin(),
         kBands - 1));
-    const glm::dvec3 leaves(leafColors[library.type(type).species] * forest.tint[i]);
+    const glm::dvec3 leaves(leafColors_[library_.type(type).species] * forest.tint[i]);
     // Map east and north of the stem (world x east, z south), and its cell.
     const double east = forest.position[i].x, north = -forest.position[i].z;
     const int cx = static_cast<int>(std::lround(east / grid.dx_m));
@@ -56,8 +61,8 @@ CanopyFloor canopyFloor(const Forest& forest, const TreeLibrary& library, const 
         }
     };
     auto add = [&](std::size_t cell, double share) {
-      area[cell][band] += share;
-      colour[cell] += share * leaves;
+      area_[cell][band] += share;
+      colour_[cell] += share * leaves;
     };
     forEachCovered([&](int, int) { ++covered; });
     if (covered > 0)
@@ -65,19 +70,28 @@ CanopyFloor canopyFloor(const Forest& forest, const TreeLibrary& library, const 
     else if (grid.contains(cx, cy))
       add(grid.index(cx, cy), crown);
   }
-  const double cellArea = grid.dx_m * grid.dy_m;
+}
+
+CanopyFloor CanopyFloorSum::floor() const {
+  const double cellArea = grid_.dx_m * grid_.dy_m;
   CanopyFloor floor;
-  floor.crownsBelow.resize(grid.cellCount());
-  floor.leafColor.resize(grid.cellCount());
-  for (std::size_t c = 0; c < area.size(); ++c) {
+  floor.crownsBelow.resize(area_.size());
+  floor.leafColor.resize(area_.size());
+  for (std::size_t c = 0; c < area_.size(); ++c) {
     double below = 0.0;
-    for (std::size_t b = 0; b < kBands; ++b) {
-      below += area[c][b];
+    for (std::size_t b = 0; b < kCanopyHeightTops_m.size(); ++b) {
+      below += area_[c][b];
       floor.crownsBelow[c][b] = static_cast<float>(below / cellArea);
     }
-    floor.leafColor[c] = below > 0.0 ? glm::vec3(colour[c] / below) : glm::vec3(0.0f);
+    floor.leafColor[c] = below > 0.0 ? glm::vec3(colour_[c] / below) : glm::vec3(0.0f);
   }
   return floor;
+}
+
+CanopyFloor canopyFloor(const Forest& forest, const TreeLibrary& library, const Grid& grid) {
+  CanopyFloorSum sum(library, grid);
+  sum.add(forest);
+  return sum.floor();
 }
 
 }  // namespace eco

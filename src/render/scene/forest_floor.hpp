@@ -8,6 +8,7 @@
 #include <array>
 #include <vector>
 
+#include <glm/ext/vector_double3.hpp>
 #include <glm/vec3.hpp>
 
 #include "render/scene/forest.hpp"
@@ -37,5 +38,22 @@ struct CanopyFloor {
 };
 
 CanopyFloor canopyFloor(const Forest& forest, const TreeLibrary& library, const Grid& grid);
+
+// The same summed over forests added one after another (a frame made in parts): the floor of
+// their trees together, the same to the bit as canopyFloor of one forest holding them all in
+// that order.
+class CanopyFloorSum {
+ public:
+  CanopyFloorSum(const TreeLibrary& library, const Grid& grid);
+  void add(const Forest& forest);
+  CanopyFloor floor() const;
+
+ private:
+  const TreeLibrary& library_;
+  const Grid& grid_;
+  std::vector<glm::vec3> leafColors_;                                 // [species], linear
+  std::vector<std::array<double, kCanopyHeightTops_m.size()>> area_;  // [cell][height band]
+  std::vector<glm::dvec3> colour_;  // [cell]: the crowns' colours times their areas
+};
 
 }  // namespace eco

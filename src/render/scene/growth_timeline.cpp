@@ -139,21 +139,26 @@ GrowthInterval::GrowthInterval(const SnapshotRows& before, const SnapshotRows& a
 }
 
 Forest GrowthInterval::forestAt(double year) const {
+  return forestAt(year, 0, size());
+}
+
+Forest GrowthInterval::forestAt(double year, std::size_t first, std::size_t last) const {
   const double span = std::max(toYear_ - fromYear_, 1);
   const float f = static_cast<float>(std::clamp((year - fromYear_) / span, 0.0, 1.0));
   // The places of the trees shown: every earlier tree but those dead by the end, and the
-  // newcomers established by `year`, each in its order.
-  const std::size_t n = size();
+  // newcomers established by `year`, each in its order; place[k - first] for tree k.
+  const std::size_t n = last - first;
   std::vector<std::uint32_t> place(n + 1, 0);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
-    place[k + 1] = k < earlier_ ? (lives_[k] != 0 || f < 1.0f) : year >= established_[k - earlier_];
+  tbb::parallel_for(first, last, [&](std::size_t k) {
+    place[k - first + 1] =
+        k < earlier_ ? (lives_[k] != 0 || f < 1.0f) : year >= established_[k - earlier_];
   });
   std::partial_sum(place.begin(), place.end(), place.begin());
 
   Forest forest;
   forest.resize(place.back());
   auto put = [&](std::size_t k, float height, float crown, float vigor, float presence) {
-    const std::size_t slot = place[k];
+    const std::size_t slot = place[k - first];
     const TreeLibrary::Blend blend = library_.blendFor(
         species_[k], variantSeed_[k], height, library_.maxHeight_m(species_[k]), clearBole_[k]);
     forest.place(slot, library_, blend.type, position_[k], height, crown, vigor, individual_[k]);
@@ -161,8 +166,8 @@ Forest GrowthInterval::forestAt(double year) const {
     forest.blendWeight[slot] = blend.blendWeight;
     forest.presence[slot] = presence;
   };
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
-    if (place[k + 1] == place[k]) return;  // not shown
+  tbb::parallel_for(first, last, [&](std::size_t k) {
+    if (place[k - first + 1] == place[k - first]) return;  // not shown
     if (k < earlier_) {
       if (lives_[k] == 0) {  // died in between: fades out over the interval
         put(k, height_[k].x, crownRadius_[k].x, vigor_[k].x, 1.0f - f);
@@ -184,9 +189,10 @@ Forest GrowthInterval::forestAt(double year) const {
   });
   // The leans read the built types' responses.
   buildTypesOf(forest, library_);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
-    if (place[k + 1] == place[k]) return;
-    forest.lean[place[k]] = drawnLean(library_, forest.type[place[k]], siteLean_[k]);
+  tbb::parallel_for(first, last, [&](std::size_t k) {
+    const std::size_t slot = place[k - first];
+    if (place[k - first + 1] == slot) return;
+    forest.lean[slot] = drawnLean(library_, forest.type[slot], siteLean_[k]);
   });
   return forest;
 }

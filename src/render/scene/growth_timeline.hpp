@@ -47,6 +47,10 @@ class GrowthInterval {
   // earlier snapshot in its order (those that die fading out), then the newcomers in the
   // later one's order from their year of establishment.
   Forest forestAt(double year) const;
+  // The part of it made from trees first .. last - 1 of those it keeps (size()): the forests
+  // of consecutive ranges, one after another, are forestAt(year) tree for tree, so a frame
+  // can be made a part at a time.
+  Forest forestAt(double year, std::size_t first, std::size_t last) const;
   // The trees it keeps: every earlier one and each newcomer.
   std::size_t size() const { return position_.size(); }
 

@@ -7,10 +7,13 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "render/scene/culling.hpp"
 #include "render/scene/growth_timeline.hpp"
 #include "render/scene/tree_clearance.hpp"
 
@@ -27,6 +30,50 @@ double secondsSince(Clock::time_point start) {
 // machine has available: a valley's few hundred megabytes do, a landscape's gigabytes not.
 bool fitsWhole(const SnapshotRows& rows) {
   return rows.rowsAtMost * sizeof(TreeRow) <= availableMemoryBytes().value_or(0) / 4;
+}
+
+// A growth frame's trees are made this many of the interval's at a time: a landscape's
+// frame of a hundred million trees is never held whole.
+constexpr std::size_t kFramePart = std::size_t{1} << 20;
+
+// Whether tree i of `forest` can matter to a frame whose path sets the camera `path`, which
+// clearOfTrees may lift by up to kMaxLift_m: near enough to the eye's column to lift it, or
+// drawn (or casting a shadow) from a camera that much nearer than `path` (its pixels counted
+// at that distance). The renderer draws nothing of the others (LodSettings::minPixels):
+// only the floor shows their crowns.
+bool mayMatter(const Forest& forest, std::size_t i, const TreeLibrary& library, const Camera& path,
+               float pixelsPerRadian, const LodSettings& lod) {
+  const glm::vec3 stem = forest.position[i];
+  if (std::hypot(stem.x - path.position.x, stem.z - path.position.z) <=
+      drawnReach_m(forest, i, library) + kGroundClearance_m)
+    return true;
+  const TreeType& type = library.type(forest.type[i]);
+  const glm::vec3 centre(drawnBounds(forest, i, type));
+  const float nearest = std::max(glm::length(centre - path.position) - kMaxLift_m, 0.0f);
+  return !tooSmallToDraw(
+      projectedPixels(type.height_m * forest.scaleY[i], nearest, pixelsPerRadian), lod);
+}
+
+// The trees of the interval's frame at `year` that can matter to it (mayMatter), made a part
+// at a time, with the floor of all of them.
+Forest frameTrees(const GrowthInterval& interval, double year, const TreeLibrary& library,
+                  const Camera& path, const FrameSize& frame, const LodSettings& lod,
+                  CanopyFloorSum& floor) {
+  const float pixelsPerRadian = path.pixelsPerRadian(frame.height);
+  Forest shown;
+  std::vector<std::uint8_t> matters;
+  for (std::size_t first = 0; first < interval.size(); first += kFramePart) {
+    const Forest part =
+        interval.forestAt(year, first, std::min(first + kFramePart, interval.size()));
+    floor.add(part);
+    matters.assign(part.size(), 0);
+    tbb::parallel_for(std::size_t{0}, part.size(), [&](std::size_t i) {
+      matters[i] = mayMatter(part, i, library, path, pixelsPerRadian, lod);
+    });
+    for (std::size_t i = 0; i < part.size(); ++i)
+      if (matters[i]) shown.append(part, i);
+  }
+  return shown;
 }
 
 }  // namespace
@@ -91,6 +138,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
   std::vector<int> years{0};  // year 0: the bare landscape before the first snapshot
   years.insert(years.end(), run.snapshotYears.begin(), run.snapshotYears.end());
   Forest forest;
+  std::optional<CanopyFloor> floor;        // of every tree of the frame, `forest`'s and not
   std::optional<TreeClearance> clearance;  // of `forest`, made again whenever it changes
   // The snapshots around the frames' years, their trees paired once for all their frames.
   std::optional<GrowthInterval> interval;
@@ -101,12 +149,14 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
   for (int frame = 0; frame < frames; ++frame) {
     auto phase = Clock::now();
     const double year = settings.yearOfFrame(frame);
+    const double u = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
     RenderOptions options = settings.render;
     if (settings.kind == TimelapseKind::Wind) {
       options.wind.time += frame * settings.windRadiansPerSecond / settings.fps;
       if (frame == 0) {  // one year's trees, built as the snapshot is read (year 0 bare)
         if (const int shown = static_cast<int>(year); shown > 0)
           forest = forestFromRun(run, shown, library);
+        floor = canopyFloor(forest, library, terrain.grid);
         clearance.emplace(forest, library);
       }
     } else {
@@ -115,6 +165,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
       while (after + 1 < years.size() && years[after] < year) ++after;
       // A landscape's frame holds gigabytes: the last one goes before the next is made.
       clearance.reset();
+      floor.reset();
       forest = Forest();
       if (years[after] != intervalEnd) {
         interval.reset();
@@ -132,16 +183,18 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
         kept = std::move(later);
         intervalEnd = to;
       }
-      forest = interval->forestAt(year);
+      CanopyFloorSum floorSum(library, terrain.grid);
+      forest = frameTrees(*interval, year, library, settings.camera(u), settings.frame, options.lod,
+                          floorSum);
+      floor = floorSum.floor();
       clearance.emplace(forest, library);
     }
     timings.instances_s += secondsSince(phase);
 
     phase = Clock::now();
-    const double u = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
     // Out of the crowns of this frame's trees, wherever the path was set.
     const Camera camera = clearOfTrees(settings.camera(u), *clearance);
-    Image image = draw(forest, camera, options);
+    Image image = draw({forest, *floor}, camera, options);
     timings.render_s += secondsSince(phase);
 
     phase = Clock::now();

@@ -9,6 +9,7 @@
 
 #include "render/scene/camera_path.hpp"
 #include "render/scene/forest.hpp"
+#include "render/scene/forest_floor.hpp"
 #include "render/scene/frame_sink.hpp"
 #include "render/scene/frame_size.hpp"
 #include "render/scene/render_options.hpp"
@@ -37,15 +38,23 @@ struct TimelapseSettings {
 
 struct TimelapseTimings {
   int frames = 0;
-  double instances_s = 0.0;  // reading snapshots, interpolating, building the forest arrays
+  double instances_s = 0.0;  // reading snapshots, interpolating, the forest arrays and floor
   double render_s = 0.0;     // culling, drawing and reading pixels back
   double encode_s = 0.0;     // overlay and handing frames to the sink (PNG or ffmpeg)
   double total_s = 0.0;
 };
 
-// Draws one frame of the terrain and a forest and reads it back.
-using DrawFrame =
-    std::function<Image(const Forest& forest, const Camera& camera, const RenderOptions& options)>;
+// A frame's trees: those the renderer may draw from the frame's camera (a landscape's
+// frame leaves out the millions under a pixel, LodSettings::minPixels), and the floor of
+// every tree of the frame, which shows the crowns of those left out.
+struct FrameTrees {
+  const Forest& shown;
+  const CanopyFloor& floor;
+};
+
+// Draws one frame of the terrain and its trees and reads it back.
+using DrawFrame = std::function<Image(const FrameTrees& trees, const Camera& camera,
+                                      const RenderOptions& options)>;
 
 // `progress(frame done, frames)` after each frame. `terrain` is the run's, for the scale bar.
 TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& library,

@@ -10,14 +10,10 @@
 #include "render/scene/camera_controller.hpp"
 
 namespace eco {
-namespace {
-
-// The type's widest slice: how far from its stem a tree of scale 1 reaches.
-float reachOf(const TreeType& type) {
-  return *std::max_element(type.envelope_m.begin(), type.envelope_m.end());
+float drawnReach_m(const Forest& forest, std::size_t i, const TreeLibrary& library) {
+  const TreeType& type = library.type(forest.type[i]);
+  return *std::max_element(type.envelope_m.begin(), type.envelope_m.end()) * forest.scaleXZ[i];
 }
-
-}  // namespace
 
 TreeClearance::TreeClearance(const Forest& forest, const TreeLibrary& library)
     : forest_(forest), library_(library) {
@@ -26,7 +22,7 @@ TreeClearance::TreeClearance(const Forest& forest, const TreeLibrary& library)
   for (std::size_t i = 0; i < forest.size(); ++i) {
     const glm::vec2 p(forest.position[i].x, forest.position[i].z);
     lo = glm::min(lo, p), hi = glm::max(hi, p);
-    maxReach_m_ = std::max(maxReach_m_, reachOf(library.type(forest.type[i])) * forest.scaleXZ[i]);
+    maxReach_m_ = std::max(maxReach_m_, drawnReach_m(forest, i, library));
   }
   origin_ = lo;
   columns_ = static_cast<int>((hi.x - lo.x) / kCell_m) + 1;

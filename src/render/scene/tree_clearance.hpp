@@ -15,6 +15,11 @@
 
 namespace eco {
 
+// How far tree i reaches from its stem as drawn (its envelope's widest slice): a tree whose
+// stem stands farther than this plus a clearance from a point, horizontally, is not within
+// that clearance of it.
+float drawnReach_m(const Forest& forest, std::size_t i, const TreeLibrary& library);
+
 class TreeClearance {
  public:
   TreeClearance(const Forest& forest, const TreeLibrary& library);

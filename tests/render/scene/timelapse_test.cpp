@@ -5,6 +5,8 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/angles.hpp"
+#include "render/scene/culling.hpp"
+#include "render/scene/growth_timeline.hpp"
 #include "render/scene/tree_clearance.hpp"
 #include "render_support.hpp"
 
@@ -57,6 +59,7 @@ RunFolder oneTreeRun(const std::string& name) {
 // The loop without a back end: what each frame is asked to draw.
 struct Recorded {
   std::vector<std::size_t> trees;
+  std::vector<float> crownArea;  // the floor's, in cell areas
   std::vector<double> windTimes;
   std::vector<glm::vec3> eyes;
 };
@@ -79,8 +82,12 @@ TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
     return lookingAt(worldFromMap(100 + 100 * u, 10, 300), worldFromMap(160, 160, 100));
   };
   Recorded seen;
-  const DrawFrame draw = [&](const Forest& forest, const Camera& camera, const RenderOptions& o) {
-    seen.trees.push_back(forest.size());
+  const DrawFrame draw = [&](const FrameTrees& trees, const Camera& camera,
+                             const RenderOptions& o) {
+    seen.trees.push_back(trees.shown.size());
+    float area = 0.0f;
+    for (const auto& below : trees.floor.crownsBelow) area += below.back();
+    seen.crownArea.push_back(area);
     seen.windTimes.push_back(o.wind.time);
     seen.eyes.push_back(camera.position);
     return Image(32, 24);
@@ -91,10 +98,17 @@ TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
   ASSERT_EQ(t.frames, 21);
   EXPECT_EQ(sink.frames.size(), 21u);
   EXPECT_TRUE(sink.finished);
-  // Before the tree established (year 15: age 5 in year 20) nothing is drawn; from then on
-  // the one tree grows.
-  for (int frame = 0; frame < 21; ++frame)
-    EXPECT_EQ(seen.trees[frame], frame < 15 ? 0u : 1u) << "year " << frame;
+  // Before the tree established (year 15: age 5 in year 20) nothing is there; from then on
+  // the one tree grows, its crown on the floor. From 250 m on a frame 24 pixels high it is
+  // under a pixel even at 4 m, so the renderer would draw nothing of it: the frame leaves it
+  // out of the trees it shows.
+  for (int frame = 0; frame < 21; ++frame) {
+    EXPECT_EQ(seen.trees[frame], 0u) << "year " << frame;
+    if (frame <= 15)  // it appears over its first year
+      EXPECT_EQ(seen.crownArea[frame], 0.0f) << "year " << frame;
+    else
+      EXPECT_GT(seen.crownArea[frame], seen.crownArea[frame - 1]) << "year " << frame;
+  }
   EXPECT_EQ(seen.windTimes.front(), seen.windTimes.back());  // growth holds the wind's time
   EXPECT_NEAR(seen.eyes.back().x - seen.eyes.front().x, 100.0f, 1e-3f);  // along the path
 }
@@ -110,8 +124,9 @@ TEST(Timelapse, ThePathKeepsClearOfTheCrownsOfEachFrame) {
   settings.camera = [&](double) { return lookingAt(inTheCrown, worldFromMap(160, 300, 102.5)); };
   std::vector<float> clearance;
   std::vector<glm::vec3> eyes;
-  const DrawFrame draw = [&](const Forest& forest, const Camera& camera, const RenderOptions&) {
-    clearance.push_back(TreeClearance(forest, test::smallLibrary()).at(camera.position, 10.0f));
+  const DrawFrame draw = [&](const FrameTrees& trees, const Camera& camera, const RenderOptions&) {
+    clearance.push_back(
+        TreeClearance(trees.shown, test::smallLibrary()).at(camera.position, 10.0f));
     eyes.push_back(camera.position);
     return Image(32, 24);
   };
@@ -128,6 +143,79 @@ TEST(Timelapse, ThePathKeepsClearOfTheCrownsOfEachFrame) {
   EXPECT_EQ(eyes.back().x, inTheCrown.x);         // straight up, the view kept
 }
 
+// A growth frame holds only the trees the renderer may draw from its camera, made a part at
+// a time; the floor holds the crowns of all of them, the same to the bit as the floor of the
+// whole frame's forest.
+TEST(Timelapse, AFrameLeavesOutTheTreesUnderAPixelButNotTheirCrowns) {
+  const TreeLibrary& library = test::smallLibrary();
+  TreeSnapshot before, after;
+  before.year = 10, after.year = 20;
+  before.speciesNames = after.speciesNames = {"beech"};
+  // More trees than a part of a frame, 1 km across: as in a forest, most are young plants
+  // under 0.6 m, and one in a hundred from 0.2 to 30 m tall.
+  for (std::uint64_t id = 1; id <= (std::uint64_t{1} << 20) + 3000; ++id) {
+    after.trees.push_back(test::variedTree(id));
+    if (id % 100 != 0) {
+      TreeRow& young = after.trees.back();
+      young.height_m = 0.1f + 0.01f * static_cast<float>(id % 50);
+      young.crownRadius_m = 0.3f * young.height_m;
+      young.crownBase_m = 0.0f;
+    }
+    if (id % 3 != 0) {  // the others establish in between
+      before.trees.push_back(after.trees.back());
+      before.trees.back().height_m *= 0.8f;
+    }
+  }
+  const RunFolder run =
+      test::runHolding("timelapse_frame_parts", {&before, &after}, SnapshotFormat::Binary);
+  const Terrain terrain = test::flatTerrain(106, 10.0);
+  TimelapseSettings settings;
+  settings.fromYear = settings.toYear = 16.0;
+  settings.seconds = 0.1, settings.fps = 10;  // one frame
+  settings.frame = {640, 360};
+  const Camera camera = lookingAt(worldFromMap(0, 0, 420), worldFromMap(500, 500, 300));
+  settings.camera = [&](double) { return camera; };
+  std::size_t shownTrees = 0;
+  std::optional<CanopyFloor> floor;
+  std::vector<glm::vec3> shownAt;
+  const DrawFrame draw = [&](const FrameTrees& trees, const Camera& drawn, const RenderOptions&) {
+    EXPECT_EQ(drawn.position, camera.position);  // no tree near the eye
+    shownTrees = trees.shown.size();
+    shownAt = trees.shown.position;
+    floor = trees.floor;
+    return Image(640, 360);
+  };
+  test::CollectingSink sink;
+  renderTimelapse(run, library, terrain, draw, settings, sink, {});
+  ASSERT_TRUE(floor);
+
+  const Forest whole = GrowthInterval(before, after, library, "run").forestAt(16.0);
+  const CanopyFloor wholeFloor = canopyFloor(whole, library, terrain.grid);
+  EXPECT_EQ(floor->crownsBelow, wholeFloor.crownsBelow);
+  EXPECT_EQ(floor->leafColor, wholeFloor.leafColor);
+  // The trees shown are the whole frame's in its order, less those under a pixel from any
+  // eye the path's could be lifted to.
+  const LodSettings lod;
+  const float pixelsPerRadian = camera.pixelsPerRadian(settings.frame.height);
+  std::size_t drawn = 0, next = 0;
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    const TreeType& type = library.type(whole.type[i]);
+    const float height = type.height_m * whole.scaleY[i];
+    const float distance = glm::length(glm::vec3(drawnBounds(whole, i, type)) - camera.position);
+    const bool shown = next < shownAt.size() && shownAt[next] == whole.position[i];
+    if (shown) ++next;
+    if (!tooSmallToDraw(projectedPixels(height, distance, pixelsPerRadian), lod)) {
+      EXPECT_TRUE(shown) << "tree " << i << " is drawn from the camera";
+      ++drawn;
+    }
+    if (tooSmallToDraw(projectedPixels(height, distance - kMaxLift_m, pixelsPerRadian), lod))
+      EXPECT_FALSE(shown) << "tree " << i << " is under a pixel from every lifted eye";
+  }
+  EXPECT_EQ(next, shownTrees);  // in order, nothing else
+  EXPECT_GT(drawn, 1000u);
+  EXPECT_LT(shownTrees, whole.size() / 2);
+}
+
 TEST(Timelapse, WindHoldsTheYearAndAdvancesTheWindsTime) {
   const RunFolder run = oneTreeRun("timelapse_wind");
   const Terrain terrain = test::flatTerrain(33, 10.0);
@@ -138,8 +226,8 @@ TEST(Timelapse, WindHoldsTheYearAndAdvancesTheWindsTime) {
   settings.fps = 8;
   settings.camera = [](double) { return Camera{}; };
   Recorded seen;
-  const DrawFrame draw = [&](const Forest& forest, const Camera&, const RenderOptions& o) {
-    seen.trees.push_back(forest.size());
+  const DrawFrame draw = [&](const FrameTrees& trees, const Camera&, const RenderOptions& o) {
+    seen.trees.push_back(trees.shown.size());
     seen.windTimes.push_back(o.wind.time);
     return Image(16, 16);
   };

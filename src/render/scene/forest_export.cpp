@@ -53,10 +53,15 @@ TreeMesh treeMesh(const WindMesh& wind) {
   return mesh;
 }
 
-// An InputError unless the terrain and every tree at the coarsest level (`used` triangles)
-// fit the budget, saying how to make them fit.
-void requireWithinBudget(std::size_t used, std::size_t maxTriangles, bool billboards) {
+// An InputError unless the terrain (`terrain` triangles) and every tree at the coarsest level
+// (`used` triangles with the terrain's) fit the budget, saying how to make them fit.
+void requireWithinBudget(std::size_t terrain, std::size_t used, std::size_t maxTriangles,
+                         bool billboards) {
   if (used <= maxTriangles) return;
+  if (terrain > maxTriangles)  // no choice of trees helps
+    throw InputError(
+        {"export", 0, "--max-triangles"},
+        fmt::format("the terrain alone takes {} triangles, more than {}", terrain, maxTriangles));
   throw InputError(
       {"export", 0, "--max-triangles"},
       fmt::format("the terrain and every tree {} already take {} triangles, more than {}: "
@@ -83,7 +88,8 @@ void chooseLevels(ForestGltfScene& scene, std::size_t maxTriangles, int coarsest
       tree.level = coarsest;
       used += type.lods[coarsest].triangleCount();
     }
-  requireWithinBudget(used, maxTriangles, coarsest == kBillboardLevel);
+  requireWithinBudget(scene.terrain.triangleCount(), used, maxTriangles,
+                      coarsest == kBillboardLevel);
   std::sort(trees.begin(), trees.end(), [](const Choice& a, const Choice& b) {
     return a.tree->height_m != b.tree->height_m ? a.tree->height_m > b.tree->height_m
                                                 : a.tree->id < b.tree->id;
@@ -231,7 +237,8 @@ void requireBudgetReachable(const Terrain& terrain, const TreeLibrary& library,
   for (std::size_t t = 0; t < treesOfType.size(); ++t)
     if (treesOfType[t] > 0) types.push_back(static_cast<int>(t));
   library.build(types);  // side by side; the export draws them next
-  std::size_t used = terrainPart(terrain).triangleCount();
+  const std::size_t terrainTriangles = terrainPart(terrain).triangleCount();
+  std::size_t used = terrainTriangles;
   for (const int t : types) {
     const TreeType& type = library.type(t);
     const std::size_t each = billboards
@@ -239,7 +246,7 @@ void requireBudgetReachable(const Terrain& terrain, const TreeLibrary& library,
                                  : type.meshes.lods[kLodCount - 1].triangleCount();
     used += treesOfType[static_cast<std::size_t>(t)] * each;
   }
-  requireWithinBudget(used, options.maxTriangles, billboards);
+  requireWithinBudget(terrainTriangles, used, options.maxTriangles, billboards);
 }
 
 ForestGltfSummary exportForest(const Terrain& terrain, const TreeLibrary& library,

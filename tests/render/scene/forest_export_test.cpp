@@ -228,6 +228,14 @@ TEST(ForestGltf, ABudgetIsCheckedAgainstTheSnapshotBeforeTheForestIsBuilt) {
       }
     }
   EXPECT_LT(fewest(tall, false), fewest({}, false));  // the filter counts
+  // Under the terrain's own triangles no choice of trees helps, and the error says so.
+  const TreeFilter none = [](const TreeRow&) { return false; };
+  try {
+    requireBudgetReachable(terrain, library, run, snapshot.year, none, {.maxTriangles = 3});
+    ADD_FAILURE() << "a budget under the terrain was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the terrain alone takes"), std::string::npos) << e.what();
+  }
   EXPECT_NO_THROW(requireBudgetReachable(terrain, library, run, snapshot.year, {}, {}));
 }
 

@@ -104,10 +104,11 @@ TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
   // out of the trees it shows.
   for (int frame = 0; frame < 21; ++frame) {
     EXPECT_EQ(seen.trees[frame], 0u) << "year " << frame;
-    if (frame <= 15)  // it appears over its first year
+    if (frame <= 15) {  // it appears over its first year
       EXPECT_EQ(seen.crownArea[frame], 0.0f) << "year " << frame;
-    else
+    } else {
       EXPECT_GT(seen.crownArea[frame], seen.crownArea[frame - 1]) << "year " << frame;
+    }
   }
   EXPECT_EQ(seen.windTimes.front(), seen.windTimes.back());  // growth holds the wind's time
   EXPECT_NEAR(seen.eyes.back().x - seen.eyes.front().x, 100.0f, 1e-3f);  // along the path
@@ -208,8 +209,9 @@ TEST(Timelapse, AFrameLeavesOutTheTreesUnderAPixelButNotTheirCrowns) {
       EXPECT_TRUE(shown) << "tree " << i << " is drawn from the camera";
       ++drawn;
     }
-    if (tooSmallToDraw(projectedPixels(height, distance - kMaxLift_m, pixelsPerRadian), lod))
+    if (tooSmallToDraw(projectedPixels(height, distance - kMaxLift_m, pixelsPerRadian), lod)) {
       EXPECT_FALSE(shown) << "tree " << i << " is under a pixel from every lifted eye";
+    }
   }
   EXPECT_EQ(next, shownTrees);  // in order, nothing else
   EXPECT_GT(drawn, 1000u);

@@ -185,6 +185,16 @@ TEST(GrowthTimeline, SnapshotsReadBatchByBatchGiveTheFramesOfTheSnapshotsReadWho
   EXPECT_EQ(batched.size(), p.before.trees.size() + newcomers);
   for (const double year : {40.0, 44.5, 50.0})
     test::expectSameForest(batched.forestAt(year), whole.forestAt(year));
+  // A frame made in parts of any length, one after another, is the frame made whole.
+  for (const std::size_t part : {std::size_t{1000}, std::size_t{4099}})
+    for (const double year : {40.0, 44.5, 50.0}) {
+      Forest joined;
+      for (std::size_t first = 0; first < whole.size(); first += part) {
+        const Forest made = whole.forestAt(year, first, std::min(first + part, whole.size()));
+        for (std::size_t i = 0; i < made.size(); ++i) joined.append(made, i);
+      }
+      test::expectSameForest(joined, whole.forestAt(year));
+    }
 }
 
 TEST(GrowthTimeline, FromTheBareLandscapeEveryTreeIsANewcomer) {

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "core/progress.hpp"
 #include "core/stopwatch.hpp"
 #include "render/gl/gl_context.hpp"
+#include "render/scene/forest_index.hpp"
 #include "sim/image_io.hpp"
 
 namespace eco {
@@ -40,6 +42,7 @@ nlohmann::ordered_json statsJson(const StillStats& still, double loadMs) {
       {"instances", {{"lod0", n[0]}, {"lod1", n[1]}, {"lod2", n[2]}, {"impostor", n[3]}}},
       {"culled", s.forest.culled},
       {"too_small", s.forest.tooSmall},
+      {"trees_looked_at", s.forest.lookedAt},
       {"shadow_casters", s.forest.shadowCasterCount()},
       {"triangles", s.triangles()},
       {"tree_triangles", s.forest.triangles},
@@ -109,10 +112,13 @@ Image drawStill(const SceneSource& source, const Forest& forest, const Camera& c
   const std::unique_ptr<SceneRenderer> renderer = sceneRendererFor(source, view);
   if (overlay) renderer->terrain().setOverlay(view.overlay, *overlay);
   renderer->setForestFloor(forest);
+  // A frame looks only at the trees a pixel can show (ForestIndex): most of a run's plants.
+  std::optional<ForestIndex> index;
+  if (source.library) index.emplace(forest, *source.library);
   RenderTarget target = RenderTarget::create(view.size.width, view.size.height, 0, view.antialias);
   const double setupMs = millisecondsSince(rendererStart);
-  const FrameStats frame =
-      renderer->render(&forest, camera, renderOptionsFrom(view, source.scenario), target);
+  const FrameStats frame = renderer->render(
+      &forest, camera, renderOptionsFrom(view, source.scenario), target, index ? &*index : nullptr);
   if (stats)
     *stats = {frame, setupMs, glDescription(),
               renderer->forest() ? renderer->forest()->gpuMemory() : ForestGpuMemory{},

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -13,6 +14,7 @@
 #include "render/gl/window.hpp"
 #include "render/scene/camera_controller.hpp"
 #include "render/scene/forest_cache.hpp"
+#include "render/scene/forest_index.hpp"
 #include "render/scene/lod_budget.hpp"
 #include "sim/image_io.hpp"
 
@@ -98,14 +100,19 @@ void runView(const ViewArgs& args) {
   const Forest none;
   Forest someSpecies;
   const Forest* forest = &none;
+  // Its index, so that a frame looks only at the trees a pixel can show (ForestIndex).
+  std::optional<ForestIndex> index;
   auto showForest = [&] {
     someSpecies = {};
     forest = &none;
+    index.reset();
     if (!source.library) return;
     forest = &snapshots.of(state.years[state.yearIndex]);
-    if (std::ranges::find(state.shown, 0) == state.shown.end()) return;
-    someSpecies = visibleTrees(*forest, *source.library, state.shown);
-    forest = &someSpecies;
+    if (std::ranges::find(state.shown, 0) != state.shown.end()) {
+      someSpecies = visibleTrees(*forest, *source.library, state.shown);
+      forest = &someSpecies;
+    }
+    index.emplace(*forest, *source.library);
   };
   showForest();
   renderer->setForestFloor(*forest);
@@ -124,7 +131,7 @@ void runView(const ViewArgs& args) {
           RenderTarget::create(size.width, size.height, 0, args.view.antialias);
       RenderOptions fullOptions = options;
       fullOptions.shadowMapSize = RenderOptions{}.shadowMapSize;
-      renderer->render(forest, controller.camera(), fullOptions, full);
+      renderer->render(forest, controller.camera(), fullOptions, full, index ? &*index : nullptr);
       saveScreenshot(full, args.screenshot);
     }
     tookScreenshot = true;
@@ -175,7 +182,8 @@ void runView(const ViewArgs& args) {
       const FrameSize drawn = atResolution(size, budget ? budget->resolution() : 1.0);
       if (target.width != drawn.width || target.height != drawn.height)
         target = RenderTarget::create(drawn.width, drawn.height, 0, args.view.antialias);
-      stats = renderer->render(forest, controller.camera(), options, target);
+      stats =
+          renderer->render(forest, controller.camera(), options, target, index ? &*index : nullptr);
     }
     if (screenshot) saveFullScreenshot(size);
     window.present(target);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
@@ -10,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include "core/error.hpp"
 #include "core/stopwatch.hpp"
 #include "model/mesh/textures.hpp"
 
@@ -401,9 +403,64 @@ std::shared_ptr<const ForestRenderer::Atlas> ForestRenderer::cachedAtlas(std::ui
   });
 }
 
+void ForestRenderer::considerTrees(const Forest& forest, const ForestIndex* index, glm::vec3 eye,
+                                   const Frustum& frustum, float pixelsPerRadian,
+                                   const LodSettings& lod, ForestStats& stats) {
+  considered_.clear();
+  if (!index || lod.forcedLevel >= 0) {
+    considered_.resize(forest.size());
+    std::iota(considered_.begin(), considered_.end(), std::uint32_t{0});
+    return;
+  }
+  ECO_ASSERT(index->forestSize() == forest.size(), "a forest drawn with another forest's index");
+  const std::vector<ForestIndex::Tile>& tiles = index->tiles();
+  const std::vector<ForestIndex::Group>& groups = index->groups();
+  // Per group: does a frame look at its trees? Per tile: how many it looks at, how many it
+  // passes over that are outside the view.
+  std::vector<std::uint8_t> looked(groups.size(), 0);
+  std::vector<std::uint32_t> lookedAt(tiles.size() + 1, 0), culled(tiles.size(), 0);
+  tbb::parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t t) {
+    const ForestIndex::Tile& tile = tiles[t];
+    // No tree of the tile is nearer than its box: one shorter than this is under minPixels
+    // (projectedPixels) wherever it stands there, less a thousandth for the roundings of
+    // each tree's own distance.
+    const float nearest = std::max(glm::distance(glm::clamp(eye, tile.lo, tile.hi), eye), 1e-3f);
+    const float shortest = 0.999f * lod.minPixels * nearest / pixelsPerRadian;
+    const Frustum::Side side = frustum.sideOfBox(tile.lo, tile.hi, 0.05f);
+    for (std::uint32_t g = tile.firstGroup; g < tile.lastGroup; ++g) {
+      const ForestIndex::Group& group = groups[g];
+      if (group.tallest >= shortest) {
+        looked[g] = 1;
+        lookedAt[t + 1] += group.last - group.first;
+      } else if (side == Frustum::Side::Outside) {
+        culled[t] += group.last - group.first;
+      } else if (side == Frustum::Side::Across) {  // their spheres one by one, as prepare's
+        for (std::uint32_t k = group.first; k < group.last; ++k) {
+          const std::uint32_t i = index->trees()[k];
+          const glm::vec4 bounds = drawnBounds(forest, i, library_.type(forest.type[i]));
+          culled[t] += !frustum.intersectsSphere(glm::vec3(bounds), bounds.w);
+        }
+      }
+    }
+  });
+  std::partial_sum(lookedAt.begin(), lookedAt.end(), lookedAt.begin());
+  considered_.resize(lookedAt.back());
+  tbb::parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t t) {
+    auto out = considered_.begin() + lookedAt[t];
+    for (std::uint32_t g = tiles[t].firstGroup; g < tiles[t].lastGroup; ++g)
+      if (looked[g])
+        out = std::copy(index->trees().begin() + groups[g].first,
+                        index->trees().begin() + groups[g].last, out);
+  });
+  const std::size_t passed = forest.size() - considered_.size();
+  const std::size_t outside = std::accumulate(culled.begin(), culled.end(), std::size_t{0});
+  stats.culled += outside;
+  stats.tooSmall += passed - outside;
+}
+
 ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, int width,
                                     int height, const LodSettings& lod,
-                                    std::span<const ShadowBox> shadows) {
+                                    std::span<const ShadowBox> shadows, const ForestIndex* index) {
   ForestStats stats;
   const auto types = static_cast<std::size_t>(library_.typeCount());
   const Frustum frustum =
@@ -413,24 +470,29 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   const std::size_t cascades = shadows.size();
   shadowPixelsPerMetre_.clear();
   for (const ShadowBox& box : shadows) shadowPixelsPerMetre_.push_back(box.mapPixelsPerMetre);
-  const std::size_t n = forest.size();
+  // The trees looked at one by one: considered_[j] is tree j's index in the forest, and
+  // choices_, distances_, `outside` and casts_ are by j.
+  considerTrees(forest, index, camera.position, frustum, pixelsPerRadian, lod, stats);
+  const std::size_t n = considered_.size();
+  stats.lookedAt = n;
   choices_.assign(n, LodChoice{});
   casts_.assign(n * cascades, kNoCaster);
   std::vector<std::uint8_t> outside(n, 0);
   distances_.resize(n);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+    for (std::size_t j = range.begin(); j != range.end(); ++j) {
+      const std::size_t i = considered_[j];
       const TreeType& type = library_.type(forest.type[i]);
       const glm::vec4 bounds = drawnBounds(forest, i, type);
       const glm::vec3 centre(bounds);
       const float radius = bounds.w;
       const float distance = glm::length(centre - camera.position);
-      distances_[i] = distance;
+      distances_[j] = distance;
       const float height_m = type.height_m * forest.scaleY[i];
       const float pixels = projectedPixels(height_m, distance, pixelsPerRadian);
       const bool inView = frustum.intersectsSphere(centre, radius);
-      if (inView) choices_[i] = chooseLevel(pixels, lod);
-      outside[i] = !inView;
+      if (inView) choices_[j] = chooseLevel(pixels, lod);
+      outside[j] = !inView;
       // A tree casts into each cascade whose map its crown reaches (shadowHeldBy; also from
       // outside the view: its shadow may fall into it) and whose texels it covers. In the nearest
       // it casts with the level it is drawn at (the finer of a cross-fade), so its shadow has the
@@ -456,9 +518,9 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
           continue;
         const MapHolds held = shadowHeldBy(box, centre, radius);
         if (held == MapHolds::none) continue;
-        const int level = k == 0 && inView ? choices_[i].level : kLevelImpostor;
+        const int level = k == 0 && inView ? choices_[j].level : kLevelImpostor;
         if (level < 0) continue;
-        casts_[i * cascades + k] = static_cast<std::uint8_t>(1 + level);
+        casts_[j * cascades + k] = static_cast<std::uint8_t>(1 + level);
         if (held == MapHolds::all) break;
       }
     }
@@ -470,21 +532,22 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   // trees. A total order, so the frame does not depend on the thread count.
   buckets_.assign(types * kLevelCount, Bucket{});
   shadowBuckets_.assign(cascades * types * kLevelCount, Bucket{});
-  // The bucket of tree i's caster in cascade c, or null where it casts none there.
-  auto shadowBucket = [&](std::size_t i, std::size_t c) -> Bucket* {
-    const std::uint8_t caster = casts_[i * cascades + c];
+  // The bucket of tree j's caster in cascade c, or null where it casts none there.
+  auto shadowBucket = [&](std::size_t j, std::size_t c) -> Bucket* {
+    const std::uint8_t caster = casts_[j * cascades + c];
     if (caster == kNoCaster) return nullptr;
-    return &shadowBuckets_[(c * types + forest.type[i]) * kLevelCount + caster - 1];
+    return &shadowBuckets_[(c * types + forest.type[considered_[j]]) * kLevelCount + caster - 1];
   };
-  auto castsAny = [&](std::size_t i) {
+  auto castsAny = [&](std::size_t j) {
     for (std::size_t c = 0; c < cascades; ++c)
-      if (casts_[i * cascades + c] != kNoCaster) return true;
+      if (casts_[j * cascades + c] != kNoCaster) return true;
     return false;
   };
-  // Every draw of tree i: its type (and the type it blends into) split its presence range,
+  // Every draw of tree j: its type (and the type it blends into) split its presence range,
   // and a level cross-fade splits each type's range again.
-  auto forEachDraw = [&](std::size_t i, auto&& draw) {
-    const LodChoice& c = choices_[i];
+  auto forEachDraw = [&](std::size_t j, auto&& draw) {
+    const std::size_t i = considered_[j];
+    const LodChoice& c = choices_[j];
     const float presence = forest.presence[i];
     const float split = presence * (forest.blendType[i] >= 0 ? 1.0f - forest.blendWeight[i] : 1.0f);
     // `scale` turns the tree's scales, meant for its own type's mesh, to another type's.
@@ -501,15 +564,15 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
              library_.typeHeight_m(forest.type[i]) / library_.typeHeight_m(forest.blendType[i]),
              split, presence);
   };
-  for (std::size_t i = 0; i < n; ++i) {
-    if (outside[i])
+  for (std::size_t j = 0; j < n; ++j) {
+    if (outside[j])
       ++stats.culled;
-    else if (choices_[i].level < 0)
+    else if (choices_[j].level < 0)
       ++stats.tooSmall;
     for (std::size_t c = 0; c < cascades; ++c)
-      if (Bucket* bucket = shadowBucket(i, c)) ++bucket->count;
-    if (choices_[i].level < 0) continue;
-    forEachDraw(i, [&](int type, int level, float, float, float) {
+      if (Bucket* bucket = shadowBucket(j, c)) ++bucket->count;
+    if (choices_[j].level < 0) continue;
+    forEachDraw(j, [&](int type, int level, float, float, float) {
       ++buckets_[type * kLevelCount + level].count;
     });
   }
@@ -580,24 +643,26 @@ ForestStats ForestRenderer::prepare(const Forest& forest, const Camera& camera, 
   for (Bucket& b : shadowBuckets_) b.first = next, next += b.count, b.count = 0;
   staging_.resize(next);
   order_.clear();
-  for (std::size_t i = 0; i < n; ++i)
-    if (choices_[i].level >= 0 || castsAny(i)) order_.push_back(static_cast<std::uint32_t>(i));
+  for (std::size_t j = 0; j < n; ++j)
+    if (choices_[j].level >= 0 || castsAny(j)) order_.push_back(static_cast<std::uint32_t>(j));
   tbb::parallel_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return distances_[a] < distances_[b] || (distances_[a] == distances_[b] && a < b);
+    return distances_[a] < distances_[b] ||
+           (distances_[a] == distances_[b] && considered_[a] < considered_[b]);
   });
-  for (const std::uint32_t i : order_) {
+  for (const std::uint32_t j : order_) {
+    const std::size_t i = considered_[j];
     auto put = [&](Bucket& bucket, float scale, float lo, float hi) {
       staging_[bucket.first + bucket.count++] = {
           glm::vec4(forest.position[i], forest.yaw[i]),
           glm::vec4(scale * forest.scaleXZ[i], scale * forest.scaleY[i], lo, forest.phase[i]),
           glm::vec4(forest.tint[i], hi), forest.lean[i]};
     };
-    if (choices_[i].level >= 0)
-      forEachDraw(i, [&](int type, int level, float scale, float lo, float hi) {
+    if (choices_[j].level >= 0)
+      forEachDraw(j, [&](int type, int level, float scale, float lo, float hi) {
         put(buckets_[type * kLevelCount + level], scale, lo, hi);
       });
     for (std::size_t c = 0; c < cascades; ++c)
-      if (Bucket* bucket = shadowBucket(i, c)) put(*bucket, 1.0f, 0.0f, forest.presence[i]);
+      if (Bucket* bucket = shadowBucket(j, c)) put(*bucket, 1.0f, 0.0f, forest.presence[i]);
   }
   if (staging_.size() > instanceCapacity_) {
     instanceCapacity_ = std::max<std::size_t>(staging_.size() + staging_.size() / 2, 1024);

@@ -26,6 +26,7 @@
 #include "render/scene/camera.hpp"
 #include "render/scene/culling.hpp"
 #include "render/scene/forest.hpp"
+#include "render/scene/forest_index.hpp"
 #include "render/scene/impostor.hpp"
 #include "render/scene/render_options.hpp"
 #include "render/scene/shadow_cascades.hpp"
@@ -87,9 +88,12 @@ class ForestRenderer {
   // Culls, picks levels and fills the instance buffer for this camera and the shadow
   // cascades (none: no shadows); first uploads the levels it draws that are not yet
   // (ForestStats::meshUploadMs) and bakes the atlases of the types it draws as impostors
-  // that have none (ForestStats::impostorBakeMs).
+  // that have none (ForestStats::impostorBakeMs). With the forest's index (made for it, not
+  // another) it looks at each tile's trees only as far down as a pixel can show them: the
+  // same frame and counts, in a landscape's overview for a twentieth of the trees.
   ForestStats prepare(const Forest& forest, const Camera& camera, int width, int height,
-                      const LodSettings& lod, std::span<const ShadowBox> shadows);
+                      const LodSettings& lod, std::span<const ShadowBox> shadows,
+                      const ForestIndex* index = nullptr);
   const TreeLibrary& library() const { return library_; }
   // Called as a frame gets the impostor atlases it needs (read, shared or baked): how many
   // of its sources have theirs, of how many; the last call has done == total. A command's
@@ -152,6 +156,13 @@ class ForestRenderer {
   // Each type's impostor sprites in bucketOf(type), with its atlases (colour or shadow pass).
   void drawImpostors(const Program& program, float pixelsPerUnit,
                      const std::function<Bucket(std::size_t)>& bucketOf) const;
+  // The trees prepare() looks at one by one (considered_): every tree; or, with an index and
+  // no level forced, each tile's trees tall enough for minPixels at the tile's nearest point,
+  // the others (under it wherever they stand, neither drawn nor casting) counted into
+  // `stats` as culled or too small, as prepare() would count them.
+  void considerTrees(const Forest& forest, const ForestIndex* index, glm::vec3 eye,
+                     const Frustum& frustum, float pixelsPerRadian, const LodSettings& lod,
+                     ForestStats& stats);
   // Empties the mesh buffers and makes the vertex arrays that draw from them.
   void resetMeshes();
   // Uploads the levels (type, level) that are not yet, each once; whether any was.
@@ -204,6 +215,7 @@ class ForestRenderer {
   std::vector<Bucket> shadowBuckets_;           // [(cascade * types + type) * kLevelCount + level]
   std::vector<float> shadowPixelsPerMetre_;     // [cascade]
   // Scratch of prepare(), kept to avoid reallocating every frame.
+  std::vector<std::uint32_t> considered_;  // forest indices; the arrays below are by place here
   std::vector<LodChoice> choices_;
   std::vector<std::uint8_t> casts_;  // [tree * cascades + cascade]
   std::vector<float> distances_;

@@ -77,7 +77,8 @@ void SceneRenderer::renderShadowMaps(const RenderOptions& options, FrameUniforms
 }
 
 FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
-                                 const RenderOptions& options, const RenderTarget& target) {
+                                 const RenderOptions& options, const RenderTarget& target,
+                                 const ForestIndex* index) {
   const auto start = std::chrono::steady_clock::now();
   FrameStats stats;
   const Lighting light = lightingFor(latitude_deg_, options.sun);
@@ -109,7 +110,7 @@ FrameStats SceneRenderer::render(const Forest* forest, const Camera& camera,
   if (forest_ && forest)
     stats.forest = forest_->prepare(
         *forest, camera, target.width, target.height, options.lod,
-        shadows ? std::span<const ShadowBox>(cascades) : std::span<const ShadowBox>());
+        shadows ? std::span<const ShadowBox>(cascades) : std::span<const ShadowBox>(), index);
   stats.prepareMs = millisecondsSince(start) - stats.forest.setupMs();
 
   // Where passes are timed, each is also counted in fragments shaded, where the GL counts

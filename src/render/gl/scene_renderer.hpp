@@ -31,8 +31,9 @@ class SceneRenderer {
   SceneRenderer(const Terrain& terrain, double latitude_deg, const TreeLibrary* library,
                 const ImpostorSettings& impostors = {});
 
+  // `index`, where given, is the forest's own (ForestRenderer::prepare).
   FrameStats render(const Forest* forest, const Camera& camera, const RenderOptions& options,
-                    const RenderTarget& target);
+                    const RenderTarget& target, const ForestIndex* index = nullptr);
 
   // Lays the forest floor under these trees (leaf litter where crowns cover the ground,
   // forest_floor.hpp, and the ground cover's light); kept until called again.

@@ -22,6 +22,21 @@ bool Frustum::intersectsSphere(glm::vec3 centre, float radius) const {
   return true;
 }
 
+Frustum::Side Frustum::sideOfBox(glm::vec3 lo, glm::vec3 hi, float margin) const {
+  bool inside = true;
+  for (const glm::vec4& p : planes) {
+    const glm::vec3 n(p);
+    // The box's corners farthest along the plane's normal and farthest against it.
+    const glm::vec3 along(n.x >= 0.0f ? hi.x : lo.x, n.y >= 0.0f ? hi.y : lo.y,
+                          n.z >= 0.0f ? hi.z : lo.z);
+    const glm::vec3 against(n.x >= 0.0f ? lo.x : hi.x, n.y >= 0.0f ? lo.y : hi.y,
+                            n.z >= 0.0f ? lo.z : hi.z);
+    if (glm::dot(n, along) + p.w < -margin) return Side::Outside;
+    if (glm::dot(n, against) + p.w < margin) inside = false;
+  }
+  return inside ? Side::Inside : Side::Across;
+}
+
 float projectedPixels(float height_m, float distance_m, float pixelsPerRadian) {
   return height_m * pixelsPerRadian / std::max(distance_m, 1e-3f);
 }

@@ -25,6 +25,11 @@ struct Frustum {
 
   static Frustum fromMatrix(const glm::mat4& viewProjection);
   bool intersectsSphere(glm::vec3 centre, float radius) const;
+  // Where an axis-aligned box lies: wholly beyond one plane (every sphere inside it fails
+  // intersectsSphere), wholly within all six (every sphere centred in it passes), or across;
+  // a box within `margin` metres of a plane counts as across.
+  enum class Side { Outside, Inside, Across };
+  Side sideOfBox(glm::vec3 lo, glm::vec3 hi, float margin) const;
 };
 
 struct LodSettings {

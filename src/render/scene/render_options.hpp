@@ -62,8 +62,9 @@ struct ForestStats {
   std::array<std::size_t, kLevelCount> instances{};  // per level, cross-fades counted twice
   std::size_t culled = 0;                            // outside the frustum
   std::size_t tooSmall = 0;                          // under the LOD settings' minimum size
-  std::size_t triangles = 0;                         // drawn in the colour pass
-  std::size_t lod0Triangles = 0;                     // the same trees all at LOD0, for comparison
+  std::size_t lookedAt = 0;       // trees tested one by one (with a ForestIndex, not the too small)
+  std::size_t triangles = 0;      // drawn in the colour pass
+  std::size_t lod0Triangles = 0;  // the same trees all at LOD0, for comparison
   std::array<std::size_t, kLevelCount> shadowCasters{};  // per level it casts with
   // Impostor atlases baked for the types this frame was the first to draw as sprites, and
   // the levels it was the first to draw uploaded: the renderer's setup, not the frame's cost

@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 
 #include "gl_support.hpp"
+#include "render/scene/forest_index.hpp"
 #include "render_support.hpp"
 
 namespace eco {
@@ -36,6 +37,49 @@ ReferenceScene referenceScene() {
   s.options.sun = {172.0, 9.0};
   s.options.wind = {270.0, 1.0, 1.0, 0.25, 0.8};
   return s;
+}
+
+// With the forest's index a frame looks only at the trees tall enough for a pixel where
+// they stand, and is the same frame to the bit, with the same counts.
+TEST(SceneRenderer, AForestsIndexDrawsTheSameFrameLookingAtFewerTrees) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(129, 10.0);
+  // As in a forest, most plants young and small, one in fifty a tree of 5 to 30 m.
+  Forest forest;
+  for (int i = 0; i < 20000; ++i) {
+    const double east = (i * 37) % 1270 + 5.0, north = (i * 53 + i / 1270) % 1270 + 5.0;
+    const float height = i % 50 == 0 ? 5.0f + static_cast<float>(i % 26) : 0.1f + 0.01f * (i % 50);
+    const int species = i % 2;
+    const int type = library.typeFor(species, static_cast<std::uint64_t>(i), height,
+                                     library.maxHeight_m(species));
+    forest.add(library, type, worldFromMap(east, north, terrain.altitudeAt(east, north)), height,
+               0.0f, 0.8f, static_cast<std::uint64_t>(i));
+  }
+  buildTypesOf(forest, library);
+  const ForestIndex index(forest, library);
+  SceneRenderer renderer(terrain, 46.0, &library);
+  renderer.setForestFloor(forest);
+  Camera camera;
+  camera.position = worldFromMap(100, 100, 108);
+  camera.yaw_deg = 45.0f;
+  camera.pitch_deg = -8.0f;
+  RenderOptions options;
+  options.sun = {160.0, 10.0};
+  const RenderTarget target = RenderTarget::create(160, 90);
+  const ForestStats whole = renderer.render(&forest, camera, options, target).forest;
+  const Image wholeFrame = readPixels(160, 90);
+  const ForestStats indexed = renderer.render(&forest, camera, options, target, &index).forest;
+  EXPECT_EQ(readPixels(160, 90).rgba, wholeFrame.rgba);
+  EXPECT_EQ(indexed.instances, whole.instances);
+  EXPECT_EQ(indexed.culled, whole.culled);
+  EXPECT_EQ(indexed.tooSmall, whole.tooSmall);
+  EXPECT_EQ(indexed.shadowCasters, whole.shadowCasters);
+  EXPECT_EQ(indexed.triangles, whole.triangles);
+  EXPECT_EQ(whole.lookedAt, forest.size());
+  EXPECT_LT(indexed.lookedAt, forest.size() / 2);
+  EXPECT_GT(whole.tooSmall, forest.size() / 2);
+  EXPECT_GT(whole.culled, 0u);
 }
 
 Image renderScene(const ReferenceScene& s, int width, int height) {

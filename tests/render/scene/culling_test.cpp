@@ -21,6 +21,36 @@ TEST(Frustum, KeepsSpheresInsideOrTouchingAndDropsThoseOutside) {
   EXPECT_TRUE(f.intersectsSphere({-12, 0, -10}, 1.45f));
 }
 
+// A box is outside only where every sphere within it is, inside only where every sphere
+// centred in it is: checked against intersectsSphere on a lattice of spheres in each box.
+TEST(Frustum, PlacesABoxAsEverySphereInItIsPlaced) {
+  const Frustum f = Frustum::fromMatrix(glm::perspective(radians(90.0f), 1.0f, 1.0f, 100.0f));
+  using Side = Frustum::Side;
+  EXPECT_EQ(f.sideOfBox({-1, -1, -12}, {1, 1, -8}, 0.05f), Side::Inside);
+  EXPECT_EQ(f.sideOfBox({-1, -1, 8}, {1, 1, 12}, 0.05f), Side::Outside);       // behind
+  EXPECT_EQ(f.sideOfBox({-30, -1, -12}, {-25, 1, -8}, 0.05f), Side::Outside);  // left
+  EXPECT_EQ(f.sideOfBox({-15, -1, -12}, {-5, 1, -8}, 0.05f), Side::Across);    // on the left plane
+  EXPECT_EQ(f.sideOfBox({-1, -1, -1.02f}, {1, 1, -0.5f}, 0.05f),
+            Side::Across);  // on the near plane
+  // Every sphere of radius 0.5 in a box (its centre at least 0.5 inside), and every sphere
+  // centred in it, placed as the box is.
+  for (const auto& [lo, hi] : {std::pair{glm::vec3(-1, -1, -12), glm::vec3(1, 1, -8)},
+                               std::pair{glm::vec3(-30, -1, -12), glm::vec3(-25, 1, -8)}}) {
+    const Side side = f.sideOfBox(lo, hi, 0.05f);
+    for (float x = 0.0f; x <= 1.0f; x += 0.25f)
+      for (float z = 0.0f; z <= 1.0f; z += 0.25f) {
+        const glm::vec3 within = glm::mix(lo + 0.5f, hi - 0.5f, glm::vec3(x, 0.5f, z));
+        const glm::vec3 centred = glm::mix(lo, hi, glm::vec3(x, 0.5f, z));
+        if (side == Side::Outside) {
+          EXPECT_FALSE(f.intersectsSphere(within, 0.5f));
+        }
+        if (side == Side::Inside) {
+          EXPECT_TRUE(f.intersectsSphere(centred, 0.5f));
+        }
+      }
+  }
+}
+
 TEST(LodChoice, FollowsProjectedSizeThroughEveryLevel) {
   LodSettings s;
   // Halfway between switches, in no fade band.

@@ -150,6 +150,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
     auto phase = Clock::now();
     const double year = settings.yearOfFrame(frame);
     const double u = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
+    const Camera path = settings.camera(u);  // where the path sets the camera this frame
     RenderOptions options = settings.render;
     if (settings.kind == TimelapseKind::Wind) {
       options.wind.time += frame * settings.windRadiansPerSecond / settings.fps;
@@ -184,8 +185,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
         intervalEnd = to;
       }
       CanopyFloorSum floorSum(library, terrain.grid);
-      forest = frameTrees(*interval, year, library, settings.camera(u), settings.frame, options.lod,
-                          floorSum);
+      forest = frameTrees(*interval, year, library, path, settings.frame, options.lod, floorSum);
       floor = floorSum.floor();
       clearance.emplace(forest, library);
     }
@@ -193,7 +193,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
 
     phase = Clock::now();
     // Out of the crowns of this frame's trees, wherever the path was set.
-    const Camera camera = clearOfTrees(settings.camera(u), *clearance);
+    const Camera camera = clearOfTrees(path, *clearance);
     Image image = draw({forest, *floor}, camera, options);
     timings.render_s += secondsSince(phase);
 

@@ -25,7 +25,7 @@ constexpr std::string_view kMagic = "ECOFOREST-CHECKPOINT";
 // 7: ages, crown base, vigor, light and growth factor in 16 bits (Fixed16), poor years in 8
 // 8: XXH3 checksum (version 7, the same layout checksummed by FNV-1a, is still read)
 constexpr std::uint32_t kFormatVersion = 8;
-constexpr SealedVersion kReadableVersions[] = {{kFormatVersion, BlockHash::Xxh3},
+constexpr SealedVersion kReadableVersions[] = {{kFormatVersion, kWrittenHash},
                                                {7, BlockHash::Fnv1a}};
 
 bool finiteAtLeast(float value, float least) {

@@ -72,7 +72,7 @@ BinaryWriter sealedHeader(std::string_view magic, std::uint32_t version) {
 std::uint64_t ChecksummedOutput::finish() {
   emit(pending_);
   pending_.clear();
-  const std::uint64_t checksum = combineBlockHashes(hashes_, BlockHash::Xxh3);
+  const std::uint64_t checksum = combineBlockHashes(hashes_, kWrittenHash);
   out_.write(std::string_view(reinterpret_cast<const char*>(&checksum), sizeof checksum));
   return checksum;
 }
@@ -80,7 +80,7 @@ std::uint64_t ChecksummedOutput::finish() {
 void ChecksummedOutput::emit(std::string_view bytes) {
   // Hashed while they are written: the system call's copy into the page cache takes one
   // core, the hashing the others.
-  tbb::parallel_invoke([&] { appendBlockHashes(bytes, BlockHash::Xxh3, hashes_); },
+  tbb::parallel_invoke([&] { appendBlockHashes(bytes, kWrittenHash, hashes_); },
                        [&] { out_.write(bytes); });
 }
 

@@ -28,6 +28,8 @@ using PartDone = std::function<void(std::string_view)>;
 // FNV-1a goes a byte at a time through a multiplication (0.7 GB/s a core here), XXH3 reads a
 // vector at a time (4.4 GB/s, this machine's memory's pace).
 enum class BlockHash { Fnv1a, Xxh3 };
+// The hash ChecksummedOutput seals files with: each format's current version's.
+inline constexpr BlockHash kWrittenHash = BlockHash::Xxh3;
 
 // The hash of each 1 MiB block (in parallel), then the hash of the blocks' hashes; the bytes
 // hashed 64 MiB at a time, each part handed to `hashed` when it is.
@@ -37,7 +39,7 @@ std::uint64_t blockChecksum(std::string_view bytes, BlockHash hash, const PartDo
 BinaryWriter sealedHeader(std::string_view magic, std::uint32_t version);
 
 // Writes bytes through to `out` as they come, hashing whole blocks on the way; finish()
-// writes the rest and after it their blockChecksum() by XXH3, which it returns.
+// writes the rest and after it their blockChecksum() by kWrittenHash, which it returns.
 class ChecksummedOutput {
  public:
   explicit ChecksummedOutput(AtomicFile& out) : out_(out) {}
@@ -68,7 +70,7 @@ std::optional<std::string_view> checkedBody(std::string_view bytes, BlockHash ha
 // reader reads its current version and older ones of the same layout.
 struct SealedVersion {
   std::uint32_t number = 0;
-  BlockHash hash = BlockHash::Xxh3;
+  BlockHash hash = kWrittenHash;
 };
 
 // A file's bytes after its magic and version, checked in that order.

@@ -33,7 +33,7 @@ constexpr std::size_t kTreesColumns = 16, kTreesColumnsWithoutSite = 12;
 constexpr std::string_view kBinaryMagic = "ECOFOREST-TREES";
 // 2: XXH3 checksum. Version 1, the same layout checksummed by FNV-1a, is still read.
 constexpr std::uint32_t kBinaryVersion = 2;
-constexpr SealedVersion kReadableVersions[] = {{kBinaryVersion, BlockHash::Xxh3},
+constexpr SealedVersion kReadableVersions[] = {{kBinaryVersion, kWrittenHash},
                                                {1, BlockHash::Fnv1a}};
 // id, species, east, north, ground, age, height, crown radius, crown base, dbh, vigor,
 // variant seed, the site's four components: the simulation's numbers exactly, so a binary

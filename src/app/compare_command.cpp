@@ -180,8 +180,9 @@ void runCompare(const CompareArgs& args) {
     std::optional<Field> overlay;
     if (!args.view.overlay.empty()) overlay = source.overlay(args.view.overlay);
     for (std::size_t k = 0; k < snapshotYears.size(); ++k)
-      stills[k].push_back(
-          drawStill(source, source.forestOf(snapshotYears[k], 0), camera, args.view, overlay));
+      stills[k].push_back(drawStill(source,
+                                    stillTrees(source, snapshotYears[k], 0, camera, args.view),
+                                    camera, args.view, overlay));
     library = std::move(source.library);
   }
   for (std::size_t k = 0; k < snapshotYears.size(); ++k) {

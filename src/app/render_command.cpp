@@ -86,16 +86,30 @@ void runRender(const RenderArgs& args) {
   if (terminal && source.run) std::cerr << fmt::format("render: reading year {}\n", year);
   if (source.run || args.demoTrees > 0)
     source.buildLibrary(LibrarySettings::shaped(source.run.has_value() && !args.view.noShaping));
-  const Forest forest = source.forestOf(year, args.demoTrees);
-  const Camera camera = cameraFrom(args.view, source.terrain, &forest, source.library.get());
+  // The ground preset stands where the trees leave room, so it places its camera among the
+  // year's forest held whole; any other camera is placed by the terrain alone, and the still
+  // then holds only the trees it can show (a landscape's year, a hundred million plants,
+  // holds a few million).
+  Camera camera;
+  SeenForest trees;
+  if (cameraNeedsTrees(args.view)) {
+    Forest forest = source.forestOf(year, args.demoTrees);
+    camera = cameraFrom(args.view, source.terrain, &forest, source.library.get());
+    if (source.library)
+      trees = wholeForest(std::move(forest), *source.library, source.terrain.grid);
+  } else {
+    camera = cameraFrom(args.view, source.terrain);
+    trees = stillTrees(source, year, args.demoTrees, camera, args.view);
+  }
 
   const double loadMs = millisecondsSince(start);
   StillStats stats;
   if (terminal)
-    std::cerr << fmt::format("render: drawing {} plants, {}x{} at {} quality\n", forest.size(),
+    std::cerr << fmt::format("render: drawing {} of {} plants, {}x{} at {} quality\n",
+                             trees.shown.size(), trees.shown.size() + trees.culled + trees.tooSmall,
                              args.view.size.width, args.view.size.height,
                              toString(args.view.quality));
-  const Image image = drawStill(source, forest, camera, args.view, overlay, &stats);
+  const Image image = drawStill(source, trees, camera, args.view, overlay, &stats);
   writeRgb8Image(args.out, image);
   if (terminal)
     std::cerr << fmt::format("render: wrote {} in {:.1f} s\n", args.out,
@@ -105,25 +119,34 @@ void runRender(const RenderArgs& args) {
 
 }  // namespace
 
-Image drawStill(const SceneSource& source, const Forest& forest, const Camera& camera,
+Image drawStill(const SceneSource& source, const SeenForest& trees, const Camera& camera,
                 const ViewOptions& view, const std::optional<Field>& overlay, StillStats* stats) {
   const auto rendererStart = std::chrono::steady_clock::now();
   HeadlessGl gl;
   const std::unique_ptr<SceneRenderer> renderer = sceneRendererFor(source, view);
   if (overlay) renderer->terrain().setOverlay(view.overlay, *overlay);
-  renderer->setForestFloor(forest);
-  // A frame looks only at the trees a pixel can show (ForestIndex): most of a run's plants.
+  renderer->setForestFloor(trees.floor);
+  // A frame looks only at the trees a pixel can show (ForestIndex): most of a whole forest.
   std::optional<ForestIndex> index;
-  if (source.library) index.emplace(forest, *source.library);
+  if (source.library) index.emplace(trees.shown, *source.library);
   RenderTarget target = RenderTarget::create(view.size.width, view.size.height, 0, view.antialias);
   const double setupMs = millisecondsSince(rendererStart);
-  const FrameStats frame = renderer->render(
-      &forest, camera, renderOptionsFrom(view, source.scenario), target, index ? &*index : nullptr);
+  FrameStats frame =
+      renderer->render(&trees.shown, camera, renderOptionsFrom(view, source.scenario), target,
+                       index ? &*index : nullptr);
+  frame.forest.culled += trees.culled;
+  frame.forest.tooSmall += trees.tooSmall;
   if (stats)
     *stats = {frame, setupMs, glDescription(),
               renderer->forest() ? renderer->forest()->gpuMemory() : ForestGpuMemory{},
               target.samples};
   return readPixels(target);
+}
+
+SeenForest stillTrees(const SceneSource& source, int year, std::size_t demoTrees,
+                      const Camera& camera, const ViewOptions& view) {
+  return source.forestSeenFrom(year, demoTrees, camera, view.size,
+                               renderOptionsFrom(view, source.scenario).lod);
 }
 
 void addRenderCommand(CLI::App& app) {

@@ -26,9 +26,14 @@ struct StillStats {
 };
 
 // Draws a forest on its source's terrain (its library built) from a camera, headless, into
-// an image of the options' size.
-Image drawStill(const SceneSource& source, const Forest& forest, const Camera& camera,
+// an image of the options' size: the trees shown on the floor of all of them, the trees
+// left out counted with those the renderer does not draw.
+Image drawStill(const SceneSource& source, const SeenForest& trees, const Camera& camera,
                 const ViewOptions& view, const std::optional<Field>& overlay,
                 StillStats* stats = nullptr);
+// The trees a still of `view` from `camera` draws out of the source's year (or its demo
+// planting): SceneSource::forestSeenFrom with the view's size and levels.
+SeenForest stillTrees(const SceneSource& source, int year, std::size_t demoTrees,
+                      const Camera& camera, const ViewOptions& view);
 
 }  // namespace eco

@@ -19,6 +19,13 @@ Forest SceneSource::forestOf(int year, std::size_t demoTrees) const {
   return demoForest(terrain, *library, demoTrees, scenario.seed);
 }
 
+SeenForest SceneSource::forestSeenFrom(int year, std::size_t demoTrees, const Camera& camera,
+                                       FrameSize frame, const LodSettings& lod) const {
+  if (!library) return {};
+  if (run) return eco::forestSeenFrom(*run, year, *library, terrain.grid, camera, frame, lod);
+  return wholeForest(forestOf(year, demoTrees), *library, terrain.grid);
+}
+
 Field SceneSource::overlay(const std::string& name) const {
   if (run) {
     const RunPaths paths{run->dir};

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "render/scene/forest.hpp"
+#include "render/scene/seen_forest.hpp"
 #include "render/scene/tree_library.hpp"
 #include "sim/grid.hpp"
 #include "sim/run/run_folder.hpp"
@@ -30,6 +31,11 @@ struct SceneSource {
   void buildLibrary(const LibrarySettings& settings = {});
   // The trees of a snapshot year (run) or the demo planting (scenario, `demoTrees` > 0).
   Forest forestOf(int year, std::size_t demoTrees) const;
+  // The same trees as a still of `frame` from `camera` at `lod` needs them: a snapshot
+  // year's read a batch at a time, keeping only those the still can show (forestSeenFrom),
+  // the demo planting whole; with the floor of all of them.
+  SeenForest forestSeenFrom(int year, std::size_t demoTrees, const Camera& camera, FrameSize frame,
+                            const LodSettings& lod) const;
   // A map for the terrain overlay: a condition, "suitability_<species>" or "canopy_height"
   // from the run's maps/, or a condition computed for a scenario.
   Field overlay(const std::string& name) const;

@@ -111,12 +111,16 @@ Camera cameraFrom(const ViewOptions& o, const Terrain& terrain, const Forest* tr
                   const TreeLibrary* library) {
   checkCameraOption(o);
   if (!o.camera.empty()) return *parseCamera(o.camera);
-  const CameraPreset preset = o.view == "ground" ? CameraPreset::Ground
-                              : o.view == "low"  ? CameraPreset::Low
-                                                 : CameraPreset::Overview;
-  if (preset == CameraPreset::Ground && trees && library && trees->size() > 0)
+  if (cameraNeedsTrees(o) && trees && library && trees->size() > 0)
     return groundCamera(terrain, *trees, *library);
-  return presetCamera(preset, terrain);
+  return presetCamera(o.view == "ground" ? CameraPreset::Ground
+                      : o.view == "low"  ? CameraPreset::Low
+                                         : CameraPreset::Overview,
+                      terrain);
+}
+
+bool cameraNeedsTrees(const ViewOptions& o) {
+  return o.camera.empty() && o.view == "ground";
 }
 
 RenderOptions renderOptionsFrom(const ViewOptions& o, const Scenario& scenario) {

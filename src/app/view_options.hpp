@@ -55,6 +55,8 @@ void checkCameraOption(const ViewOptions& options);
 // (groundCamera); without trees it stands at the map's centre.
 Camera cameraFrom(const ViewOptions& options, const Terrain& terrain, const Forest* trees = nullptr,
                   const TreeLibrary* library = nullptr);
+// Whether that camera is placed among the trees (the ground preset, no --camera).
+bool cameraNeedsTrees(const ViewOptions& options);
 RenderOptions renderOptionsFrom(const ViewOptions& options, const Scenario& scenario);
 // The renderer of a scene at the options' quality (an OpenGL context current), its ground
 // cover following the moisture the scenario's terrain and climate give.

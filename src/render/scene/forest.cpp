@@ -204,6 +204,19 @@ Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library)
   return forest;
 }
 
+void forEachForestBatch(const RunFolder& run, int year, const TreeLibrary& library,
+                        const std::function<void(const Forest&)>& each) {
+  SpeciesNumbering librarySpecies(library, run.dir.string());
+  Forest batch;
+  readSnapshotInBatches(
+      run, year, {},
+      [&](std::span<const TreeRow> rows, const std::vector<std::string>& speciesNames) {
+        batch.resize(rows.size());
+        placeRows(batch, 0, rows, librarySpecies.of(speciesNames), library);
+        each(batch);
+      });
+}
+
 SiteShaping siteShapingOf(const TreeRow& tree, const TreeLibrary& library) {
   SiteShaping site;
   if (!library.settings().shaping) return site;

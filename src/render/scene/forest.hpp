@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -91,6 +92,11 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
 // file is read (readSnapshotInBatches): a landscape's hundred million plants hold their 64
 // bytes each of the forest, never the rows' 88 besides.
 Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library);
+// The same snapshot a batch of rows at a time, each batch's trees placed into a forest of
+// their own and handed to `each`, which keeps what it needs of them: a still needs few of a
+// landscape's hundred million plants (render/scene/seen_forest.hpp).
+void forEachForestBatch(const RunFolder& run, int year, const TreeLibrary& library,
+                        const std::function<void(const Forest&)>& each);
 
 // The library type that draws a snapshot's tree of the library's species `species`: its
 // variant by its seed, its age class by its height, its crown class by its clear bole.

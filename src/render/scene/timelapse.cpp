@@ -7,7 +7,6 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -15,6 +14,7 @@
 #include "core/memory.hpp"
 #include "render/scene/culling.hpp"
 #include "render/scene/growth_timeline.hpp"
+#include "render/scene/seen_forest.hpp"
 #include "render/scene/tree_clearance.hpp"
 
 namespace eco {
@@ -38,42 +38,34 @@ constexpr std::size_t kFramePart = std::size_t{1} << 20;
 
 // Whether tree i of `forest` can matter to a frame whose path sets the camera `path`, which
 // clearOfTrees may lift by up to kMaxLift_m: near enough to the eye's column to lift it, or
-// drawn (or casting a shadow) from a camera that much nearer than `path` (its pixels counted
-// at that distance). The renderer draws nothing of the others (LodSettings::minPixels):
-// only the floor shows their crowns.
+// drawn (or casting a shadow) from a camera that much nearer than `path`. The renderer draws
+// nothing of the others: only the floor shows their crowns.
 bool mayMatter(const Forest& forest, std::size_t i, const TreeLibrary& library, const Camera& path,
                float pixelsPerRadian, const LodSettings& lod) {
   const glm::vec3 stem = forest.position[i];
   if (std::hypot(stem.x - path.position.x, stem.z - path.position.z) <=
       drawnReach_m(forest, i, library) + kGroundClearance_m)
     return true;
-  const TreeType& type = library.type(forest.type[i]);
-  const glm::vec3 centre(drawnBounds(forest, i, type));
-  const float nearest = std::max(glm::length(centre - path.position) - kMaxLift_m, 0.0f);
-  return !tooSmallToDraw(
-      projectedPixels(type.height_m * forest.scaleY[i], nearest, pixelsPerRadian), lod);
+  return mayBeDrawn(forest, i, library.type(forest.type[i]), path.position, pixelsPerRadian, lod,
+                    kMaxLift_m);
 }
 
 // The trees of the interval's frame at `year` that can matter to it (mayMatter), made a part
 // at a time, with the floor of all of them.
-Forest frameTrees(const GrowthInterval& interval, double year, const TreeLibrary& library,
-                  const Camera& path, const FrameSize& frame, const LodSettings& lod,
-                  CanopyFloorSum& floor) {
+SeenForest frameTrees(const GrowthInterval& interval, double year, const TreeLibrary& library,
+                      const Grid& grid, const Camera& path, const FrameSize& frame,
+                      const LodSettings& lod) {
   const float pixelsPerRadian = path.pixelsPerRadian(frame.height);
-  Forest shown;
-  std::vector<std::uint8_t> matters;
+  SeenForestSum sum(library, grid);
   for (std::size_t first = 0; first < interval.size(); first += kFramePart) {
     const Forest part =
         interval.forestAt(year, first, std::min(first + kFramePart, interval.size()));
-    floor.add(part);
-    matters.assign(part.size(), 0);
-    tbb::parallel_for(std::size_t{0}, part.size(), [&](std::size_t i) {
-      matters[i] = mayMatter(part, i, library, path, pixelsPerRadian, lod);
+    sum.add(part, [&](std::size_t i) {
+      return mayMatter(part, i, library, path, pixelsPerRadian, lod) ? TreeSeen::Shown
+                                                                     : TreeSeen::TooSmall;
     });
-    for (std::size_t i = 0; i < part.size(); ++i)
-      if (matters[i]) shown.append(part, i);
   }
-  return shown;
+  return std::move(sum).done();
 }
 
 }  // namespace
@@ -184,9 +176,10 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
         kept = std::move(later);
         intervalEnd = to;
       }
-      CanopyFloorSum floorSum(library, terrain.grid);
-      forest = frameTrees(*interval, year, library, path, settings.frame, options.lod, floorSum);
-      floor = floorSum.floor();
+      SeenForest seen =
+          frameTrees(*interval, year, library, terrain.grid, path, settings.frame, options.lod);
+      forest = std::move(seen.shown);
+      floor = std::move(seen.floor);
       clearance.emplace(forest, library);
     }
     timings.instances_s += secondsSince(phase);

@@ -6,6 +6,7 @@
 
 #include "gl_support.hpp"
 #include "render/scene/forest_index.hpp"
+#include "render/scene/seen_forest.hpp"
 #include "render_support.hpp"
 
 namespace eco {
@@ -80,6 +81,57 @@ TEST(SceneRenderer, AForestsIndexDrawsTheSameFrameLookingAtFewerTrees) {
   EXPECT_LT(indexed.lookedAt, forest.size() / 2);
   EXPECT_GT(whole.tooSmall, forest.size() / 2);
   EXPECT_GT(whole.culled, 0u);
+}
+
+// A still of a run's year drawn from the trees it can show (forestSeenFrom) on the floor of
+// them all is the still of the whole year to the bit, with the same counts.
+TEST(SceneRenderer, AStillOfTheTreesItCanShowIsTheStillOfTheWholeYear) {
+  test::useHeadlessGl();
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(129, 10.0);
+  TreeSnapshot snapshot;
+  snapshot.year = 30;
+  snapshot.speciesNames = {"beech", "maple"};
+  for (std::uint64_t id = 1; id <= 20000; ++id) {  // most young, one in fifty of 5 to 30 m
+    TreeRow tree = test::variedTree(id);
+    tree.east_m = static_cast<double>((id * 37) % 1270 + 5);
+    tree.north_m = static_cast<double>((id * 53 + id / 1270) % 1270 + 5);
+    tree.ground_m = 100.0;
+    tree.species = static_cast<std::int16_t>(id % 2);
+    tree.height_m = id % 50 == 0 ? 5.0f + static_cast<float>(id % 26) : 0.1f + 0.01f * (id % 50);
+    tree.crownRadius_m = 0.2f * tree.height_m;
+    tree.crownBase_m = 0.3f * tree.height_m;
+    snapshot.trees.push_back(tree);
+  }
+  const RunFolder run = test::runHolding("scene_seen_still", {&snapshot}, SnapshotFormat::Binary);
+  Camera camera;
+  camera.position = worldFromMap(100, 100, 108);
+  camera.yaw_deg = 45.0f;
+  camera.pitch_deg = -8.0f;
+  RenderOptions options;
+  options.sun = {160.0, 10.0};
+  SceneRenderer renderer(terrain, 46.0, &library);
+  const RenderTarget target = RenderTarget::create(160, 90);
+
+  const Forest whole = forestFromRun(run, snapshot.year, library);
+  renderer.setForestFloor(whole);
+  const ForestIndex wholeIndex(whole, library);
+  const ForestStats all = renderer.render(&whole, camera, options, target, &wholeIndex).forest;
+  const Image wholeFrame = readPixels(160, 90);
+  const SeenForest seen =
+      forestSeenFrom(run, snapshot.year, library, terrain.grid, camera, {160, 90}, options.lod);
+  renderer.setForestFloor(seen.floor);
+  const ForestIndex seenIndex(seen.shown, library);
+  const ForestStats shown =
+      renderer.render(&seen.shown, camera, options, target, &seenIndex).forest;
+  EXPECT_EQ(readPixels(160, 90).rgba, wholeFrame.rgba);
+  EXPECT_EQ(shown.instances, all.instances);
+  EXPECT_EQ(shown.culled + seen.culled, all.culled);
+  EXPECT_EQ(shown.tooSmall + seen.tooSmall, all.tooSmall);
+  EXPECT_EQ(shown.shadowCasters, all.shadowCasters);
+  EXPECT_EQ(shown.triangles, all.triangles);
+  EXPECT_LT(seen.shown.size(), whole.size() / 10);
+  EXPECT_GT(seen.culled, 0u);
 }
 
 Image renderScene(const ReferenceScene& s, int width, int height) {

@@ -209,7 +209,9 @@ TEST(Timelapse, AFrameLeavesOutTheTreesUnderAPixelButNotTheirCrowns) {
       EXPECT_TRUE(shown) << "tree " << i << " is drawn from the camera";
       ++drawn;
     }
-    if (tooSmallToDraw(projectedPixels(height, distance - kMaxLift_m, pixelsPerRadian), lod)) {
+    // (A tree within a thousandth of a pixel's size may be kept: mayBeDrawn's margin.)
+    if (tooSmallToDraw(projectedPixels(1.002f * height, distance - kMaxLift_m, pixelsPerRadian),
+                       lod)) {
       EXPECT_FALSE(shown) << "tree " << i << " is under a pixel from every lifted eye";
     }
   }

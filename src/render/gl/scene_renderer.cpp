@@ -206,7 +206,7 @@ DrawFrame frameDrawer(SceneRenderer& renderer, FrameSize size, int samples) {
   return [&renderer, target](const FrameTrees& trees, const Camera& camera,
                              const RenderOptions& options) {
     renderer.setForestFloor(trees.floor);  // each frame's trees: the floor grows with them
-    renderer.render(&trees.shown, camera, options, *target);
+    renderer.render(&trees.shown, camera, options, *target, trees.index);
     return readPixels(*target);
   };
 }

@@ -132,6 +132,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
   Forest forest;
   std::optional<CanopyFloor> floor;        // of every tree of the frame, `forest`'s and not
   std::optional<TreeClearance> clearance;  // of `forest`, made again whenever it changes
+  std::optional<ForestIndex> index;        // of `forest` where it is the same in every frame
   // The snapshots around the frames' years, their trees paired once for all their frames.
   std::optional<GrowthInterval> interval;
   int intervalEnd = -1;  // the later snapshot's year of `interval`
@@ -151,6 +152,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
           forest = forestFromRun(run, shown, library);
         floor = canopyFloor(forest, library, terrain.grid);
         clearance.emplace(forest, library);
+        index.emplace(forest, library);
       }
     } else {
       // The snapshots around the year (the last pair at the end of the run).
@@ -187,7 +189,7 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
     phase = Clock::now();
     // Out of the crowns of this frame's trees, wherever the path was set.
     const Camera camera = clearOfTrees(path, *clearance);
-    Image image = draw({forest, *floor}, camera, options);
+    Image image = draw({forest, *floor, index ? &*index : nullptr}, camera, options);
     timings.render_s += secondsSince(phase);
 
     phase = Clock::now();

@@ -10,6 +10,7 @@
 #include "render/scene/camera_path.hpp"
 #include "render/scene/forest.hpp"
 #include "render/scene/forest_floor.hpp"
+#include "render/scene/forest_index.hpp"
 #include "render/scene/frame_sink.hpp"
 #include "render/scene/frame_size.hpp"
 #include "render/scene/render_options.hpp"
@@ -50,6 +51,9 @@ struct TimelapseTimings {
 struct FrameTrees {
   const Forest& shown;
   const CanopyFloor& floor;
+  // The shown trees indexed (ForestIndex), where the same trees are drawn in every frame (a
+  // wind time-lapse): each frame then looks only at those a pixel can show.
+  const ForestIndex* index = nullptr;
 };
 
 // Draws one frame of the terrain and its trees and reads it back.

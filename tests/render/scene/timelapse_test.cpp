@@ -90,6 +90,7 @@ TEST(Timelapse, GrowthAsksEachFrameForTheForestOfItsYear) {
     seen.crownArea.push_back(area);
     seen.windTimes.push_back(o.wind.time);
     seen.eyes.push_back(camera.position);
+    EXPECT_EQ(trees.index, nullptr);  // a frame's trees are its own
     return Image(32, 24);
   };
   test::CollectingSink sink;
@@ -233,6 +234,8 @@ TEST(Timelapse, WindHoldsTheYearAndAdvancesTheWindsTime) {
   const DrawFrame draw = [&](const FrameTrees& trees, const Camera&, const RenderOptions& o) {
     seen.trees.push_back(trees.shown.size());
     seen.windTimes.push_back(o.wind.time);
+    // The year's trees indexed once for every frame.
+    EXPECT_TRUE(trees.index && trees.index->forestSize() == trees.shown.size());
     return Image(16, 16);
   };
   test::CollectingSink sink;

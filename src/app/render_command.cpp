@@ -87,20 +87,17 @@ void runRender(const RenderArgs& args) {
   if (source.run || args.demoTrees > 0)
     source.buildLibrary(LibrarySettings::shaped(source.run.has_value() && !args.view.noShaping));
   // The ground preset stands where the trees leave room, so it places its camera among the
-  // year's forest held whole; any other camera is placed by the terrain alone, and the still
-  // then holds only the trees it can show (a landscape's year, a hundred million plants,
-  // holds a few million).
+  // trees near the map's centre, read first; any other camera is placed by the terrain alone.
+  // The still then holds only the trees it can show (a landscape's year, a hundred million
+  // plants, holds a few million).
   Camera camera;
-  SeenForest trees;
   if (cameraNeedsTrees(args.view)) {
-    Forest forest = source.forestOf(year, args.demoTrees);
-    camera = cameraFrom(args.view, source.terrain, &forest, source.library.get());
-    if (source.library)
-      trees = wholeForest(std::move(forest), *source.library, source.terrain.grid);
+    const Forest nearCentre = source.forestForGroundCamera(year, args.demoTrees);
+    camera = cameraFrom(args.view, source.terrain, &nearCentre, source.library.get());
   } else {
     camera = cameraFrom(args.view, source.terrain);
-    trees = stillTrees(source, year, args.demoTrees, camera, args.view);
   }
+  const SeenForest trees = stillTrees(source, year, args.demoTrees, camera, args.view);
 
   const double loadMs = millisecondsSince(start);
   StillStats stats;

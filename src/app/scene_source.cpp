@@ -4,6 +4,7 @@
 
 #include "app/data_paths.hpp"
 #include "core/error.hpp"
+#include "render/scene/tree_clearance.hpp"
 #include "sim/conditions/conditions.hpp"
 #include "sim/image_io.hpp"
 
@@ -24,6 +25,13 @@ SeenForest SceneSource::forestSeenFrom(int year, std::size_t demoTrees, const Ca
   if (!library) return {};
   if (run) return eco::forestSeenFrom(*run, year, *library, terrain.grid, camera, frame, lod);
   return wholeForest(forestOf(year, demoTrees), *library, terrain.grid);
+}
+
+Forest SceneSource::forestForGroundCamera(int year, std::size_t demoTrees) const {
+  if (!library || !run) return forestOf(year, demoTrees);
+  return forestFromRun(*run, year, *library, [this](const TreeRow& tree) {
+    return groundCameraMaySee(terrain, tree.east_m, tree.north_m);
+  });
 }
 
 Field SceneSource::overlay(const std::string& name) const {

@@ -36,6 +36,9 @@ struct SceneSource {
   // the demo planting whole; with the floor of all of them.
   SeenForest forestSeenFrom(int year, std::size_t demoTrees, const Camera& camera, FrameSize frame,
                             const LodSettings& lod) const;
+  // The same trees as the ground preset needs them to place its camera: a snapshot year's
+  // near the map's centre (groundCameraMaySee), the demo planting whole.
+  Forest forestForGroundCamera(int year, std::size_t demoTrees) const;
   // A map for the terrain overlay: a condition, "suitability_<species>" or "canopy_height"
   // from the run's maps/, or a condition computed for a scenario.
   Field overlay(const std::string& name) const;

@@ -190,12 +190,13 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
   return forest;
 }
 
-Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library) {
+Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library,
+                     const TreeFilter& keep) {
   Forest forest;
-  forest.reserve(snapshotRowsAtMost(run, year));  // no array grows past its rows
+  if (!keep) forest.reserve(snapshotRowsAtMost(run, year));  // no array grows past its rows
   SpeciesNumbering librarySpecies(library, run.dir.string());
   readSnapshotInBatches(
-      run, year, {},
+      run, year, keep,
       [&](std::span<const TreeRow> rows, const std::vector<std::string>& speciesNames) {
         const std::size_t start = forest.size();
         forest.resize(start + rows.size());

@@ -90,8 +90,9 @@ Forest forestFromSnapshot(const TreeSnapshot& snapshot, const TreeLibrary& libra
                           const std::string& where);
 // The same forest from a run's snapshot of `year`, built a batch of rows at a time as the
 // file is read (readSnapshotInBatches): a landscape's hundred million plants hold their 64
-// bytes each of the forest, never the rows' 88 besides.
-Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library);
+// bytes each of the forest, never the rows' 88 besides. Only the rows `keep` keeps, if given.
+Forest forestFromRun(const RunFolder& run, int year, const TreeLibrary& library,
+                     const TreeFilter& keep = {});
 // The same snapshot a batch of rows at a time, each batch's trees placed into a forest of
 // their own and handed to `each`, which keeps what it needs of them: a still needs few of a
 // landscape's hundred million plants (render/scene/seen_forest.hpp).

@@ -100,10 +100,36 @@ float openSight(const Terrain& terrain, const TreeClearance& trees, glm::vec3 ey
   return max_m;
 }
 
+namespace {
+
+// groundCamera's candidates: on a 2 m lattice in square rings around the map's centre, out to
+// 300 m or `kMargin_m` from its nearer edge.
+struct GroundSearch {
+  static constexpr double kStep_m = 2.0, kMaxDistance_m = 300.0, kMargin_m = 10.0;
+  double centreEast = 0.0, centreNorth = 0.0;
+  int rings = 0;
+
+  explicit GroundSearch(const Grid& g) {
+    const double width = g.eastOf(g.width - 1), depth = g.northOf(0);
+    centreEast = 0.5 * width, centreNorth = 0.5 * depth;
+    rings = std::max(
+        0, static_cast<int>(std::min(kMaxDistance_m, 0.5 * std::min(width, depth) - kMargin_m) /
+                            kStep_m));
+  }
+};
+
+}  // namespace
+
+bool groundCameraMaySee(const Terrain& terrain, double east, double north) {
+  const GroundSearch search(terrain.grid);
+  const double reach = search.rings * GroundSearch::kStep_m + kGroundView_m + kGroundClearance_m +
+                       kGroundCrownReach_m;
+  return std::abs(east - search.centreEast) <= reach &&
+         std::abs(north - search.centreNorth) <= reach;
+}
+
 Camera groundCamera(const Terrain& terrain, const Forest& forest, const TreeLibrary& library) {
-  const Grid& g = terrain.grid;
-  const double width = g.eastOf(g.width - 1), depth = g.northOf(0);
-  const double centreEast = 0.5 * width, centreNorth = 0.5 * depth;
+  const GroundSearch search(terrain.grid);
   const TreeClearance clearance(forest, library);
   const float eye = CameraController::kEyeHeight_m;
   auto eyeAt = [&](double east, double north) {
@@ -128,16 +154,14 @@ Camera groundCamera(const Terrain& terrain, const Forest& forest, const TreeLibr
     return best;
   };
 
-  // Candidates on a 2 m lattice in square rings of growing distance from the centre. The
-  // fallback is the best point seen: the clearest, then the most open.
-  const double step = 2.0, margin = 10.0;
-  const int rings =
-      std::max(0, static_cast<int>(std::min(300.0, 0.5 * std::min(width, depth) - margin) / step));
+  // Candidates in rings of growing distance from the centre. The fallback is the best point
+  // seen: the clearest, then the most open.
   Camera camera;
   camera.near_m = 0.1f;
   float bestClear = -1.0f, bestFree = -1.0f;
   auto consider = [&](int i, int j) {
-    const double east = centreEast + i * step, north = centreNorth + j * step;
+    const double east = search.centreEast + i * GroundSearch::kStep_m;
+    const double north = search.centreNorth + j * GroundSearch::kStep_m;
     const glm::vec3 position = eyeAt(east, north);
     const float clear = clearance.at(position, kGroundClearance_m);
     if (clear < bestClear) return false;
@@ -150,7 +174,7 @@ Camera groundCamera(const Terrain& terrain, const Forest& forest, const TreeLibr
     return clear >= kGroundClearance_m && sight.free_m >= kGroundView_m;
   };
   if (consider(0, 0)) return camera;
-  for (int r = 1; r <= rings; ++r) {
+  for (int r = 1; r <= search.rings; ++r) {
     for (int i = -r; i <= r; ++i)
       if (consider(i, -r) || consider(i, r)) return camera;
     for (int j = -r + 1; j < r; ++j)

@@ -55,6 +55,12 @@ float openSight(const Terrain& terrain, const TreeClearance& trees, glm::vec3 ey
 inline constexpr float kGroundClearance_m = 2.0f;
 inline constexpr float kGroundView_m = 30.0f;
 Camera groundCamera(const Terrain& terrain, const Forest& forest, const TreeLibrary& library);
+// Whether groundCamera may look at a tree whose stem stands at (east, north), map metres:
+// within its farthest candidate, sight line and a crown's reach (kGroundCrownReach_m) of
+// the map's centre, east and north. A forest of these trees alone places the camera where
+// the whole forest does, so a still of a landscape need not hold the rest.
+inline constexpr double kGroundCrownReach_m = 100.0;  // far beyond any species' widest crown
+bool groundCameraMaySee(const Terrain& terrain, double east, double north);
 
 // A camera kept out of the trees: raised in half-metre steps until no tree as drawn is within
 // kGroundClearance_m of it, by at most kMaxLift_m; its view direction is kept. A time-lapse

@@ -162,6 +162,21 @@ TEST(Forest, ARunsSnapshotBuiltBatchByBatchIsTheForestOfItsRowsRead) {
   test::expectSameForest(batched, forestFromSnapshot(readSnapshot(run, 1), library, "run"));
   EXPECT_EQ(batched.type.capacity(), snapshotRowsAtMost(run, 1));  // reserved once
   EXPECT_GT(typesOf(batched).size(), 1u);
+  // Only the rows kept: the same trees as the whole forest's, in order.
+  const Forest kept =
+      forestFromRun(run, 1, library, [](const TreeRow& t) { return t.id % 7 == 0; });
+  Forest expected;
+  for (std::size_t i = 6; i < batched.size(); i += 7) expected.append(batched, i);
+  test::expectSameForest(kept, expected);
+  // And batch by batch, each batch a forest of its own.
+  Forest joined;
+  int batches = 0;
+  forEachForestBatch(run, 1, library, [&](const Forest& batch) {
+    ++batches;
+    for (std::size_t i = 0; i < batch.size(); ++i) joined.append(batch, i);
+  });
+  EXPECT_GE(batches, 2);
+  test::expectSameForest(joined, batched);
 }
 
 TEST(Forest, ARunsCsvSnapshotNamesItsSpeciesAsItsRowsComeAndAnUnknownOneIsAnInputError) {

@@ -69,14 +69,14 @@ TEST(TreeClearance, NeverOverstatesTheDistanceToTheTreeAsDrawn) {
   EXPECT_FLOAT_EQ(clearance.at({200.0f, 1.7f, 0.0f}, 5.0f), 5.0f);
 }
 
-// A dense young stand on flat ground (8 m beeches with branches to eye height on a 3 m
-// lattice, each moved up to 1.5 m off it) with one ride running east to west, 40 m north
-// of the centre: the only place where a person stands clear of every tree and sees far.
-Forest standWithRide(const TreeLibrary& library, double rideNorth) {
+// A dense young stand on flat ground `size_m` across (8 m beeches with branches to eye
+// height on a 3 m lattice, each moved up to 1.5 m off it) with one ride running east to
+// west at `rideNorth`: the only place where a person stands clear of every tree and sees far.
+Forest standWithRide(const TreeLibrary& library, double rideNorth, double size_m = 200.0) {
   Forest forest;
   std::uint64_t id = 0;
-  for (double north = 1.5; north < 200.0; north += 3.0)
-    for (double east = 1.5; east < 200.0; east += 3.0) {
+  for (double north = 1.5; north < size_m; north += 3.0)
+    for (double east = 1.5; east < size_m; east += 3.0) {
       ++id;
       const double jitterEast = 1.5 * std::sin(12.9898 * id),
                    jitterNorth = 1.5 * std::cos(78.233 * id);
@@ -102,6 +102,30 @@ TEST(GroundCamera, StandsClearOfEveryTrunkAndCrownAndLooksAlongTheRide) {
   EXPECT_GE(openSight(terrain, TreeClearance(forest, library), camera.position,
                       glm::vec3(camera.forward().x, 0, camera.forward().z), kGroundView_m),
             kGroundView_m);
+}
+
+// A still's ground camera is placed among the trees near the map's centre only
+// (groundCameraMaySee): the same camera as among the whole forest.
+TEST(GroundCamera, TheTreesItMaySeePlaceItAsTheWholeForestDoes) {
+  const TreeLibrary& library = test::smallLibrary();
+  const Terrain terrain = test::flatTerrain(141, 10.0);  // 1.4 km, its centre at 700 m
+  const Forest whole = standWithRide(library, 740.0, 1400.0);
+  Forest nearCentre;
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    const glm::dvec3 map = mapFromWorld(glm::dvec3(whole.position[i]));
+    if (groundCameraMaySee(terrain, map.x, map.y)) nearCentre.append(whole, i);
+  }
+  EXPECT_LT(nearCentre.size(), whole.size() / 2);
+  const Camera camera = groundCamera(terrain, whole, library);
+  const Camera nearCamera = groundCamera(terrain, nearCentre, library);
+  EXPECT_EQ(nearCamera.position, camera.position);
+  EXPECT_EQ(nearCamera.yaw_deg, camera.yaw_deg);
+  EXPECT_NEAR(mapFromWorld(glm::dvec3(camera.position)).y, 740.0, 12.0);  // in the ride
+  // Out to its farthest candidate (300 m), sight line and clearance, and a crown's reach.
+  const double reach = 300.0 + kGroundView_m + kGroundClearance_m + kGroundCrownReach_m;
+  EXPECT_TRUE(groundCameraMaySee(terrain, 700.0 - reach, 700.0 + reach));
+  EXPECT_FALSE(groundCameraMaySee(terrain, 700.0 - reach - 0.1, 700.0));
+  EXPECT_FALSE(groundCameraMaySee(terrain, 700.0, 700.0 + reach + 0.1));
 }
 
 TEST(GroundCamera, LooksAlongAHillsideRatherThanIntoIt) {

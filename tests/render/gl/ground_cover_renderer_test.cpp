@@ -14,11 +14,7 @@ constexpr int kWidth = 160, kHeight = 90;
 
 // A person's view over a flat 330 m square of open ground, looking east and a little down.
 Camera eyeLevel() {
-  Camera camera;
-  camera.position = worldFromMap(100.0, 160.0, 101.7);
-  camera.yaw_deg = 90.0f;
-  camera.pitch_deg = -10.0f;
-  return camera;
+  return test::cameraAt(worldFromMap(100.0, 160.0, 101.7), 90.0f, -10.0f);
 }
 
 struct Drawn {

@@ -40,6 +40,17 @@ ReferenceScene referenceScene() {
   return s;
 }
 
+// A camera 8 m over the level ground of a 1.27 km stand, looking across it, and a low sun.
+Camera overTheStand() {
+  return test::cameraAt(worldFromMap(100, 100, 108), 45.0f, -8.0f);
+}
+
+RenderOptions morningSun() {
+  RenderOptions options;
+  options.sun = {160.0, 10.0};
+  return options;
+}
+
 // With the forest's index a frame looks only at the trees tall enough for a pixel where
 // they stand, and is the same frame to the bit, with the same counts.
 TEST(SceneRenderer, AForestsIndexDrawsTheSameFrameLookingAtFewerTrees) {
@@ -61,12 +72,8 @@ TEST(SceneRenderer, AForestsIndexDrawsTheSameFrameLookingAtFewerTrees) {
   const ForestIndex index(forest, library);
   SceneRenderer renderer(terrain, 46.0, &library);
   renderer.setForestFloor(forest);
-  Camera camera;
-  camera.position = worldFromMap(100, 100, 108);
-  camera.yaw_deg = 45.0f;
-  camera.pitch_deg = -8.0f;
-  RenderOptions options;
-  options.sun = {160.0, 10.0};
+  const Camera camera = overTheStand();
+  const RenderOptions options = morningSun();
   const RenderTarget target = RenderTarget::create(160, 90);
   const ForestStats whole = renderer.render(&forest, camera, options, target).forest;
   const Image wholeFrame = readPixels(160, 90);
@@ -104,12 +111,8 @@ TEST(SceneRenderer, AStillOfTheTreesItCanShowIsTheStillOfTheWholeYear) {
     snapshot.trees.push_back(tree);
   }
   const RunFolder run = test::runHolding("scene_seen_still", {&snapshot}, SnapshotFormat::Binary);
-  Camera camera;
-  camera.position = worldFromMap(100, 100, 108);
-  camera.yaw_deg = 45.0f;
-  camera.pitch_deg = -8.0f;
-  RenderOptions options;
-  options.sun = {160.0, 10.0};
+  const Camera camera = overTheStand();
+  const RenderOptions options = morningSun();
   SceneRenderer renderer(terrain, 46.0, &library);
   const RenderTarget target = RenderTarget::create(160, 90);
 

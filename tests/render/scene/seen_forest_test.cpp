@@ -65,21 +65,13 @@ TEST(SeenForest, ASumKeepsTheTreesShownInOrderAndTheFloorOfAll) {
   EXPECT_EQ(seen.floor.leafColor, floor.leafColor);
 }
 
-// More trees than a batch of the snapshot's reading, over 1 km: as in a forest, most are
-// young plants under 0.6 m, one in a hundred from 0.2 to 30 m tall.
+// More trees than a batch of the snapshot's reading, over 1 km, most of them young plants.
 TreeSnapshot forestOfYoungPlants() {
   TreeSnapshot snapshot;
   snapshot.year = 10;
   snapshot.speciesNames = {"beech"};
-  for (std::uint64_t id = 1; id <= (std::uint64_t{1} << 20) + 3000; ++id) {
-    snapshot.trees.push_back(test::variedTree(id));
-    if (id % 100 != 0) {
-      TreeRow& young = snapshot.trees.back();
-      young.height_m = 0.1f + 0.01f * static_cast<float>(id % 50);
-      young.crownRadius_m = 0.3f * young.height_m;
-      young.crownBase_m = 0.0f;
-    }
-  }
+  for (std::uint64_t id = 1; id <= (std::uint64_t{1} << 20) + 3000; ++id)
+    snapshot.trees.push_back(test::mostlyYoungTree(id));
   return snapshot;
 }
 

@@ -153,16 +153,9 @@ TEST(Timelapse, AFrameLeavesOutTheTreesUnderAPixelButNotTheirCrowns) {
   TreeSnapshot before, after;
   before.year = 10, after.year = 20;
   before.speciesNames = after.speciesNames = {"beech"};
-  // More trees than a part of a frame, 1 km across: as in a forest, most are young plants
-  // under 0.6 m, and one in a hundred from 0.2 to 30 m tall.
+  // More trees than a part of a frame, 1 km across, most of them young plants.
   for (std::uint64_t id = 1; id <= (std::uint64_t{1} << 20) + 3000; ++id) {
-    after.trees.push_back(test::variedTree(id));
-    if (id % 100 != 0) {
-      TreeRow& young = after.trees.back();
-      young.height_m = 0.1f + 0.01f * static_cast<float>(id % 50);
-      young.crownRadius_m = 0.3f * young.height_m;
-      young.crownBase_m = 0.0f;
-    }
+    after.trees.push_back(test::mostlyYoungTree(id));
     if (id % 3 != 0) {  // the others establish in between
       before.trees.push_back(after.trees.back());
       before.trees.back().height_m *= 0.8f;

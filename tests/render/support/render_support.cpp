@@ -151,6 +151,14 @@ std::filesystem::path referenceFile(const std::string& name) {
   return std::filesystem::path(ECOFOREST_REFERENCE_DIR) / name;
 }
 
+Camera cameraAt(glm::vec3 position, float yaw_deg, float pitch_deg) {
+  Camera camera;
+  camera.position = position;
+  camera.yaw_deg = yaw_deg;
+  camera.pitch_deg = pitch_deg;
+  return camera;
+}
+
 void expectSameForest(const Forest& a, const Forest& b) {
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(a.type, b.type);
@@ -180,6 +188,16 @@ TreeRow variedTree(std::uint64_t id) {
           .vigor = static_cast<float>(id % 11) / 10.0f,
           .variantSeed = static_cast<std::uint32_t>(id * 2654435761u),
           .site = {.light = {0.5 * std::cos(angle), 0.5 * std::sin(angle)}, .wind = {0.2, 0.0}}};
+}
+
+TreeRow mostlyYoungTree(std::uint64_t id) {
+  TreeRow tree = variedTree(id);
+  if (id % 100 != 0) {
+    tree.height_m = 0.1f + 0.01f * static_cast<float>(id % 50);
+    tree.crownRadius_m = 0.3f * tree.height_m;
+    tree.crownBase_m = 0.0f;
+  }
+  return tree;
 }
 
 RunFolder runHolding(const std::string& name, std::initializer_list<const TreeSnapshot*> snapshots,

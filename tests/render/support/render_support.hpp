@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/image.hpp"
+#include "render/scene/camera.hpp"
 #include "render/scene/forest.hpp"
 #include "render/scene/frame_sink.hpp"
 #include "render/scene/tree_library.hpp"
@@ -63,12 +64,18 @@ glm::vec3 meanColor(const Image& image);
 // The largest mean absolute difference (per channel, 0..255) over any block x block tile.
 double maxBlockDifference(const Image& a, const Image& b, int block);
 
+// A camera at `position` (world) looking along a bearing and pitch, in degrees.
+Camera cameraAt(glm::vec3 position, float yaw_deg, float pitch_deg);
+
 // Expects every array of two forests alike, tree by tree (gtest failures).
 void expectSameForest(const Forest& a, const Forest& b);
 
 // A snapshot's row `id` of a long run of rows of every height, crown base, vigor, age, light
 // direction and variant: rows across a reader's batches that draw many types and leans.
 TreeRow variedTree(std::uint64_t id);
+// The same rows as in a forest, where most plants are young: one in a hundred is variedTree
+// (0.2 to 30 m), the others young plants under 0.6 m.
+TreeRow mostlyYoungTree(std::uint64_t id);
 
 // A fresh run folder named `name` holding each snapshot as the year it names, in `format`.
 RunFolder runHolding(const std::string& name, std::initializer_list<const TreeSnapshot*> snapshots,

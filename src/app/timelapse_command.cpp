@@ -26,6 +26,7 @@ struct TimelapseArgs {
   std::string cameraPath = "orbit";
   std::string out;
   bool overlay = false;
+  bool ignoreMemoryCheck = false;
   ViewOptions view;
 };
 
@@ -76,6 +77,7 @@ void runTimelapse(const TimelapseArgs& args) {
   settings.fps = args.fps;
   settings.frame = args.view.size;
   settings.overlay = args.overlay;
+  settings.ignoreMemoryCheck = args.ignoreMemoryCheck;
   settings.render = renderOptionsFrom(args.view, source.scenario);
   if (args.cameraPath == "orbit")
     settings.camera = orbitPath(source.terrain);
@@ -127,6 +129,8 @@ void addTimelapseCommand(CLI::App& app) {
   c->add_option("--camera-path", args->cameraPath, "orbit, flyover or a keyframe FILE.toml");
   c->add_option("--out", args->out, "FILE.mp4, or a folder for numbered PNG frames")->required();
   c->add_flag("--overlay", args->overlay, "Draw the year and a scale bar");
+  c->add_flag("--ignore-memory-check", args->ignoreMemoryCheck,
+              "Go ahead where two snapshots' trees seem too many for the memory available");
   addFrameOptions(*c, args->view);
   c->callback([args] { runTimelapse(*args); });
 }

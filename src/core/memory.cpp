@@ -56,14 +56,13 @@ std::string formatBytes(std::uint64_t bytes) {
   return text.str();
 }
 
-void requireMemory(std::uint64_t bytes, const std::string& what, const std::string& option,
+void requireMemory(std::uint64_t bytes, const std::string& what, const std::string& advice,
                    bool ignore) {
   if (ignore) return;
   const std::optional<std::uint64_t> available = availableMemoryBytes();
   if (!available || bytes <= *available) return;
-  throw EnvironmentError(
-      what + " needs about " + formatBytes(bytes) + " of memory; " + formatBytes(*available) +
-      " is available. Use a smaller or coarser terrain, or " + option + " to go ahead anyway");
+  throw EnvironmentError(what + " needs about " + formatBytes(bytes) + " of memory; " +
+                         formatBytes(*available) + " is available. " + advice);
 }
 
 }  // namespace eco

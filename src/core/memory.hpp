@@ -17,8 +17,9 @@ std::optional<std::uint64_t> availableMemoryBytes();
 std::optional<std::uint64_t> residentMemoryBytes();
 
 // EnvironmentError unless `bytes` fit in the available memory (or `ignore`): the message
-// names `what` needs it, both sizes, and `option` to go ahead anyway.
-void requireMemory(std::uint64_t bytes, const std::string& what, const std::string& option,
+// names `what` needs it, both sizes, and ends with `advice` (what to ask for instead, and
+// the option that goes ahead anyway).
+void requireMemory(std::uint64_t bytes, const std::string& what, const std::string& advice,
                    bool ignore);
 
 // Gives the system back the whole pages in [from, to), which must lie in storage this

@@ -17,6 +17,18 @@
 
 namespace eco {
 
+namespace {
+
+// A tree's id and its place in the interval, sorted by id for the pairing's search.
+using IdAndPlace = std::pair<std::uint64_t, std::uint32_t>;
+
+template <typename Column>
+constexpr std::uint64_t elementBytes() {
+  return sizeof(typename Column::value_type);
+}
+
+}  // namespace
+
 SnapshotRows SnapshotRows::of(const TreeSnapshot& snapshot) {
   return {snapshot.year, snapshot.trees.size(),
           [&snapshot](const TreeBatch& each) { each(snapshot.trees, snapshot.speciesNames); }};
@@ -71,7 +83,7 @@ GrowthInterval::GrowthInterval(const SnapshotRows& before, const SnapshotRows& a
 
   // The earlier trees with their ids, which are sorted to be searched for the later trees'
   // (16 bytes a tree while the later snapshot is read, where a hash map takes 40).
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> earlierById;
+  std::vector<IdAndPlace> earlierById;
   earlierById.reserve(before.rowsAtMost);
   SpeciesNumbering earlierSpecies(library, where);
   before.read([&](std::span<const TreeRow> rows, const std::vector<std::string>& names) {
@@ -101,8 +113,8 @@ GrowthInterval::GrowthInterval(const SnapshotRows& before, const SnapshotRows& a
     newcomerPlace.assign(rows.size() + 1, 0);
     tbb::parallel_for(std::size_t{0}, rows.size(), [&](std::size_t i) {
       const std::uint64_t id = rows[i].id;
-      const auto found = std::lower_bound(earlierById.begin(), earlierById.end(),
-                                          std::pair<std::uint64_t, std::uint32_t>{id, 0});
+      const auto found =
+          std::lower_bound(earlierById.begin(), earlierById.end(), IdAndPlace{id, 0});
       earlierOf[i] = found != earlierById.end() && found->first == id ? found->second : kNewcomer;
       newcomerPlace[i + 1] = earlierOf[i] == kNewcomer;
     });
@@ -136,6 +148,19 @@ GrowthInterval::GrowthInterval(const SnapshotRows& before, const SnapshotRows& a
   if (const std::uint64_t id = repeatedId.load(); id != 0)
     throw InputError({where, 0, ""},
                      fmt::format("the snapshot of year {} holds tree id {} twice", toYear_, id));
+}
+
+std::uint64_t GrowthInterval::peakBytes(std::size_t rowsBefore, std::size_t rowsAfter) {
+  const std::uint64_t perTree =
+      elementBytes<decltype(position_)>() + elementBytes<decltype(individual_)>() +
+      elementBytes<decltype(variantSeed_)>() + elementBytes<decltype(species_)>() +
+      elementBytes<decltype(height_)>() + elementBytes<decltype(crownRadius_)>() +
+      elementBytes<decltype(vigor_)>() + elementBytes<decltype(siteLean_)>() +
+      elementBytes<decltype(clearBole_)>();
+  // An earlier tree's id and place while the later trees are paired, and whether it lives on.
+  const std::uint64_t perEarlier = sizeof(IdAndPlace) + elementBytes<decltype(lives_)>();
+  const std::uint64_t perNewcomer = elementBytes<decltype(established_)>();
+  return (rowsBefore + rowsAfter) * perTree + rowsBefore * perEarlier + rowsAfter * perNewcomer;
 }
 
 Forest GrowthInterval::forestAt(double year) const {

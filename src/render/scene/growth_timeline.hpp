@@ -53,6 +53,9 @@ class GrowthInterval {
   Forest forestAt(double year, std::size_t first, std::size_t last) const;
   // The trees it keeps: every earlier one and each newcomer.
   std::size_t size() const { return position_.size(); }
+  // The most memory an interval between snapshots of these many rows takes, while its trees
+  // are paired: each tree's columns, and each earlier tree's id sorted for the search.
+  static std::uint64_t peakBytes(std::size_t rowsBefore, std::size_t rowsAfter);
 
  private:
   // Tree k as `tree` has it, both its states alike; then its later state and site.

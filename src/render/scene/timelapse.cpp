@@ -165,16 +165,24 @@ TimelapseTimings renderTimelapse(const RunFolder& run, const TreeLibrary& librar
       if (years[after] != intervalEnd) {
         interval.reset();
         const int from = years[after - 1], to = years[after];
-        // Its rows counted once (a CSV file's lines are counted through the file).
+        // Their rows counted once (a CSV file's lines are counted through the file).
+        const SnapshotRows earlierRows =
+            kept && kept->year == from ? SnapshotRows::of(*kept) : SnapshotRows::of(run, from);
         SnapshotRows laterRows = SnapshotRows::of(run, to);
+        // A landscape's interval takes gigabytes: refused before the pairing where they are
+        // not there, rather than the command killed for want of memory partway.
+        requireMemory(
+            GrowthInterval::peakBytes(earlierRows.rowsAtMost, laterRows.rowsAtMost),
+            fmt::format("the growth between the snapshots of years {} and {} ({} and {} plants)",
+                        from, to, earlierRows.rowsAtMost, laterRows.rowsAtMost),
+            "Choose other years (--years), or --ignore-memory-check to go ahead anyway.",
+            settings.ignoreMemoryCheck);
         std::optional<TreeSnapshot> later;
         if (fitsWhole(laterRows)) {
           later = readSnapshot(run, to);
           laterRows = SnapshotRows::of(*later);
         }
-        interval.emplace(
-            kept && kept->year == from ? SnapshotRows::of(*kept) : SnapshotRows::of(run, from),
-            laterRows, library, run.dir.string());
+        interval.emplace(earlierRows, laterRows, library, run.dir.string());
         kept = std::move(later);
         intervalEnd = to;
       }

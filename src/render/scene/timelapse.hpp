@@ -31,6 +31,9 @@ struct TimelapseSettings {
   CameraPath camera;
   RenderOptions render;  // wind.time is advanced by the wind kind
   bool overlay = false;  // year counter and scale bar
+  // Growth: pair two snapshots' trees even where they seem not to fit in the memory
+  // available (GrowthInterval::peakBytes), instead of refusing before the pairing.
+  bool ignoreMemoryCheck = false;
   double windRadiansPerSecond = 2.0;
 
   int frameCount() const;

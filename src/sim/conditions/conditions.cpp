@@ -67,7 +67,8 @@ ConditionFields computeConditions(const Terrain& terrain, const Climate& climate
 void requireMemoryForConditions(const Grid& grid, bool ignore) {
   requireMemory(grid.cellCount() * kConditionsBytesPerCell,
                 fmt::format("the living conditions of a {} x {} terrain", grid.width, grid.height),
-                "--ignore-memory-check", ignore);
+                "Use a smaller or coarser terrain, or --ignore-memory-check to go ahead anyway",
+                ignore);
 }
 
 }  // namespace eco

@@ -5,6 +5,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/angles.hpp"
+#include "core/error.hpp"
 #include "render/scene/culling.hpp"
 #include "render/scene/growth_timeline.hpp"
 #include "render/scene/tree_clearance.hpp"
@@ -212,6 +213,46 @@ TEST(Timelapse, AFrameLeavesOutTheTreesUnderAPixelButNotTheirCrowns) {
   EXPECT_EQ(next, shownTrees);  // in order, nothing else
   EXPECT_GT(drawn, 1000u);
   EXPECT_LT(shownTrees, whole.size() / 2);
+}
+
+// Two snapshots whose trees would not fit in the memory there is are refused before they are
+// paired, with the years and the way to go ahead; told to go ahead, it does (and fails
+// otherwise: a terabyte of nothing, sparse, is neither room to be had nor a snapshot).
+TEST(Timelapse, AnIntervalTooLargeForTheMemoryIsRefusedBeforeItIsPaired) {
+  RunFolder run = oneTreeRun("timelapse_memory");
+  std::filesystem::remove(RunPaths{run.dir}.snapshot(20, SnapshotFormat::Csv));
+  const std::filesystem::path huge = RunPaths{run.dir}.snapshot(20, SnapshotFormat::Binary);
+  test::writeFile(huge, "");
+  std::filesystem::resize_file(huge, std::uintmax_t{1} << 40);
+  TimelapseSettings settings;
+  settings.fromYear = settings.toYear = 15.0;
+  settings.seconds = 0.1, settings.fps = 10;  // one frame, between years 10 and 20
+  settings.camera = [](double) { return Camera{}; };
+  int drawn = 0;
+  const DrawFrame draw = [&](const FrameTrees&, const Camera&, const RenderOptions&) {
+    ++drawn;
+    return Image(16, 16);
+  };
+  test::CollectingSink sink;
+  const Terrain terrain = test::flatTerrain(33, 10.0);
+  try {
+    renderTimelapse(run, test::smallLibrary(), terrain, draw, settings, sink, {});
+    ADD_FAILURE() << "no refusal";
+  } catch (const EnvironmentError& e) {
+    const std::string text = e.what();
+    EXPECT_NE(text.find("between the snapshots of years 10 and 20"), std::string::npos) << text;
+    EXPECT_NE(text.find("--ignore-memory-check"), std::string::npos) << text;
+  }
+  settings.ignoreMemoryCheck = true;
+  try {
+    renderTimelapse(run, test::smallLibrary(), terrain, draw, settings, sink, {});
+    ADD_FAILURE() << "a terabyte of nothing was read as trees";
+  } catch (const EnvironmentError& e) {
+    ADD_FAILURE() << "refused though told to go ahead: " << e.what();
+  } catch (const std::exception&) {  // no room for the pairing, or no snapshot
+  }
+  EXPECT_EQ(drawn, 0);
+  std::filesystem::remove(huge);
 }
 
 TEST(Timelapse, WindHoldsTheYearAndAdvancesTheWindsTime) {

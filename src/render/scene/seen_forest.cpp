@@ -20,7 +20,8 @@ void SeenForestSum::add(const Forest& part, const std::function<TreeSeen(std::si
   floor_.add(part);
   verdicts_.resize(part.size());
   tbb::parallel_for(std::size_t{0}, part.size(), [&](std::size_t i) { verdicts_[i] = seen(i); });
-  for (std::size_t i = 0; i < part.size(); ++i) switch (verdicts_[i]) {
+  for (std::size_t i = 0; i < part.size(); ++i) {
+    switch (verdicts_[i]) {
       case TreeSeen::Shown:
         seen_.shown.append(part, i);
         break;
@@ -31,6 +32,7 @@ void SeenForestSum::add(const Forest& part, const std::function<TreeSeen(std::si
         ++seen_.tooSmall;
         break;
     }
+  }
 }
 
 SeenForest SeenForestSum::done() && {

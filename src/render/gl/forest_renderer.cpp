@@ -421,15 +421,13 @@ void ForestRenderer::considerTrees(const Forest& forest, const ForestIndex* inde
   std::vector<std::uint32_t> lookedAt(tiles.size() + 1, 0), culled(tiles.size(), 0);
   tbb::parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t t) {
     const ForestIndex::Tile& tile = tiles[t];
-    // No tree of the tile is nearer than its box: one shorter than this is under minPixels
-    // (projectedPixels) wherever it stands there, less a thousandth for the roundings of
-    // each tree's own distance.
-    const float nearest = std::max(glm::distance(glm::clamp(eye, tile.lo, tile.hi), eye), 1e-3f);
-    const float shortest = 0.999f * lod.minPixels * nearest / pixelsPerRadian;
+    // No tree of the tile is nearer than its box: a group whose tallest tree cannot reach
+    // minPixels there is under it wherever its trees stand in the tile.
+    const float nearest = glm::distance(glm::clamp(eye, tile.lo, tile.hi), eye);
     const Frustum::Side side = frustum.sideOfBox(tile.lo, tile.hi, 0.05f);
     for (std::uint32_t g = tile.firstGroup; g < tile.lastGroup; ++g) {
       const ForestIndex::Group& group = groups[g];
-      if (group.tallest >= shortest) {
+      if (mayReachMinPixels(group.tallest, nearest, pixelsPerRadian, lod)) {
         looked[g] = 1;
         lookedAt[t + 1] += group.last - group.first;
       } else if (side == Frustum::Side::Outside) {

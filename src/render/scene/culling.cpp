@@ -81,6 +81,12 @@ bool tooSmallToDraw(float pixels, const LodSettings& s) {
   return s.forcedLevel < 0 && pixels < s.minPixels;
 }
 
+bool mayReachMinPixels(float height_m, float distance_m, float pixelsPerRadian,
+                       const LodSettings& s) {
+  constexpr float kRoundings = 0.999f;
+  return !tooSmallToDraw(projectedPixels(height_m / kRoundings, distance_m, pixelsPerRadian), s);
+}
+
 LodChoice chooseLevel(float pixels, const LodSettings& s) {
   if (s.forcedLevel >= 0) return {static_cast<std::int8_t>(s.forcedLevel), -1, 0.0f};
   if (tooSmallToDraw(pixels, s)) return {};

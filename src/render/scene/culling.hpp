@@ -65,5 +65,12 @@ LodChoice chooseLevel(float pixels, const LodSettings& settings);
 // Whether a tree of `pixels` is neither drawn nor casts a shadow: under minPixels, where no
 // level is forced on every tree.
 bool tooSmallToDraw(float pixels, const LodSettings& settings);
+// Whether a tree `height_m` tall (its type's height times its vertical scale) at
+// `distance_m` may be drawn or cast a shadow: not tooSmallToDraw, with a thousandth of room
+// for the roundings of the renderer's own sums of each tree's distance. A test that drops the
+// trees for which it is false before the renderer sees them (ForestIndex's bands, a still's
+// trees) changes nothing the renderer draws.
+bool mayReachMinPixels(float height_m, float distance_m, float pixelsPerRadian,
+                       const LodSettings& settings);
 
 }  // namespace eco

@@ -9,11 +9,9 @@ namespace eco {
 
 bool mayBeDrawn(const Forest& forest, std::size_t i, const TreeType& type, glm::vec3 eye,
                 float pixelsPerRadian, const LodSettings& lod, float nearer_m) {
-  constexpr float kRoundings = 1.001f;
   const glm::vec3 centre(drawnBounds(forest, i, type));
   const float nearest = std::max(glm::length(centre - eye) - nearer_m, 0.0f);
-  const float height_m = kRoundings * type.height_m * forest.scaleY[i];
-  return !tooSmallToDraw(projectedPixels(height_m, nearest, pixelsPerRadian), lod);
+  return mayReachMinPixels(type.height_m * forest.scaleY[i], nearest, pixelsPerRadian, lod);
 }
 
 void SeenForestSum::add(const Forest& part, const std::function<TreeSeen(std::size_t)>& seen) {

@@ -30,9 +30,8 @@ struct SeenForest {
 };
 
 // Whether tree i, of `type`, may be drawn or cast a shadow from an eye at `eye` or up to
-// `nearer_m` nearer to it: its drawn sphere's centre (drawnBounds) no farther than that
-// gives it minPixels. A thousandth is added to its height for the roundings of the
-// renderer's own sums, so a tree left out is under minPixels there too.
+// `nearer_m` nearer to it (mayReachMinPixels at its drawn sphere's centre, drawnBounds): a
+// tree left out is under minPixels in the renderer too.
 bool mayBeDrawn(const Forest& forest, std::size_t i, const TreeType& type, glm::vec3 eye,
                 float pixelsPerRadian, const LodSettings& lod, float nearer_m = 0.0f);
 

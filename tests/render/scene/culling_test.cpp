@@ -142,5 +142,20 @@ TEST(LodChoice, ProjectedSizeIsInverseInDistance) {
   EXPECT_FLOAT_EQ(projectedPixels(20.0f, 200.0f, 500.0f), 50.0f);
 }
 
+// A tree may reach minPixels out to a thousandth beyond the distance where it is exactly
+// minPixels tall (room for the renderer's roundings), not a hundredth; and always where a
+// level is forced on every tree.
+TEST(LodChoice, ATreeMayReachMinPixelsWithinAThousandthOfItsDistance) {
+  LodSettings lod;
+  lod.minPixels = 2.0f;
+  const float reach = 20.0f * 500.0f / 2.0f;  // a 20 m tree is 2 pixels 5 km away
+  EXPECT_TRUE(mayReachMinPixels(20.0f, reach, 500.0f, lod));
+  EXPECT_TRUE(mayReachMinPixels(20.0f, 1.0009f * reach, 500.0f, lod));
+  EXPECT_TRUE(tooSmallToDraw(projectedPixels(20.0f, 1.0009f * reach, 500.0f), lod));
+  EXPECT_FALSE(mayReachMinPixels(20.0f, 1.01f * reach, 500.0f, lod));
+  lod.forcedLevel = 2;
+  EXPECT_TRUE(mayReachMinPixels(20.0f, 100.0f * reach, 500.0f, lod));
+}
+
 }  // namespace
 }  // namespace eco

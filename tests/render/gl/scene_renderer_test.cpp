@@ -51,24 +51,33 @@ RenderOptions morningSun() {
   return options;
 }
 
+// A year of a stand on the level ground of test::flatTerrain(129, 10.0) (100 m up): as in a
+// forest, most plants young and small, one in fifty a tree of 5 to 30 m.
+TreeSnapshot youngStand() {
+  TreeSnapshot snapshot;
+  snapshot.year = 30;
+  snapshot.speciesNames = {"beech", "maple"};
+  for (std::uint64_t id = 1; id <= 20000; ++id) {
+    TreeRow tree = test::variedTree(id);
+    tree.east_m = static_cast<double>((id * 37) % 1270 + 5);
+    tree.north_m = static_cast<double>((id * 53 + id / 1270) % 1270 + 5);
+    tree.ground_m = 100.0;
+    tree.species = static_cast<std::int16_t>(id % 2);
+    tree.height_m = id % 50 == 0 ? 5.0f + static_cast<float>(id % 26) : 0.1f + 0.01f * (id % 50);
+    tree.crownRadius_m = 0.2f * tree.height_m;
+    tree.crownBase_m = 0.3f * tree.height_m;
+    snapshot.trees.push_back(tree);
+  }
+  return snapshot;
+}
+
 // With the forest's index a frame looks only at the trees tall enough for a pixel where
 // they stand, and is the same frame to the bit, with the same counts.
 TEST(SceneRenderer, AForestsIndexDrawsTheSameFrameLookingAtFewerTrees) {
   test::useHeadlessGl();
   const TreeLibrary& library = test::smallLibrary();
   const Terrain terrain = test::flatTerrain(129, 10.0);
-  // As in a forest, most plants young and small, one in fifty a tree of 5 to 30 m.
-  Forest forest;
-  for (int i = 0; i < 20000; ++i) {
-    const double east = (i * 37) % 1270 + 5.0, north = (i * 53 + i / 1270) % 1270 + 5.0;
-    const float height = i % 50 == 0 ? 5.0f + static_cast<float>(i % 26) : 0.1f + 0.01f * (i % 50);
-    const int species = i % 2;
-    const int type = library.typeFor(species, static_cast<std::uint64_t>(i), height,
-                                     library.maxHeight_m(species));
-    forest.add(library, type, worldFromMap(east, north, terrain.altitudeAt(east, north)), height,
-               0.0f, 0.8f, static_cast<std::uint64_t>(i));
-  }
-  buildTypesOf(forest, library);
+  const Forest forest = forestFromSnapshot(youngStand(), library, "stand");
   const ForestIndex index(forest, library);
   SceneRenderer renderer(terrain, 46.0, &library);
   renderer.setForestFloor(forest);
@@ -96,20 +105,7 @@ TEST(SceneRenderer, AStillOfTheTreesItCanShowIsTheStillOfTheWholeYear) {
   test::useHeadlessGl();
   const TreeLibrary& library = test::smallLibrary();
   const Terrain terrain = test::flatTerrain(129, 10.0);
-  TreeSnapshot snapshot;
-  snapshot.year = 30;
-  snapshot.speciesNames = {"beech", "maple"};
-  for (std::uint64_t id = 1; id <= 20000; ++id) {  // most young, one in fifty of 5 to 30 m
-    TreeRow tree = test::variedTree(id);
-    tree.east_m = static_cast<double>((id * 37) % 1270 + 5);
-    tree.north_m = static_cast<double>((id * 53 + id / 1270) % 1270 + 5);
-    tree.ground_m = 100.0;
-    tree.species = static_cast<std::int16_t>(id % 2);
-    tree.height_m = id % 50 == 0 ? 5.0f + static_cast<float>(id % 26) : 0.1f + 0.01f * (id % 50);
-    tree.crownRadius_m = 0.2f * tree.height_m;
-    tree.crownBase_m = 0.3f * tree.height_m;
-    snapshot.trees.push_back(tree);
-  }
+  const TreeSnapshot snapshot = youngStand();
   const RunFolder run = test::runHolding("scene_seen_still", {&snapshot}, SnapshotFormat::Binary);
   const Camera camera = overTheStand();
   const RenderOptions options = morningSun();

@@ -7,7 +7,6 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <fmt/format.h>
-#include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "core/error.hpp"

@@ -44,10 +44,12 @@ void main() {
     depthAndSky += vWeight[i] * texture(uDepthAtlas, uv);
 #endif
   }
-  // A hashed alpha test: a far texel half covered by twigs keeps half its pixels, as the
-  // mesh's thin branches hit about that share of pixel centres, instead of vanishing at a
-  // fixed threshold of one half.
-  if (albedo.a <= coverageThreshold(vCoverageSeed)) discard;
+  // A hashed alpha test: a far texel half covered by twigs keeps half its pixels (half the
+  // samples of each, anti-aliased), as the mesh's thin branches hit about that share of
+  // pixel centres, instead of vanishing at a fixed threshold of one half.
+  const int coverage = coverageMask(albedo.a, vCoverageSeed);
+  if (coverage == 0) discard;
+  gl_SampleMask[0] = coverage;
 #ifdef SHADOW_PASS
   return;
 #else

@@ -129,7 +129,7 @@ bool ditherKeeps(vec2 range) {
 
 // A seed of the surface an alpha-tested pixel belongs to (a sprite's tree, a tuft's card),
 // from numbers that stay with it from frame to frame (its position, its look), for
-// coverageThreshold().
+// coverageMask().
 uint coverageSeed(vec3 v) {
   uvec3 b = floatBitsToUint(v);
   uint h = b.x * 0x8da6b343u ^ b.y * 0xd8163841u ^ b.z * 0xcb1ab31fu;
@@ -138,36 +138,27 @@ uint coverageSeed(vec3 v) {
 }
 
 #ifdef FRAGMENT_STAGE
-// A hash of the pixel and the surface (`seed`, coverageSeed()), independent of ditherKeeps'
-// (a fading tree's pixels are not its alpha-tested ones).
-uint coverageHash(uint seed) {
+// The hashed alpha test of a texel whose alpha is the share of it covered (far impostor
+// texels, grass blades; Wyman and McGuire 2017): the samples of this pixel it keeps, as a
+// mask for gl_SampleMask (0: none, discard). With one sample a pixel the texel is kept where
+// alpha exceeds the pixel's threshold u in (0, 1), hashed from the pixel and the surface
+// (`seed`, coverageSeed(); independent of ditherKeeps', as a fading tree's pixels are not
+// its alpha-tested ones), so a texel a fifth covered keeps a fifth of the pixels, as thin
+// twigs hit about that share of pixel centres, where a fixed threshold of one half lost
+// them. Each surface draws its own thresholds: crowns one behind the other let light through
+// independently, as layers of leaves do (with one threshold a pixel for every sprite over
+// it, a high threshold discarded them all, and a closed canopy of sprites showed the dark
+// ground through gaps that overlapping crowns close). With n samples (anti-aliasing),
+// sample s keeps where alpha exceeds ((s + turn) mod n + u) / n, the turn hashed as u is:
+// the pixel takes the floor or the ceiling of alpha n of its samples, alpha's share on
+// average, where it took all or none, and surfaces still take theirs independently
+// (stochastic transparency: Enderton et al. 2010).
+int coverageMask(float alpha, uint seed) {
   uvec2 p = uvec2(gl_FragCoord.xy);
   uint h = p.x * 7919u + p.y * 104729u + 0x9e3779b9u + seed;
   h = (h ^ (h >> 16)) * 0x7feb352du;
   h = (h ^ (h >> 15)) * 0x846ca68bu;
-  return h ^ (h >> 16);
-}
-
-// A second per-pixel threshold in (0, 1): the hashed alpha test of far impostor texels.
-// Each surface draws its own thresholds (`seed`), so crowns one behind the
-// other let light through independently, as layers of leaves do: with one threshold a pixel
-// for every sprite over it, a high threshold discarded them all, and a closed canopy of
-// sprites showed the dark ground through gaps that overlapping crowns close.
-float coverageThreshold(uint seed) {
-  return (float(coverageHash(seed) & 0xffffu) + 0.5) / 65536.0;
-}
-
-// The hashed alpha test sample by sample: the samples of this pixel that a surface whose
-// texel is `alpha` covered keeps, as a mask for gl_SampleMask (0: none, discard). With one
-// sample a pixel it is the test above (alpha over coverageThreshold). With n, sample s keeps
-// where alpha exceeds its own threshold ((s + r) mod n + u) / n, u the pixel's threshold and
-// r a turn of the samples, both hashed with the surface: the pixel takes alpha's share of its
-// samples (floor or ceiling of alpha n, alpha n on average) where it took all or none, and
-// surfaces one behind the other take their samples independently. This is what resolves a
-// far crown's leaves, thinner than a pixel, into their share of it under anti-aliasing
-// (stochastic transparency: Enderton et al. 2010; hashed alpha: Wyman and McGuire 2017).
-int coverageMask(float alpha, uint seed) {
-  uint h = coverageHash(seed);
+  h ^= h >> 16;
   float u = (float(h & 0xffffu) + 0.5) / 65536.0;
   int n = gl_NumSamples;
   int turn = int((h >> 16) % uint(n));

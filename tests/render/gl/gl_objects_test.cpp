@@ -54,44 +54,16 @@ TEST(GlObjects, ALinearViewOfAnSrgbTextureHoldsItsAlphaAtEveryLevel) {
 
 namespace {
 
-GLuint compile(GLenum type, const char* source) {
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  return shader;
-}
-
 // A white triangle over the lower-left half of a square target (its hypotenuse the diagonal
 // from the top-left to the bottom-right corner), read back as the red channel.
 std::vector<int> drawHalfSquare(int size, int samples) {
-  const GlName program(GlKind::Program, glCreateProgram());
-  const GLuint vertex = compile(GL_VERTEX_SHADER, R"(#version 450
+  const GlName program = test::programFromTexts(R"(#version 450
     const vec2 corners[3] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(-1, 1));
-    void main() { gl_Position = vec4(corners[gl_VertexID], 0, 1); })");
-  const GLuint fragment = compile(GL_FRAGMENT_SHADER, R"(#version 450
+    void main() { gl_Position = vec4(corners[gl_VertexID], 0, 1); })",
+                                                R"(#version 450
     out vec4 colour;
     void main() { colour = vec4(1); })");
-  glAttachShader(program.id(), vertex);
-  glAttachShader(program.id(), fragment);
-  glLinkProgram(program.id());
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  const GlName vertexArray = makeVertexArray();
-
-  const RenderTarget target = RenderTarget::create(size, size, 0, samples);
-  target.bind();
-  glDisable(GL_FRAMEBUFFER_SRGB);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glClearColor(0, 0, 0, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glUseProgram(program.id());
-  glBindVertexArray(vertexArray.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  const Image image = readPixels(target);
-  std::vector<int> red;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) red.push_back(image.rgba[i]);
-  return red;
+  return test::redAfterDrawing(program, size, samples, [] { glDrawArrays(GL_TRIANGLES, 0, 3); });
 }
 
 }  // namespace

@@ -46,25 +46,13 @@ TEST(Shader, ACompileErrorNamesTheFileAndTheLog) {
 // for a surface of coverage `alpha`, drawn over the whole target once for each of `seeds`
 // (surfaces one behind the other): the share of each pixel's samples covered.
 std::vector<double> coveredShares(int samples, float alpha, const std::vector<int>& seeds) {
-  const auto compile = [](GLenum type, const std::string& text) {
-    const GLuint shader = glCreateShader(type);
-    const char* source = text.c_str();
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    EXPECT_TRUE(ok);
-    return shader;
-  };
-  const GlName program(GlKind::Program, glCreateProgram());
-  const GLuint vertex = compile(GL_VERTEX_SHADER, R"(#version 450 core
+  const GlName program = test::programFromTexts(
+      R"(#version 450 core
     const vec2 corners[3] = vec2[](vec2(-1, -1), vec2(3, -1), vec2(-1, 3));
-    void main() { gl_Position = vec4(corners[gl_VertexID], 0, 1); })");
-  const GLuint fragment =
-      compile(GL_FRAGMENT_SHADER,
-              fmt::format("#version 450 core\n#define SHADOW_CASCADES {}\n#define FRAGMENT_STAGE\n",
-                          kShadowCascades) +
-                  std::string(embeddedShaderSource("common.glsl")) + R"(
+    void main() { gl_Position = vec4(corners[gl_VertexID], 0, 1); })",
+      fmt::format("#version 450 core\n#define SHADOW_CASCADES {}\n#define FRAGMENT_STAGE\n",
+                  kShadowCascades) +
+          std::string(embeddedShaderSource("common.glsl")) + R"(
     uniform float uAlpha;
     uniform int uSeed;
     out vec4 colour;
@@ -74,30 +62,18 @@ std::vector<double> coveredShares(int samples, float alpha, const std::vector<in
       gl_SampleMask[0] = mask;
       colour = vec4(1.0);
     })");
-  glAttachShader(program.id(), vertex);
-  glAttachShader(program.id(), fragment);
-  glLinkProgram(program.id());
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  const GlName vertexArray = makeVertexArray();
-  constexpr int kSize = 64;
-  const RenderTarget target = RenderTarget::create(kSize, kSize, 0, samples);
-  target.bind();
-  glDisable(GL_FRAMEBUFFER_SRGB);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glClearColor(0, 0, 0, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
-  glUseProgram(program.id());
-  glBindVertexArray(vertexArray.id());
+  GLint linked = 0;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+  EXPECT_TRUE(linked);
   glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "uAlpha"), alpha);
-  for (int seed : seeds) {
-    glProgramUniform1i(program.id(), glGetUniformLocation(program.id(), "uSeed"), seed);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-  const Image image = readPixels(target);
+  const std::vector<int> red = test::redAfterDrawing(program, 64, samples, [&] {
+    for (int seed : seeds) {
+      glProgramUniform1i(program.id(), glGetUniformLocation(program.id(), "uSeed"), seed);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+  });
   std::vector<double> shares;
-  for (std::size_t p = 0; p < image.rgba.size(); p += 4) shares.push_back(image.rgba[p] / 255.0);
+  for (int value : red) shares.push_back(value / 255.0);
   return shares;
 }
 

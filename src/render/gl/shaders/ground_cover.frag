@@ -1,6 +1,6 @@
 // Grass and herb tufts: the atlas's plant (grass left, herb right) as a brightness on the
-// tuft's colour, cut out by a hashed alpha test (sample by sample) so that far, mipmapped blades keep
-// their share of the pixels instead of vanishing at a fixed threshold.
+// tuft's colour, cut out by a hashed alpha test (sample by sample) so that far, mipmapped
+// blades keep their share of the pixels instead of vanishing at a fixed threshold.
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vUv;
